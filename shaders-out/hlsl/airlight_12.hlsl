@@ -303,8 +303,8 @@ float2 airlight_cos_sin(float x)
 {
     float z_9 = (x * x);
     float c_7 = (1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (2.4801588e-5 + (z_9 * (-2.755732e-7 + (z_9 * (2.0876756e-9 + (z_9 * (-1.1470745e-11 + (z_9 * 4.7794773e-14))))))))))))))));
-    float s_26 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
-    return float2(c_7, (s_26 * x));
+    float s_27 = (1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (2.7557319e-6 + (z_9 * (-2.5052108e-8 + (z_9 * (1.6059044e-10 + (z_9 * (-7.6471636e-13 + (z_9 * 2.8114574e-15))))))))))))))));
+    return float2(c_7, (s_27 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -365,10 +365,10 @@ float airlight_log1p(float x_2)
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_27 = (x_2 / (2.0 + x_2));
-    float z_11 = (s_27 * s_27);
+    float s_28 = (x_2 / (2.0 + x_2));
+    float z_11 = (s_28 * s_28);
     float sum_7 = ((((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0);
-    return ((2.0 * s_27) * sum_7);
+    return ((2.0 * s_28) * sum_7);
 }
 
 bool airlight_is_finite(float x_3)
@@ -4135,7 +4135,7 @@ AirlightResult airlight_limits(AirlightScene s_13, AirlightCanonical g_17)
     return airlightresult_3;
 }
 
-bool airlight_isotropic_scene(AirlightScene s_14)
+bool airlight_isotropic_phase(AirlightScene s_14)
 {
     bool local_50 = (bool)0;
     bool local_51 = (bool)0;
@@ -4144,71 +4144,99 @@ bool airlight_isotropic_scene(AirlightScene s_14)
     bool local_54 = (bool)0;
     bool local_55 = (bool)0;
 
-    if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_51 = (s_14.light_param_a == 0.0);
+    if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+        if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+            local_51 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
-            local_51 = false;
+            local_51 = true;
         }
-        bool _e16 = local_51;
-        local_50 = _e16;
+        bool _e17 = local_51;
+        if (_e17) {
+            local_52 = (s_14.phase_param_a == 0.0);
+        } else {
+            local_52 = false;
+        }
+        bool _e24 = local_52;
+        local_50 = _e24;
     } else {
         local_50 = true;
     }
-    bool _e18 = local_50;
-    if (_e18) {
-        if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_54 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_54 = true;
-            }
-            bool _e37 = local_54;
-            if (_e37) {
-                local_55 = (s_14.phase_param_a == 0.0);
-            } else {
-                local_55 = false;
-            }
-            bool _e44 = local_55;
-            local_53 = _e44;
+    bool _e26 = local_50;
+    if (!(_e26)) {
+        if ((s_14.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
+            local_54 = (s_14.phase_param_a == 0.0);
         } else {
-            local_53 = true;
+            local_54 = false;
         }
-        bool _e46 = local_53;
-        local_52 = _e46;
+        bool _e39 = local_54;
+        if (_e39) {
+            local_55 = (s_14.phase_param_b == 0.0);
+        } else {
+            local_55 = false;
+        }
+        bool _e46 = local_55;
+        local_53 = _e46;
     } else {
-        local_52 = false;
+        local_53 = true;
     }
-    bool _e48 = local_52;
+    bool _e48 = local_53;
     return _e48;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonical g_18)
+bool airlight_isotropic_scene(AirlightScene s_15)
 {
     bool local_56 = (bool)0;
     bool local_57 = (bool)0;
     bool local_58 = (bool)0;
+
+    if (!((s_15.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_57 = (s_15.light_param_a == 0.0);
+        } else {
+            local_57 = false;
+        }
+        bool _e16 = local_57;
+        local_56 = _e16;
+    } else {
+        local_56 = true;
+    }
+    bool _e18 = local_56;
+    if (_e18) {
+        const bool _e21 = airlight_isotropic_phase(s_15);
+        local_58 = _e21;
+    } else {
+        local_58 = false;
+    }
+    bool _e23 = local_58;
+    return _e23;
+}
+
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_16, AirlightCanonical g_18)
+{
+    bool local_59 = (bool)0;
+    bool local_60 = (bool)0;
+    bool local_61 = (bool)0;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = (float)0;
-    bool local_59 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
-    bool local_60 = (bool)0;
-    bool local_61 = (bool)0;
     bool local_62 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
+    bool local_63 = (bool)0;
+    bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_63 = (bool)0;
-    bool local_64 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
-    bool local_65 = (bool)0;
     bool local_66 = (bool)0;
     bool local_67 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
+    bool local_68 = (bool)0;
+    bool local_69 = (bool)0;
+    bool local_70 = (bool)0;
 
-    const AirlightResult _e2 = airlight_limits(s_15, g_18);
+    const AirlightResult _e2 = airlight_limits(s_16, g_18);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult airlightresult_4 = _e2;
         return airlightresult_4;
@@ -4217,33 +4245,33 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
     float t1_1 = g_18.t_hi;
     float h_6 = g_18.h;
     float x_h_1 = g_18.x_h;
-    float big_h_8 = (s_15.sigma_t * h_6);
-    const bool _e12 = airlight_isotropic_scene(s_15);
+    float big_h_8 = (s_16.sigma_t * h_6);
+    const bool _e12 = airlight_isotropic_scene(s_16);
     if (_e12) {
-        local_56 = (t0_1 < x_h_1);
+        local_59 = (t0_1 < x_h_1);
     } else {
-        local_56 = false;
+        local_59 = false;
     }
-    bool _e17 = local_56;
+    bool _e17 = local_59;
     if (_e17) {
         if (!(g_18.t_hi_infinite)) {
-            local_58 = (x_h_1 < t1_1);
+            local_61 = (x_h_1 < t1_1);
         } else {
-            local_58 = true;
+            local_61 = true;
         }
-        bool _e26 = local_58;
-        local_57 = _e26;
+        bool _e26 = local_61;
+        local_60 = _e26;
     } else {
-        local_57 = false;
+        local_60 = false;
     }
-    bool _e28 = local_57;
+    bool _e28 = local_60;
     if (_e28) {
-        const float _e29 = airlight_whole_line(s_15, g_18, big_h_8);
+        const float _e29 = airlight_whole_line(s_16, g_18, big_h_8);
         const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_5;
     }
     if (!(_e12)) {
-        const float2 _e35 = airlight_angle_route(s_15, g_18);
+        const float2 _e35 = airlight_angle_route(s_16, g_18);
         if ((_e35.x > 0.5)) {
             const AirlightResult airlightresult_6 = ConstructAirlightResult(max(_e35.y, 0.0), AIRLIGHT_STATUS_OK);
             return airlightresult_6;
@@ -4254,11 +4282,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_18.t_hi_infinite)) {
-            local_59 = (t1_1 < x_h_1);
+            local_62 = (t1_1 < x_h_1);
         } else {
-            local_59 = false;
+            local_62 = false;
         }
-        bool _e61 = local_59;
+        bool _e61 = local_62;
         if (_e61) {
             t_end = t1_1;
         }
@@ -4274,11 +4302,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_60 = (_e89 > 0.0);
+            local_63 = (_e89 > 0.0);
         } else {
-            local_60 = false;
+            local_63 = false;
         }
-        bool _e93 = local_60;
+        bool _e93 = local_63;
         if (_e93) {
             float _e95 = half_13.big_h;
             const float _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -4289,24 +4317,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
             }
         }
         AirlightHalf _e106 = half_13;
-        const float _e107 = airlight_half(s_15, g_18, -1.0, _e106, _e12, f_max_7);
+        const float _e107 = airlight_half(s_16, g_18, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        const float _e112 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, (big_h_8 * _e65), _e107);
+        const float _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if (!(g_18.t_hi_infinite)) {
-        local_61 = (t1_1 > x_h_1);
+        local_64 = (t1_1 > x_h_1);
     } else {
-        local_61 = true;
+        local_64 = true;
     }
-    bool _e120 = local_61;
+    bool _e120 = local_64;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_62 = !(_e123);
+        local_65 = !(_e123);
     } else {
-        local_62 = false;
+        local_65 = false;
     }
-    bool _e126 = local_62;
+    bool _e126 = local_65;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -4316,22 +4344,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_18.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
-            local_63 = _e145;
+            local_66 = _e145;
         } else {
-            local_63 = false;
+            local_66 = false;
         }
-        bool _e147 = local_63;
+        bool _e147 = local_66;
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
-                local_64 = _e162;
+                local_67 = _e162;
             } else {
-                local_64 = false;
+                local_67 = false;
             }
-            bool _e164 = local_64;
+            bool _e164 = local_67;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4351,11 +4379,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
         half_14 = ConstructAirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_65 = (_e183 > 0.0);
+            local_68 = (_e183 > 0.0);
         } else {
-            local_65 = false;
+            local_68 = false;
         }
-        bool _e187 = local_65;
+        bool _e187 = local_68;
         if (_e187) {
             float _e189 = half_14.big_h;
             float _e192 = dv_3;
@@ -4364,20 +4392,20 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
             bool _e197 = infinite_2;
             if (!(_e197)) {
                 float _e201 = dv_3;
-                local_66 = (_e196 < _e201);
+                local_69 = (_e196 < _e201);
             } else {
-                local_66 = true;
+                local_69 = true;
             }
-            bool _e204 = local_66;
+            bool _e204 = local_69;
             if (_e204) {
                 float cut_y_lo = (_e131 / (1.0 + (_e131 * _e196)));
                 if ((cut_y_lo > 0.0)) {
                     const bool _e213 = airlight_is_finite(_e196);
-                    local_67 = _e213;
+                    local_70 = _e213;
                 } else {
-                    local_67 = false;
+                    local_70 = false;
                 }
-                bool _e215 = local_67;
+                bool _e215 = local_70;
                 if (_e215) {
                     float _e218 = half_14.big_h;
                     half_14 = ConstructAirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
@@ -4385,9 +4413,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
             }
         }
         AirlightHalf _e224 = half_14;
-        const float _e225 = airlight_half(s_15, g_18, 1.0, _e224, _e12, f_max_7);
+        const float _e225 = airlight_half(s_16, g_18, 1.0, _e224, _e12, f_max_7);
         float _e226 = total_3;
-        const float _e234 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        const float _e234 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, ((s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     float _e236 = total_3;
@@ -4397,24 +4425,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_15, AirlightCanonic
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_68 = (bool)0;
-    bool local_69 = (bool)0;
+    bool local_71 = (bool)0;
+    bool local_72 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_68 = _e6;
+        local_71 = _e6;
     } else {
-        local_68 = false;
+        local_71 = false;
     }
-    bool _e8 = local_68;
+    bool _e8 = local_71;
     if (_e8) {
         const bool _e12 = airlight_is_finite(v.z);
-        local_69 = _e12;
+        local_72 = _e12;
     } else {
-        local_69 = false;
+        local_72 = false;
     }
-    bool _e14 = local_69;
+    bool _e14 = local_72;
     return _e14;
 }
 
@@ -4429,16 +4457,16 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_70 = (bool)0;
+    bool local_73 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_70 = _e6;
+        local_73 = _e6;
     } else {
-        local_70 = false;
+        local_73 = false;
     }
-    bool _e8 = local_70;
+    bool _e8 = local_73;
     return _e8;
 }
 
@@ -4449,11 +4477,8 @@ float3 airlight_normalize(float3 v_3)
     return (u_3 / (length(u_3)).xxx);
 }
 
-bool airlight_valid(AirlightScene s_16)
+bool airlight_valid(AirlightScene s_17)
 {
-    bool local_71 = (bool)0;
-    bool local_72 = (bool)0;
-    bool local_73 = (bool)0;
     bool local_74 = (bool)0;
     bool local_75 = (bool)0;
     bool local_76 = (bool)0;
@@ -4461,10 +4486,10 @@ bool airlight_valid(AirlightScene s_16)
     bool local_78 = (bool)0;
     bool local_79 = (bool)0;
     bool local_80 = (bool)0;
-    bool ok = (bool)0;
     bool local_81 = (bool)0;
     bool local_82 = (bool)0;
     bool local_83 = (bool)0;
+    bool ok = (bool)0;
     bool local_84 = (bool)0;
     bool local_85 = (bool)0;
     bool local_86 = (bool)0;
@@ -4504,375 +4529,378 @@ bool airlight_valid(AirlightScene s_16)
     bool local_120 = (bool)0;
     bool local_121 = (bool)0;
     bool local_122 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
+    bool local_125 = (bool)0;
 
-    const bool _e2 = airlight_vec_finite(s_16.origin);
+    const bool _e2 = airlight_vec_finite(s_17.origin);
     if (_e2) {
-        const bool _e6 = airlight_vec_finite(s_16.dir);
-        local_71 = _e6;
-    } else {
-        local_71 = false;
-    }
-    bool _e8 = local_71;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_16.dir);
-        local_72 = _e12;
-    } else {
-        local_72 = false;
-    }
-    bool _e14 = local_72;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_16.t_min);
-        local_73 = _e18;
-    } else {
-        local_73 = false;
-    }
-    bool _e20 = local_73;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_16.light_position);
-        local_74 = _e24;
+        const bool _e6 = airlight_vec_finite(s_17.dir);
+        local_74 = _e6;
     } else {
         local_74 = false;
     }
-    bool _e26 = local_74;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_16.intensity);
-        local_75 = _e30;
+    bool _e8 = local_74;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_17.dir);
+        local_75 = _e12;
     } else {
         local_75 = false;
     }
-    bool _e32 = local_75;
-    if (_e32) {
-        local_76 = (s_16.intensity >= 0.0);
+    bool _e14 = local_75;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_17.t_min);
+        local_76 = _e18;
     } else {
         local_76 = false;
     }
-    bool _e39 = local_76;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_16.sigma_s);
-        local_77 = _e43;
+    bool _e20 = local_76;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_17.light_position);
+        local_77 = _e24;
     } else {
         local_77 = false;
     }
-    bool _e45 = local_77;
-    if (_e45) {
-        local_78 = (s_16.sigma_s >= 0.0);
+    bool _e26 = local_77;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_17.intensity);
+        local_78 = _e30;
     } else {
         local_78 = false;
     }
-    bool _e52 = local_78;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_16.sigma_t);
-        local_79 = _e56;
+    bool _e32 = local_78;
+    if (_e32) {
+        local_79 = (s_17.intensity >= 0.0);
     } else {
         local_79 = false;
     }
-    bool _e58 = local_79;
-    if (_e58) {
-        local_80 = (s_16.sigma_t >= 0.0);
+    bool _e39 = local_79;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_17.sigma_s);
+        local_80 = _e43;
     } else {
         local_80 = false;
     }
-    bool _e65 = local_80;
+    bool _e45 = local_80;
+    if (_e45) {
+        local_81 = (s_17.sigma_s >= 0.0);
+    } else {
+        local_81 = false;
+    }
+    bool _e52 = local_81;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_17.sigma_t);
+        local_82 = _e56;
+    } else {
+        local_82 = false;
+    }
+    bool _e58 = local_82;
+    if (_e58) {
+        local_83 = (s_17.sigma_t >= 0.0);
+    } else {
+        local_83 = false;
+    }
+    bool _e65 = local_83;
     ok = _e65;
-    if (((s_16.flags & 1u) == 0u)) {
+    if (((s_17.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            const bool _e76 = airlight_is_finite(s_16.t_max);
-            local_81 = _e76;
-        } else {
-            local_81 = false;
-        }
-        bool _e78 = local_81;
-        if (_e78) {
-            local_82 = (s_16.t_min <= s_16.t_max);
-        } else {
-            local_82 = false;
-        }
-        bool _e85 = local_82;
-        ok = _e85;
-    }
-    if ((s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        bool _e89 = ok;
-        if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_16.light_end);
-            local_83 = _e93;
-        } else {
-            local_83 = false;
-        }
-        bool _e95 = local_83;
-        ok = _e95;
-    } else {
-        if ((s_16.light_shape >= AIRLIGHT_SHAPE_DISC)) {
-            local_84 = (s_16.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+            const bool _e76 = airlight_is_finite(s_17.t_max);
+            local_84 = _e76;
         } else {
             local_84 = false;
         }
-        bool _e105 = local_84;
+        bool _e78 = local_84;
+        if (_e78) {
+            local_85 = (s_17.t_min <= s_17.t_max);
+        } else {
+            local_85 = false;
+        }
+        bool _e85 = local_85;
+        ok = _e85;
+    }
+    if ((s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+        bool _e89 = ok;
+        if (_e89) {
+            const bool _e93 = airlight_vec_finite(s_17.light_end);
+            local_86 = _e93;
+        } else {
+            local_86 = false;
+        }
+        bool _e95 = local_86;
+        ok = _e95;
+    } else {
+        if ((s_17.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+            local_87 = (s_17.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_87 = false;
+        }
+        bool _e105 = local_87;
         if (_e105) {
             bool _e106 = ok;
             if (_e106) {
-                local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
-            } else {
-                local_85 = false;
-            }
-            bool _e113 = local_85;
-            if (_e113) {
-                local_86 = (s_16.light_param_b >= 1.0);
-            } else {
-                local_86 = false;
-            }
-            bool _e120 = local_86;
-            if (_e120) {
-                local_87 = (s_16.light_param_b <= 1024.0);
-            } else {
-                local_87 = false;
-            }
-            bool _e127 = local_87;
-            if (_e127) {
-                local_88 = (frac(s_16.light_param_b) == 0.0);
+                local_88 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
             } else {
                 local_88 = false;
             }
-            bool _e135 = local_88;
+            bool _e113 = local_88;
+            if (_e113) {
+                local_89 = (s_17.light_param_b >= 1.0);
+            } else {
+                local_89 = false;
+            }
+            bool _e120 = local_89;
+            if (_e120) {
+                local_90 = (s_17.light_param_b <= 1024.0);
+            } else {
+                local_90 = false;
+            }
+            bool _e127 = local_90;
+            if (_e127) {
+                local_91 = (frac(s_17.light_param_b) == 0.0);
+            } else {
+                local_91 = false;
+            }
+            bool _e135 = local_91;
             ok = _e135;
-            if ((s_16.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
+            if ((s_17.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
                 bool _e139 = ok;
                 if (_e139) {
-                    const bool _e143 = airlight_vec_finite(s_16.light_axis);
-                    local_89 = _e143;
-                } else {
-                    local_89 = false;
-                }
-                bool _e145 = local_89;
-                if (_e145) {
-                    const bool _e149 = airlight_normalisable(s_16.light_axis);
-                    local_90 = _e149;
-                } else {
-                    local_90 = false;
-                }
-                bool _e151 = local_90;
-                if (_e151) {
-                    const bool _e155 = airlight_vec_finite(s_16.light_end);
-                    local_91 = _e155;
-                } else {
-                    local_91 = false;
-                }
-                bool _e157 = local_91;
-                if (_e157) {
-                    const bool _e161 = airlight_normalisable(s_16.light_end);
-                    local_92 = _e161;
+                    const bool _e143 = airlight_vec_finite(s_17.light_axis);
+                    local_92 = _e143;
                 } else {
                     local_92 = false;
                 }
-                bool _e163 = local_92;
-                if (_e163) {
-                    const float3 _e167 = airlight_normalize(s_16.light_axis);
-                    const float3 _e169 = airlight_normalize(s_16.light_end);
-                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
-                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                bool _e145 = local_92;
+                if (_e145) {
+                    const bool _e149 = airlight_normalisable(s_17.light_axis);
+                    local_93 = _e149;
                 } else {
                     local_93 = false;
                 }
-                bool _e175 = local_93;
+                bool _e151 = local_93;
+                if (_e151) {
+                    const bool _e155 = airlight_vec_finite(s_17.light_end);
+                    local_94 = _e155;
+                } else {
+                    local_94 = false;
+                }
+                bool _e157 = local_94;
+                if (_e157) {
+                    const bool _e161 = airlight_normalisable(s_17.light_end);
+                    local_95 = _e161;
+                } else {
+                    local_95 = false;
+                }
+                bool _e163 = local_95;
+                if (_e163) {
+                    const float3 _e167 = airlight_normalize(s_17.light_axis);
+                    const float3 _e169 = airlight_normalize(s_17.light_end);
+                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_96 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_96 = false;
+                }
+                bool _e175 = local_96;
                 ok = _e175;
             } else {
                 bool _e176 = ok;
                 if (_e176) {
-                    const bool _e180 = airlight_is_finite(s_16.light_param_a);
-                    local_94 = _e180;
+                    const bool _e180 = airlight_is_finite(s_17.light_param_a);
+                    local_97 = _e180;
                 } else {
-                    local_94 = false;
+                    local_97 = false;
                 }
-                bool _e182 = local_94;
+                bool _e182 = local_97;
                 if (_e182) {
-                    local_95 = (s_16.light_param_a >= 0.0);
+                    local_98 = (s_17.light_param_a >= 0.0);
                 } else {
-                    local_95 = false;
+                    local_98 = false;
                 }
-                bool _e189 = local_95;
+                bool _e189 = local_98;
                 ok = _e189;
-                if ((s_16.light_shape == AIRLIGHT_SHAPE_DISC)) {
+                if ((s_17.light_shape == AIRLIGHT_SHAPE_DISC)) {
                     bool _e193 = ok;
                     if (_e193) {
-                        const bool _e197 = airlight_vec_finite(s_16.light_axis);
-                        local_96 = _e197;
+                        const bool _e197 = airlight_vec_finite(s_17.light_axis);
+                        local_99 = _e197;
                     } else {
-                        local_96 = false;
+                        local_99 = false;
                     }
-                    bool _e199 = local_96;
+                    bool _e199 = local_99;
                     if (_e199) {
-                        const bool _e203 = airlight_normalisable(s_16.light_axis);
-                        local_97 = _e203;
+                        const bool _e203 = airlight_normalisable(s_17.light_axis);
+                        local_100 = _e203;
                     } else {
-                        local_97 = false;
+                        local_100 = false;
                     }
-                    bool _e205 = local_97;
+                    bool _e205 = local_100;
                     ok = _e205;
                 }
             }
         } else {
-            if ((s_16.light_shape != AIRLIGHT_SHAPE_POINT)) {
+            if ((s_17.light_shape != AIRLIGHT_SHAPE_POINT)) {
                 ok = false;
             }
         }
     }
-    if (!((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_98 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    if (!((s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
+        local_101 = (s_17.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_98 = true;
+        local_101 = true;
     }
-    bool _e220 = local_98;
+    bool _e220 = local_101;
     if (_e220) {
         bool _e221 = ok;
         if (_e221) {
-            const bool _e225 = airlight_is_finite(s_16.brdf_scale);
-            local_99 = _e225;
-        } else {
-            local_99 = false;
-        }
-        bool _e227 = local_99;
-        if (_e227) {
-            local_100 = (s_16.brdf_scale >= 0.0);
-        } else {
-            local_100 = false;
-        }
-        bool _e234 = local_100;
-        if (_e234) {
-            local_101 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_101 = false;
-        }
-        bool _e241 = local_101;
-        if (_e241) {
-            local_102 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+            const bool _e225 = airlight_is_finite(s_17.brdf_scale);
+            local_102 = _e225;
         } else {
             local_102 = false;
         }
-        bool _e248 = local_102;
-        if (_e248) {
-            const float _e254 = airlight_safe_length((s_16.light_position - s_16.origin));
-            const bool _e255 = airlight_is_finite(_e254);
-            local_103 = _e255;
+        bool _e227 = local_102;
+        if (_e227) {
+            local_103 = (s_17.brdf_scale >= 0.0);
         } else {
             local_103 = false;
         }
-        bool _e257 = local_103;
+        bool _e234 = local_103;
+        if (_e234) {
+            local_104 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_104 = false;
+        }
+        bool _e241 = local_104;
+        if (_e241) {
+            local_105 = (s_17.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_105 = false;
+        }
+        bool _e248 = local_105;
+        if (_e248) {
+            const float _e254 = airlight_safe_length((s_17.light_position - s_17.origin));
+            const bool _e255 = airlight_is_finite(_e254);
+            local_106 = _e255;
+        } else {
+            local_106 = false;
+        }
+        bool _e257 = local_106;
         ok = _e257;
-        if ((s_16.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+        if ((s_17.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
             bool _e261 = ok;
             if (_e261) {
-                const bool _e265 = airlight_is_finite(s_16.brdf_exponent);
-                local_104 = _e265;
-            } else {
-                local_104 = false;
-            }
-            bool _e267 = local_104;
-            if (_e267) {
-                local_105 = (s_16.brdf_exponent >= 0.0);
-            } else {
-                local_105 = false;
-            }
-            bool _e274 = local_105;
-            if (_e274) {
-                const bool _e278 = airlight_vec_finite(s_16.brdf_view);
-                local_106 = _e278;
-            } else {
-                local_106 = false;
-            }
-            bool _e280 = local_106;
-            if (_e280) {
-                const bool _e284 = airlight_normalisable(s_16.brdf_view);
-                local_107 = _e284;
+                const bool _e265 = airlight_is_finite(s_17.brdf_exponent);
+                local_107 = _e265;
             } else {
                 local_107 = false;
             }
-            bool _e286 = local_107;
+            bool _e267 = local_107;
+            if (_e267) {
+                local_108 = (s_17.brdf_exponent >= 0.0);
+            } else {
+                local_108 = false;
+            }
+            bool _e274 = local_108;
+            if (_e274) {
+                const bool _e278 = airlight_vec_finite(s_17.brdf_view);
+                local_109 = _e278;
+            } else {
+                local_109 = false;
+            }
+            bool _e280 = local_109;
+            if (_e280) {
+                const bool _e284 = airlight_normalisable(s_17.brdf_view);
+                local_110 = _e284;
+            } else {
+                local_110 = false;
+            }
+            bool _e286 = local_110;
             ok = _e286;
         }
     } else {
-        if ((s_16.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_17.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e294 = ok;
         if (_e294) {
-            const bool _e298 = airlight_vec_finite(s_16.light_axis);
-            local_108 = _e298;
-        } else {
-            local_108 = false;
-        }
-        bool _e300 = local_108;
-        if (_e300) {
-            const bool _e304 = airlight_normalisable(s_16.light_axis);
-            local_109 = _e304;
-        } else {
-            local_109 = false;
-        }
-        bool _e306 = local_109;
-        if (_e306) {
-            local_110 = (s_16.light_param_a >= 0.0);
-        } else {
-            local_110 = false;
-        }
-        bool _e313 = local_110;
-        if (_e313) {
-            local_111 = (s_16.light_param_a <= 1024.0);
+            const bool _e298 = airlight_vec_finite(s_17.light_axis);
+            local_111 = _e298;
         } else {
             local_111 = false;
         }
-        bool _e320 = local_111;
-        if (_e320) {
-            local_112 = (frac((s_16.light_param_a * 0.5)) == 0.0);
+        bool _e300 = local_111;
+        if (_e300) {
+            const bool _e304 = airlight_normalisable(s_17.light_axis);
+            local_112 = _e304;
         } else {
             local_112 = false;
         }
-        bool _e330 = local_112;
+        bool _e306 = local_112;
+        if (_e306) {
+            local_113 = (s_17.light_param_a >= 0.0);
+        } else {
+            local_113 = false;
+        }
+        bool _e313 = local_113;
+        if (_e313) {
+            local_114 = (s_17.light_param_a <= 1024.0);
+        } else {
+            local_114 = false;
+        }
+        bool _e320 = local_114;
+        if (_e320) {
+            local_115 = (frac((s_17.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_115 = false;
+        }
+        bool _e330 = local_115;
         ok = _e330;
     } else {
-        if ((s_16.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_17.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e334 = ok;
             if (_e334) {
-                const bool _e338 = airlight_vec_finite(s_16.light_axis);
-                local_113 = _e338;
-            } else {
-                local_113 = false;
-            }
-            bool _e340 = local_113;
-            if (_e340) {
-                const bool _e344 = airlight_normalisable(s_16.light_axis);
-                local_114 = _e344;
-            } else {
-                local_114 = false;
-            }
-            bool _e346 = local_114;
-            if (_e346) {
-                local_115 = (s_16.light_param_b < s_16.light_param_a);
-            } else {
-                local_115 = false;
-            }
-            bool _e353 = local_115;
-            if (_e353) {
-                local_116 = (s_16.light_param_b >= -1.0);
+                const bool _e338 = airlight_vec_finite(s_17.light_axis);
+                local_116 = _e338;
             } else {
                 local_116 = false;
             }
-            bool _e360 = local_116;
-            if (_e360) {
-                local_117 = (s_16.light_param_a <= 1.0);
+            bool _e340 = local_116;
+            if (_e340) {
+                const bool _e344 = airlight_normalisable(s_17.light_axis);
+                local_117 = _e344;
             } else {
                 local_117 = false;
             }
-            bool _e367 = local_117;
+            bool _e346 = local_117;
+            if (_e346) {
+                local_118 = (s_17.light_param_b < s_17.light_param_a);
+            } else {
+                local_118 = false;
+            }
+            bool _e353 = local_118;
+            if (_e353) {
+                local_119 = (s_17.light_param_b >= -1.0);
+            } else {
+                local_119 = false;
+            }
+            bool _e360 = local_119;
+            if (_e360) {
+                local_120 = (s_17.light_param_a <= 1.0);
+            } else {
+                local_120 = false;
+            }
+            bool _e367 = local_120;
             ok = _e367;
         } else {
-            if ((s_16.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_17.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_16.phase_param_a) < 1.0);
-    switch(s_16.phase_kind) {
+    bool g_ok = (abs(s_17.phase_param_a) < 1.0);
+    switch(s_17.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4882,40 +4910,40 @@ bool airlight_valid(AirlightScene s_16)
         case 4u: {
             bool _e377 = ok;
             if (_e377) {
-                local_118 = g_ok;
+                local_121 = g_ok;
             } else {
-                local_118 = false;
+                local_121 = false;
             }
-            bool _e381 = local_118;
+            bool _e381 = local_121;
             ok = _e381;
             break;
         }
         case 5u: {
             bool _e382 = ok;
             if (_e382) {
-                local_119 = g_ok;
-            } else {
-                local_119 = false;
-            }
-            bool _e386 = local_119;
-            if (_e386) {
-                local_120 = (abs(s_16.phase_param_b) < 1.0);
-            } else {
-                local_120 = false;
-            }
-            bool _e394 = local_120;
-            if (_e394) {
-                local_121 = (s_16.phase_param_c >= 0.0);
-            } else {
-                local_121 = false;
-            }
-            bool _e401 = local_121;
-            if (_e401) {
-                local_122 = (s_16.phase_param_c <= 1.0);
+                local_122 = g_ok;
             } else {
                 local_122 = false;
             }
-            bool _e408 = local_122;
+            bool _e386 = local_122;
+            if (_e386) {
+                local_123 = (abs(s_17.phase_param_b) < 1.0);
+            } else {
+                local_123 = false;
+            }
+            bool _e394 = local_123;
+            if (_e394) {
+                local_124 = (s_17.phase_param_c >= 0.0);
+            } else {
+                local_124 = false;
+            }
+            bool _e401 = local_124;
+            if (_e401) {
+                local_125 = (s_17.phase_param_c <= 1.0);
+            } else {
+                local_125 = false;
+            }
+            bool _e408 = local_125;
             ok = _e408;
             break;
         }
@@ -4940,17 +4968,17 @@ AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2,
     return ret;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_17)
+AirlightCanonical airlight_canonical(AirlightScene s_18)
 {
     float3 a_12 = float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
 
-    const float3 _e2 = airlight_normalize(s_17.dir);
-    if ((s_17.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e12 = airlight_normalize(s_17.light_axis);
+    const float3 _e2 = airlight_normalize(s_18.dir);
+    if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e12 = airlight_normalize(s_18.light_axis);
         a_12 = _e12;
     }
-    float3 to_light = (s_17.light_position - s_17.origin);
+    float3 to_light = (s_18.light_position - s_18.origin);
     float x_h_2 = dot(to_light, _e2);
     float3 perp = ((x_h_2 * _e2) - to_light);
     const float _e19 = airlight_safe_length(perp);
@@ -4958,10 +4986,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_17)
         float3 _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_3 = ((s_17.flags & 1u) != 0u);
+    bool infinite_3 = ((s_18.flags & 1u) != 0u);
     float3 _e32 = a_12;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_17.t_min, (infinite_3 ? 0.0 : s_17.t_max), infinite_3);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_18.t_min, (infinite_3 ? 0.0 : s_18.t_max), infinite_3);
     return airlightcanonical;
 }
 
@@ -5008,47 +5036,47 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_123 = (bool)0;
-    bool local_124 = (bool)0;
+    bool local_126 = (bool)0;
+    bool local_127 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_124 = false;
+            local_127 = false;
         }
-        bool _e21 = local_124;
-        local_123 = _e21;
+        bool _e21 = local_127;
+        local_126 = _e21;
     } else {
-        local_123 = true;
+        local_126 = true;
     }
-    bool _e23 = local_123;
+    bool _e23 = local_126;
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
+AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain)
 {
-    bool local_125 = (bool)0;
+    bool local_128 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_126 = (bool)0;
+    bool local_129 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
-    uint key_4 = uint((s_18.flags > 1u));
-    const float2 _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
-    const float2 _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
-    const float2 _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
+    uint key_4 = uint((s_19.flags > 1u));
+    const float2 _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
+    const float2 _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
+    const float2 _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
     float3 hi_6 = float3(_e11.x, _e17.x, _e23.x);
     float3 lo_7 = float3(_e11.y, _e17.y, _e23.y);
-    float3 dir = s_18.dir;
+    float3 dir = s_19.dir;
     const bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir);
-        local_125 = !(_e38);
+        local_128 = !(_e38);
     } else {
-        local_125 = true;
+        local_128 = true;
     }
-    bool _e41 = local_125;
+    bool _e41 = local_128;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -5075,17 +5103,17 @@ AirlightCanonical airlight_refined(AirlightScene s_18, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_126 = (h_7 > 0.0);
+        local_129 = (h_7 > 0.0);
     } else {
-        local_126 = false;
+        local_129 = false;
     }
-    bool _e101 = local_126;
+    bool _e101 = local_129;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
-    if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e112 = airlight_normalize(s_18.light_axis);
+    if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e112 = airlight_normalize(s_19.light_axis);
         a_16 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir);
@@ -5445,7 +5473,7 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3])
     AirlightEdges e_1 = (AirlightEdges)0;
     uint n_1 = 0u;
     uint i_18 = 0u;
-    bool local_127 = (bool)0;
+    bool local_130 = (bool)0;
 
     cuts_1 = unsorted;
     float _e5 = cuts_1[1];
@@ -5496,11 +5524,11 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3])
             if ((_e50 > _e54)) {
                 uint _e58 = i_18;
                 float _e60 = cuts_1[min(uint(_e58), 2u)];
-                local_127 = (_e60 < hi_3);
+                local_130 = (_e60 < hi_3);
             } else {
-                local_127 = false;
+                local_130 = false;
             }
-            bool _e63 = local_127;
+            bool _e63 = local_130;
             if (_e63) {
                 uint _e64 = n_1;
                 n_1 = (_e64 + 1u);
@@ -5533,9 +5561,9 @@ AirlightSplit ConstructAirlightSplit(bool arg0, float arg1, float arg2, float ar
 AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance)
 {
     uint tries = 0u;
-    bool local_128 = (bool)0;
-    bool local_129 = (bool)0;
-    bool local_130 = (bool)0;
+    bool local_131 = (bool)0;
+    bool local_132 = (bool)0;
+    bool local_133 = (bool)0;
 
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     bool loop_init_23 = true;
@@ -5556,18 +5584,18 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             AirlightPanelList _e8 = list_1;
             const AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
-                local_128 = (count_2 == max_panels);
+                local_131 = (count_2 == max_panels);
             } else {
-                local_128 = true;
+                local_131 = true;
             }
-            bool _e21 = local_128;
+            bool _e21 = local_131;
             if (!(_e21)) {
                 const bool _e26 = airlight_is_finite(_e9.total);
-                local_129 = !(_e26);
+                local_132 = !(_e26);
             } else {
-                local_129 = true;
+                local_132 = true;
             }
-            bool _e29 = local_129;
+            bool _e29 = local_132;
             if (_e29) {
                 break;
             }
@@ -5575,11 +5603,11 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             const float4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_1 = (0.5 * (_e32.x + _e32.y));
             if ((mid_1 > _e32.x)) {
-                local_130 = (mid_1 < _e32.y);
+                local_133 = (mid_1 < _e32.y);
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            bool _e45 = local_130;
+            bool _e45 = local_133;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, float4(_e32.xyz, 0.0));
                 continue;
@@ -5698,13 +5726,13 @@ float airlight_asinh(float x_15)
     return ((x_15 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_19, float s_19)
+float airlight_to_w(AirlightOuter g_19, float s_20)
 {
     if ((g_19.scale > 0.0)) {
-        const float _e9 = airlight_asinh(((s_19 - g_19.s_star) / g_19.scale));
+        const float _e9 = airlight_asinh(((s_20 - g_19.s_star) / g_19.scale));
         return _e9;
     }
-    return s_19;
+    return s_20;
 }
 
 float2 airlight_cos_sin_half_turn(float x_16)
@@ -5723,9 +5751,9 @@ float airlight_acos(float x_17)
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_20)
+float airlight_angle(float c_6, float s_21)
 {
-    const float _e2 = airlight_atan2_upper(s_20, c_6);
+    const float _e2 = airlight_atan2_upper(s_21, c_6);
     return _e2;
 }
 
@@ -5766,10 +5794,10 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_21, uint max_panels_2)
+AirlightOuter airlight_outer_point(AirlightScene s_22, uint max_panels_2)
 {
     float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_21.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_2, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_22.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_2, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
     return airlightouter;
 }
 
@@ -5785,36 +5813,36 @@ airlight_ret_Constructarray6_float_ airlight_Constructarray6_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_surface(AirlightScene s_22)
+AirlightOuter airlight_surface(AirlightScene s_23)
 {
     AirlightOuter g_20 = (AirlightOuter)0;
-    bool local_131 = (bool)0;
+    bool local_134 = (bool)0;
     float3 u_1 = (float3)0;
     float cuts_2[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_19 = 1u;
     uint j_4 = (uint)0;
-    bool local_132 = (bool)0;
+    bool local_135 = (bool)0;
     uint k_4 = 0u;
     uint i_20 = 0u;
-    bool local_133 = (bool)0;
+    bool local_136 = (bool)0;
     uint i_21 = 0u;
     uint i_22 = 1u;
-    bool local_134 = (bool)0;
-    bool local_135 = (bool)0;
-    bool local_136 = (bool)0;
     bool local_137 = (bool)0;
     bool local_138 = (bool)0;
+    bool local_139 = (bool)0;
+    bool local_140 = (bool)0;
+    bool local_141 = (bool)0;
 
-    const AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
+    const AirlightOuter _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
-    float3 to_light_1 = (s_22.light_position - s_22.origin);
+    float3 to_light_1 = (s_23.light_position - s_23.origin);
     const float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_22.intensity == 0.0))) {
-        local_131 = (s_22.sigma_s == 0.0);
+    if (!((s_23.intensity == 0.0))) {
+        local_134 = (s_23.sigma_s == 0.0);
     } else {
-        local_131 = true;
+        local_134 = true;
     }
-    bool _e18 = local_131;
+    bool _e18 = local_134;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -5827,14 +5855,14 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
-    if ((s_22.brdf_scale == 0.0)) {
+    if ((s_23.brdf_scale == 0.0)) {
         g_20.outcome = 1u;
         AirlightOuter _e33 = g_20;
         const AirlightOuter airlightouter_3 = _e33;
         return airlightouter_3;
     }
     float3 l_3 = (to_light_1 / (_e7).xxx);
-    const float3 _e37 = airlight_normalize(s_22.dir);
+    const float3 _e37 = airlight_normalize(s_23.dir);
     float cos_a_1 = dot(_e37, l_3);
     float3 across = (_e37 - (cos_a_1 * l_3));
     const float _e41 = airlight_safe_length(across);
@@ -5848,7 +5876,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     float3 _e67 = u_1;
     g_20.u = _e67;
     g_20.d = _e7;
-    const float3 _e70 = airlight_normalize(s_22.light_axis);
+    const float3 _e70 = airlight_normalize(s_23.light_axis);
     g_20.axis_l = dot(_e70, l_3);
     float3 _e74 = u_1;
     g_20.axis_u = dot(_e70, _e74);
@@ -5858,9 +5886,9 @@ AirlightOuter airlight_surface(AirlightScene s_22)
     float first = abs((1.5707964 - _e92));
     cuts_2[0] = first;
     cuts_2[1] = (AIRLIGHT_PI - first);
-    if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+    if ((s_23.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        const float3 _e105 = airlight_normalize(s_22.brdf_view);
+        const float3 _e105 = airlight_normalize(s_23.brdf_view);
         const float3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         float3 _e112 = u_1;
         float x_28 = dot(_e111, _e112);
@@ -5886,8 +5914,8 @@ AirlightOuter airlight_surface(AirlightScene s_22)
         cuts_2[3] = (AIRLIGHT_PI - first_r);
         float _e163 = g_20.alpha_r;
         cuts_2[4] = _e163;
-        if ((s_22.brdf_exponent > 1.0)) {
-            float width_3 = (1.0 / sqrt(s_22.brdf_exponent));
+        if ((s_23.brdf_exponent > 1.0)) {
+            float width_3 = (1.0 / sqrt(s_23.brdf_exponent));
             float _e173 = g_20.alpha_r;
             cuts_2[5] = (_e173 - (1.5 * width_3));
             float _e179 = g_20.alpha_r;
@@ -5940,11 +5968,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2[min(uint((_e237 - 1u)), 10u)];
-                    local_132 = (_e241 > c_13);
+                    local_135 = (_e241 > c_13);
                 } else {
-                    local_132 = false;
+                    local_135 = false;
                 }
-                bool _e244 = local_132;
+                bool _e244 = local_135;
                 if (_e244) {
                 } else {
                     break;
@@ -5987,11 +6015,11 @@ AirlightOuter airlight_surface(AirlightScene s_22)
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[min(uint(_e289), 10u)];
-                local_133 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_7);
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            bool _e294 = local_133;
+            bool _e294 = local_136;
             if (_e294) {
                 uint _e295 = k_4;
                 k_4 = (_e295 + 1u);
@@ -6028,7 +6056,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
             g_20.edges[min(uint(_e323), 12u)] = float(_e325);
         }
     }
-    if ((s_22.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+    if ((s_23.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
         bool loop_init_27 = true;
         while(true) {
@@ -6049,35 +6077,35 @@ AirlightOuter airlight_surface(AirlightScene s_22)
                 uint _e339 = i_22;
                 float e_5 = g_20.gamma[min(uint(_e339), 12u)];
                 if (!((e_5 == kinks[0]))) {
-                    local_134 = (e_5 == kinks[1]);
-                } else {
-                    local_134 = true;
-                }
-                bool _e350 = local_134;
-                if (!(_e350)) {
-                    local_135 = (e_5 == kinks[2]);
-                } else {
-                    local_135 = true;
-                }
-                bool _e357 = local_135;
-                if (!(_e357)) {
-                    local_136 = (e_5 == kinks[3]);
-                } else {
-                    local_136 = true;
-                }
-                bool _e364 = local_136;
-                if (!(_e364)) {
-                    local_137 = (e_5 == kinks[4]);
+                    local_137 = (e_5 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
-                bool _e371 = local_137;
-                if (!(_e371)) {
-                    local_138 = (e_5 == kinks[5]);
+                bool _e350 = local_137;
+                if (!(_e350)) {
+                    local_138 = (e_5 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
-                bool kink = local_138;
+                bool _e357 = local_138;
+                if (!(_e357)) {
+                    local_139 = (e_5 == kinks[3]);
+                } else {
+                    local_139 = true;
+                }
+                bool _e364 = local_139;
+                if (!(_e364)) {
+                    local_140 = (e_5 == kinks[4]);
+                } else {
+                    local_140 = true;
+                }
+                bool _e371 = local_140;
+                if (!(_e371)) {
+                    local_141 = (e_5 == kinks[5]);
+                } else {
+                    local_141 = true;
+                }
+                bool kink = local_141;
                 uint _e380 = g_20.smooth_edges;
                 uint _e382 = i_22;
                 g_20.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
@@ -6091,7 +6119,7 @@ AirlightOuter airlight_surface(AirlightScene s_22)
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18)
 {
-    bool local_139 = (bool)0;
+    bool local_142 = (bool)0;
 
     const float2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
@@ -6102,11 +6130,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18)
     float clip_ = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_139 = (clip_ > 0.0);
+        local_142 = (clip_ > 0.0);
     } else {
-        local_139 = false;
+        local_142 = false;
     }
-    bool _e43 = local_139;
+    bool _e43 = local_142;
     if (_e43) {
         const float _e47 = airlight_log1p(-(fall));
         return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -6127,7 +6155,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w, float u_2, bool 
 float airlight_arc_end(float x_19, float cut)
 {
     float end = (float)0;
-    bool local_140 = (bool)0;
+    bool local_143 = (bool)0;
 
     end = x_19;
     float _e3 = end;
@@ -6144,11 +6172,11 @@ float airlight_arc_end(float x_19, float cut)
     float _e16 = end;
     if ((_e16 > -(cut))) {
         float _e21 = end;
-        local_140 = (_e21 < cut);
+        local_143 = (_e21 < cut);
     } else {
-        local_140 = false;
+        local_143 = false;
     }
-    bool _e24 = local_140;
+    bool _e24 = local_143;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -6166,18 +6194,18 @@ airlight_ret_airlight_lobe_rule airlight_lobe_rule()
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smoothstep_1)
 {
-    bool local_141 = (bool)0;
+    bool local_144 = (bool)0;
     float sum_5 = 0.0;
     uint k_5 = 0u;
 
     float w_6 = (hi_5 - lo_6);
     if (!(!((w_6 > 0.0)))) {
         const float _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5 * w_6)));
-        local_141 = !((_e14 > 0.0));
+        local_144 = !((_e14 > 0.0));
     } else {
-        local_141 = true;
+        local_144 = true;
     }
-    bool _e19 = local_141;
+    bool _e19 = local_144;
     if (_e19) {
         return 0.0;
     }
@@ -6297,60 +6325,60 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_23)
+AirlightOuter airlight_outer(AirlightScene s_24)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_142 = (bool)0;
-    bool local_143 = (bool)0;
-    float s_star = 0.0;
-    float t_star = (float)0;
-    bool local_144 = (bool)0;
     bool local_145 = (bool)0;
     bool local_146 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
     bool local_147 = (bool)0;
     bool local_148 = (bool)0;
     bool local_149 = (bool)0;
-    float scale = 0.0;
     bool local_150 = (bool)0;
     bool local_151 = (bool)0;
     bool local_152 = (bool)0;
+    float scale = 0.0;
     bool local_153 = (bool)0;
     bool local_154 = (bool)0;
-    float cuts_3[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = {0.0, 0.0, 0.0};
     bool local_155 = (bool)0;
-    uint i_24 = 0u;
     bool local_156 = (bool)0;
     bool local_157 = (bool)0;
+    float cuts_3[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
     bool local_158 = (bool)0;
+    uint i_24 = 0u;
     bool local_159 = (bool)0;
+    bool local_160 = (bool)0;
+    bool local_161 = (bool)0;
+    bool local_162 = (bool)0;
 
-    if ((s_23.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        const AirlightOuter _e4 = airlight_surface(s_23);
+    if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        const AirlightOuter _e4 = airlight_surface(s_24);
         const AirlightOuter airlightouter_5 = _e4;
         return airlightouter_5;
     }
-    const AirlightOuter _e6 = airlight_outer_point(s_23, AIRLIGHT_SEGMENT_PANELS);
+    const AirlightOuter _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
     g_22 = _e6;
-    if ((s_23.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
         AirlightOuter _e11 = g_22;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
-    float3 ab_1 = (s_23.light_end - s_23.light_position);
+    float3 ab_1 = (s_24.light_end - s_24.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_142 = (s_23.intensity == 0.0);
+        local_145 = (s_24.intensity == 0.0);
     } else {
-        local_142 = true;
+        local_145 = true;
     }
-    bool _e26 = local_142;
+    bool _e26 = local_145;
     if (!(_e26)) {
-        local_143 = (s_23.sigma_s == 0.0);
+        local_146 = (s_24.sigma_s == 0.0);
     } else {
-        local_143 = true;
+        local_146 = true;
     }
-    bool _e34 = local_143;
+    bool _e34 = local_146;
     if (_e34) {
         g_22.outcome = 1u;
         AirlightOuter _e37 = g_22;
@@ -6358,13 +6386,13 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         return airlightouter_7;
     }
     float3 e_6 = (ab_1 / (_e15).xxx);
-    const float3 _e41 = airlight_normalize(s_23.dir);
-    float3 w0_ = (s_23.light_position - s_23.origin);
+    const float3 _e41 = airlight_normalize(s_24.dir);
+    float3 w0_ = (s_24.light_position - s_24.origin);
     float cos_a_2 = dot(e_6, _e41);
     float along_e = dot(e_6, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_4 = ((s_23.flags & 1u) != 0u);
+    bool infinite_4 = ((s_24.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -6375,45 +6403,45 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_6 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_144 = (sin_a_1 > 0.0);
-    } else {
-        local_144 = false;
-    }
-    bool _e84 = local_144;
-    if (_e84) {
-        float _e87 = s_star;
-        local_145 = (_e87 >= 0.0);
-    } else {
-        local_145 = false;
-    }
-    bool _e91 = local_145;
-    if (_e91) {
-        float _e94 = s_star;
-        local_146 = (_e94 <= _e15);
-    } else {
-        local_146 = false;
-    }
-    bool _e97 = local_146;
-    if (_e97) {
-        float _e101 = t_star;
-        local_147 = (s_23.t_min <= _e101);
+        local_147 = (sin_a_1 > 0.0);
     } else {
         local_147 = false;
     }
-    bool _e104 = local_147;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_149 = (_e110 <= s_23.t_max);
-        } else {
-            local_149 = true;
-        }
-        bool _e114 = local_149;
-        local_148 = _e114;
+    bool _e84 = local_147;
+    if (_e84) {
+        float _e87 = s_star;
+        local_148 = (_e87 >= 0.0);
     } else {
         local_148 = false;
     }
-    bool _e116 = local_148;
+    bool _e91 = local_148;
+    if (_e91) {
+        float _e94 = s_star;
+        local_149 = (_e94 <= _e15);
+    } else {
+        local_149 = false;
+    }
+    bool _e97 = local_149;
+    if (_e97) {
+        float _e101 = t_star;
+        local_150 = (s_24.t_min <= _e101);
+    } else {
+        local_150 = false;
+    }
+    bool _e104 = local_150;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_152 = (_e110 <= s_24.t_max);
+        } else {
+            local_152 = true;
+        }
+        bool _e114 = local_152;
+        local_151 = _e114;
+    } else {
+        local_151 = false;
+    }
+    bool _e116 = local_151;
     if (_e116) {
         g_22.outcome = 2u;
         AirlightOuter _e119 = g_22;
@@ -6421,49 +6449,49 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_150 = (_e73 > 0.0);
+        local_153 = (_e73 > 0.0);
     } else {
-        local_150 = false;
+        local_153 = false;
     }
-    bool _e129 = local_150;
+    bool _e129 = local_153;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_151 = (_e136 < (_e15 + _e15));
+        local_154 = (_e136 < (_e15 + _e15));
     } else {
-        local_151 = false;
+        local_154 = false;
     }
-    bool _e140 = local_151;
+    bool _e140 = local_154;
     if (_e140) {
         float _e143 = scale;
-        local_152 = (_e143 < _e15);
+        local_155 = (_e143 < _e15);
     } else {
-        local_152 = false;
+        local_155 = false;
     }
-    bool near_1 = local_152;
+    bool near_1 = local_155;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_153 = _e154;
+        local_156 = _e154;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    bool _e156 = local_153;
+    bool _e156 = local_156;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_154 = _e163;
+        local_157 = _e163;
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    bool _e165 = local_154;
+    bool _e165 = local_157;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -6473,18 +6501,18 @@ AirlightOuter airlight_outer(AirlightScene s_23)
     float _e172 = scale;
     g_22.scale = _e172;
     float _e178 = s_star;
-    at = airlight_Constructarray3_float_(_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
+    at = airlight_Constructarray3_float_(_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
     float _e187 = scale;
     if ((_e187 > 0.0)) {
         AirlightOuter _e192 = g_22;
         const float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_22;
         const float _e197 = airlight_to_w(_e196, _e15);
-        local_155 = (min(-(_e194), _e197) < 0.5);
+        local_158 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    bool sliver = local_155;
+    bool sliver = local_158;
     uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     bool loop_init_30 = true;
     while(true) {
@@ -6503,31 +6531,31 @@ AirlightOuter airlight_outer(AirlightScene s_23)
         {
             uint _e208 = i_24;
             if ((_e208 == 0u)) {
-                local_156 = sliver;
+                local_159 = sliver;
             } else {
-                local_156 = false;
+                local_159 = false;
             }
-            bool _e214 = local_156;
+            bool _e214 = local_159;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_24;
-                local_157 = (_e219 > 0u);
+                local_160 = (_e219 > 0u);
             } else {
-                local_157 = false;
+                local_160 = false;
             }
-            bool _e223 = local_157;
+            bool _e223 = local_160;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_24;
             if ((_e224 == 2u)) {
-                local_158 = infinite_4;
+                local_161 = infinite_4;
             } else {
-                local_158 = false;
+                local_161 = false;
             }
-            bool _e230 = local_158;
+            bool _e230 = local_161;
             if (_e230) {
                 continue;
             }
@@ -6536,11 +6564,11 @@ AirlightOuter airlight_outer(AirlightScene s_23)
             if ((_e233 > 0.0)) {
                 uint _e238 = i_24;
                 float _e240 = at[min(uint(_e238), 2u)];
-                local_159 = (_e240 < _e15);
+                local_162 = (_e240 < _e15);
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            bool _e243 = local_159;
+            bool _e243 = local_162;
             if (_e243) {
                 uint _e244 = i_24;
                 AirlightOuter _e246 = g_22;
@@ -6579,26 +6607,26 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1, AirlightCanon
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x_20)
+AirlightNode airlight_outer_node(AirlightScene s_25, AirlightOuter g_23, float x_20)
 {
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
     float jacobian = (float)0;
-    bool local_160 = (bool)0;
-    bool local_161 = (bool)0;
-    bool local_162 = (bool)0;
     bool local_163 = (bool)0;
     bool local_164 = (bool)0;
     bool local_165 = (bool)0;
+    bool local_166 = (bool)0;
+    bool local_167 = (bool)0;
+    bool local_168 = (bool)0;
     float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
 
-    p = s_24;
+    p = s_25;
     const AirlightCanonical _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_24.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+    if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_25 = min(airlight_naga_f2u32(max(floor(x_20), 0.0)), (g_23.panels - 1u));
         float t_7 = (x_20 - float(i_25));
         float a_28 = g_23.gamma[min(uint(i_25), 12u)];
@@ -6611,51 +6639,51 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
         jacobian = (((w_7 * 6.0) * t_7) * u_4);
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_160 = !(smooth_a);
-        } else {
-            local_160 = false;
-        }
-        bool _e66 = local_160;
-        gamma_1 = (_e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58);
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_161 = !(smooth_a);
-        } else {
-            local_161 = false;
-        }
-        bool _e75 = local_161;
-        jacobian = (_e75 ? (w_7 * (t_7 + t_7)) : _e68);
-        float _e77 = gamma_1;
-        if (smooth_a) {
-            local_162 = !(smooth_b);
-        } else {
-            local_162 = false;
-        }
-        bool _e85 = local_162;
-        gamma_1 = (_e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77);
-        float _e87 = jacobian;
-        if (smooth_a) {
-            local_163 = !(smooth_b);
+            local_163 = !(smooth_a);
         } else {
             local_163 = false;
         }
-        bool _e94 = local_163;
-        jacobian = (_e94 ? (w_7 * (u_4 + u_4)) : _e87);
-        float _e96 = gamma_1;
-        if (smooth_a) {
-            local_164 = smooth_b;
+        bool _e66 = local_163;
+        gamma_1 = (_e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58);
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_164 = !(smooth_a);
         } else {
             local_164 = false;
         }
-        bool _e102 = local_164;
-        gamma_1 = (_e102 ? (a_28 + (w_7 * t_7)) : _e96);
-        float _e104 = jacobian;
+        bool _e75 = local_164;
+        jacobian = (_e75 ? (w_7 * (t_7 + t_7)) : _e68);
+        float _e77 = gamma_1;
         if (smooth_a) {
-            local_165 = smooth_b;
+            local_165 = !(smooth_b);
         } else {
             local_165 = false;
         }
-        bool _e108 = local_165;
+        bool _e85 = local_165;
+        gamma_1 = (_e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77);
+        float _e87 = jacobian;
+        if (smooth_a) {
+            local_166 = !(smooth_b);
+        } else {
+            local_166 = false;
+        }
+        bool _e94 = local_166;
+        jacobian = (_e94 ? (w_7 * (u_4 + u_4)) : _e87);
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_167 = smooth_b;
+        } else {
+            local_167 = false;
+        }
+        bool _e102 = local_167;
+        gamma_1 = (_e102 ? (a_28 + (w_7 * t_7)) : _e96);
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_168 = smooth_b;
+        } else {
+            local_168 = false;
+        }
+        bool _e108 = local_168;
         jacobian = (_e108 ? w_7 : _e104);
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6671,15 +6699,15 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
             const AirlightNode airlightnode_1 = ConstructAirlightNode(_e128, 0.0, _e4, false);
             return airlightnode_1;
         }
-        if ((s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        if ((s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
             const float2 _e144 = airlight_cos_sin_half_turn(_e124);
             float arc = (2.0 * (((g_23.cos_a * _e119.x) * _e124) + ((g_23.sin_a * _e119.y) * _e144.y)));
-            weight = ((s_24.brdf_scale * 0.31830987) * arc);
+            weight = ((s_25.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_4 = s_24.brdf_exponent;
+            float n_4 = s_25.brdf_exponent;
             float _e161 = gamma_1;
             const float _e162 = airlight_lobe_arcs(g_23, _e119, _e161, _e124, n_4);
-            weight = (((s_24.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162);
+            weight = (((s_25.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162);
         }
         p.dir = ((_e119.x * g_23.l) + (_e119.y * g_23.u));
         p.t_min = 0.0;
@@ -6695,7 +6723,7 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
         const AirlightNode airlightnode_2 = ConstructAirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
         return airlightnode_2;
     }
-    if ((s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_20;
         if ((g_23.scale > 0.0)) {
             at_1 = (g_23.s_star + (g_23.scale * sinh(x_20)));
@@ -6715,15 +6743,15 @@ AirlightNode airlight_outer_node(AirlightScene s_24, AirlightOuter g_23, float x
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_166 = (bool)0;
+    bool local_169 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_166 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_169 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_166 = true;
+        local_169 = true;
     }
-    bool _e11 = local_166;
+    bool _e11 = local_169;
     if (_e11) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_8;
@@ -6735,18 +6763,18 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_2)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_167 = (bool)0;
+    bool local_170 = (bool)0;
     AirlightCanonical g_24 = (AirlightCanonical)0;
 
     AirlightScene p_1 = n_2.scene;
     const bool _e7 = airlight_vec_finite(p_1.light_position);
     if (_e7) {
         const bool _e11 = airlight_vec_finite(p_1.dir);
-        local_167 = _e11;
+        local_170 = _e11;
     } else {
-        local_167 = false;
+        local_170 = false;
     }
-    bool _e13 = local_167;
+    bool _e13 = local_170;
     if (_e13) {
         g_24 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -6764,27 +6792,27 @@ AirlightResult airlight_node_integral(AirlightNode n_2)
     return airlightresult_10;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_25)
+AirlightResult airlight_in_scatter(AirlightScene s_26)
 {
     AirlightAdaptive st_1 = (AirlightAdaptive)0;
     uint step_2 = 0u;
     float k_6 = (float)0;
     float gauss_1 = (float)0;
     uint j_5 = (uint)0;
-    bool local_168 = (bool)0;
+    bool local_171 = (bool)0;
     float f = (float)0;
-    bool local_169 = (bool)0;
+    bool local_172 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_25);
+    const bool _e1 = airlight_valid(s_26);
     if (!(_e1)) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
     }
-    if ((s_25.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_26.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         const AirlightResult airlightresult_12 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_12;
     }
-    const AirlightOuter _e12 = airlight_outer(s_25);
+    const AirlightOuter _e12 = airlight_outer(s_26);
     if ((_e12.outcome == 1u)) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_13;
@@ -6843,13 +6871,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                     uint _e74 = j_5;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_5;
-                        local_168 = (_e81 < 6u);
+                        local_171 = (_e81 < 6u);
                     } else {
-                        local_168 = false;
+                        local_171 = false;
                     }
-                    bool _e85 = local_168;
+                    bool _e85 = local_171;
                     float w_8 = (_e85 ? (c_15 - (hw_2 * node_1.x)) : (c_15 + (hw_2 * node_1.x)));
-                    const AirlightNode _e87 = airlight_outer_node(s_25, _e12, w_8);
+                    const AirlightNode _e87 = airlight_outer_node(s_26, _e12, w_8);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         const AirlightResult _e93 = airlight_node_integral(_e87);
@@ -6857,12 +6885,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_25)
                             const AirlightResult airlightresult_15 = _e93;
                             return airlightresult_15;
                         }
-                        if ((s_25.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_26.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_172 = (s_26.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_169 = false;
+                            local_172 = false;
                         }
-                        bool _e106 = local_169;
+                        bool _e106 = local_172;
                         if (_e106) {
                             const AirlightResult airlightresult_16 = _e93;
                             return airlightresult_16;

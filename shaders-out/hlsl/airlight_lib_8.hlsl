@@ -617,8 +617,8 @@ float2 airlight_cos_sin(float x)
 {
     float z_15 = (x * x);
     float c_8 = (1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (2.4801588e-5 + (z_15 * (-2.755732e-7 + (z_15 * (2.0876756e-9 + (z_15 * (-1.1470745e-11 + (z_15 * 4.7794773e-14))))))))))))))));
-    float s_52 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
-    return float2(c_8, (s_52 * x));
+    float s_53 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
+    return float2(c_8, (s_53 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -679,10 +679,10 @@ float airlight_log1p(float x_2)
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_53 = (x_2 / (2.0 + x_2));
-    float z_17 = (s_53 * s_53);
+    float s_54 = (x_2 / (2.0 + x_2));
+    float z_17 = (s_54 * s_54);
     float sum_14 = ((((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0);
-    return ((2.0 * s_53) * sum_14);
+    return ((2.0 * s_54) * sum_14);
 }
 
 bool airlight_is_finite(float x_3)
@@ -3985,7 +3985,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
     return airlightresult_3;
 }
 
-bool airlight_isotropic_scene(AirlightScene s_16)
+bool airlight_isotropic_phase(AirlightScene s_16)
 {
     bool local_50 = (bool)0;
     bool local_51 = (bool)0;
@@ -3994,71 +3994,99 @@ bool airlight_isotropic_scene(AirlightScene s_16)
     bool local_54 = (bool)0;
     bool local_55 = (bool)0;
 
-    if (!((s_16.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if ((s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
-            local_51 = (s_16.light_param_a == 0.0);
+    if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+        if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+            local_51 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
-            local_51 = false;
+            local_51 = true;
         }
-        bool _e16 = local_51;
-        local_50 = _e16;
+        bool _e17 = local_51;
+        if (_e17) {
+            local_52 = (s_16.phase_param_a == 0.0);
+        } else {
+            local_52 = false;
+        }
+        bool _e24 = local_52;
+        local_50 = _e24;
     } else {
         local_50 = true;
     }
-    bool _e18 = local_50;
-    if (_e18) {
-        if (!((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_54 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_54 = true;
-            }
-            bool _e37 = local_54;
-            if (_e37) {
-                local_55 = (s_16.phase_param_a == 0.0);
-            } else {
-                local_55 = false;
-            }
-            bool _e44 = local_55;
-            local_53 = _e44;
+    bool _e26 = local_50;
+    if (!(_e26)) {
+        if ((s_16.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
+            local_54 = (s_16.phase_param_a == 0.0);
         } else {
-            local_53 = true;
+            local_54 = false;
         }
-        bool _e46 = local_53;
-        local_52 = _e46;
+        bool _e39 = local_54;
+        if (_e39) {
+            local_55 = (s_16.phase_param_b == 0.0);
+        } else {
+            local_55 = false;
+        }
+        bool _e46 = local_55;
+        local_53 = _e46;
     } else {
-        local_52 = false;
+        local_53 = true;
     }
-    bool _e48 = local_52;
+    bool _e48 = local_53;
     return _e48;
 }
 
-AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonical g_20)
+bool airlight_isotropic_scene(AirlightScene s_17)
 {
     bool local_56 = (bool)0;
     bool local_57 = (bool)0;
     bool local_58 = (bool)0;
+
+    if (!((s_17.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if ((s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+            local_57 = (s_17.light_param_a == 0.0);
+        } else {
+            local_57 = false;
+        }
+        bool _e16 = local_57;
+        local_56 = _e16;
+    } else {
+        local_56 = true;
+    }
+    bool _e18 = local_56;
+    if (_e18) {
+        const bool _e21 = airlight_isotropic_phase(s_17);
+        local_58 = _e21;
+    } else {
+        local_58 = false;
+    }
+    bool _e23 = local_58;
+    return _e23;
+}
+
+AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonical g_20)
+{
+    bool local_59 = (bool)0;
+    bool local_60 = (bool)0;
+    bool local_61 = (bool)0;
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = (float)0;
-    bool local_59 = (bool)0;
-    AirlightHalf half_13 = (AirlightHalf)0;
-    bool local_60 = (bool)0;
-    bool local_61 = (bool)0;
     bool local_62 = (bool)0;
+    AirlightHalf half_13 = (AirlightHalf)0;
+    bool local_63 = (bool)0;
+    bool local_64 = (bool)0;
+    bool local_65 = (bool)0;
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = (float)0;
     bool infinite_2 = true;
-    bool local_63 = (bool)0;
-    bool local_64 = (bool)0;
-    AirlightHalf half_14 = (AirlightHalf)0;
-    bool local_65 = (bool)0;
     bool local_66 = (bool)0;
     bool local_67 = (bool)0;
+    AirlightHalf half_14 = (AirlightHalf)0;
+    bool local_68 = (bool)0;
+    bool local_69 = (bool)0;
+    bool local_70 = (bool)0;
 
-    const AirlightResult _e2 = airlight_limits(s_17, g_20);
+    const AirlightResult _e2 = airlight_limits(s_18, g_20);
     if ((_e2.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult airlightresult_4 = _e2;
         return airlightresult_4;
@@ -4067,33 +4095,33 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
     float t1_1 = g_20.t_hi;
     float h_6 = g_20.h;
     float x_h_1 = g_20.x_h;
-    float big_h_8 = (s_17.sigma_t * h_6);
-    const bool _e12 = airlight_isotropic_scene(s_17);
+    float big_h_8 = (s_18.sigma_t * h_6);
+    const bool _e12 = airlight_isotropic_scene(s_18);
     if (_e12) {
-        local_56 = (t0_1 < x_h_1);
+        local_59 = (t0_1 < x_h_1);
     } else {
-        local_56 = false;
+        local_59 = false;
     }
-    bool _e17 = local_56;
+    bool _e17 = local_59;
     if (_e17) {
         if (!(g_20.t_hi_infinite)) {
-            local_58 = (x_h_1 < t1_1);
+            local_61 = (x_h_1 < t1_1);
         } else {
-            local_58 = true;
+            local_61 = true;
         }
-        bool _e26 = local_58;
-        local_57 = _e26;
+        bool _e26 = local_61;
+        local_60 = _e26;
     } else {
-        local_57 = false;
+        local_60 = false;
     }
-    bool _e28 = local_57;
+    bool _e28 = local_60;
     if (_e28) {
-        const float _e29 = airlight_whole_line(s_17, g_20, big_h_8);
+        const float _e29 = airlight_whole_line(s_18, g_20, big_h_8);
         const AirlightResult airlightresult_5 = ConstructAirlightResult(max(_e29, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_5;
     }
     if (!(_e12)) {
-        const float2 _e35 = airlight_angle_route(s_17, g_20);
+        const float2 _e35 = airlight_angle_route(s_18, g_20);
         if ((_e35.x > 0.5)) {
             const AirlightResult airlightresult_6 = ConstructAirlightResult(max(_e35.y, 0.0), AIRLIGHT_STATUS_OK);
             return airlightresult_6;
@@ -4104,11 +4132,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
-            local_59 = (t1_1 < x_h_1);
+            local_62 = (t1_1 < x_h_1);
         } else {
-            local_59 = false;
+            local_62 = false;
         }
-        bool _e61 = local_59;
+        bool _e61 = local_62;
         if (_e61) {
             t_end = t1_1;
         }
@@ -4124,11 +4152,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_60 = (_e89 > 0.0);
+            local_63 = (_e89 > 0.0);
         } else {
-            local_60 = false;
+            local_63 = false;
         }
-        bool _e93 = local_60;
+        bool _e93 = local_63;
         if (_e93) {
             float _e95 = half_13.big_h;
             const float _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -4139,24 +4167,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
             }
         }
         AirlightHalf _e106 = half_13;
-        const float _e107 = airlight_half(s_17, g_20, -1.0, _e106, _e12, f_max_7);
+        const float _e107 = airlight_half(s_18, g_20, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        const float _e112 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, (big_h_8 * _e65), _e107);
+        const float _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
-        local_61 = (t1_1 > x_h_1);
+        local_64 = (t1_1 > x_h_1);
     } else {
-        local_61 = true;
+        local_64 = true;
     }
-    bool _e120 = local_61;
+    bool _e120 = local_64;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_62 = !(_e123);
+        local_65 = !(_e123);
     } else {
-        local_62 = false;
+        local_65 = false;
     }
-    bool _e126 = local_62;
+    bool _e126 = local_65;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
         float a_s_2 = ((t_start - x_h_1) / h_6);
@@ -4166,22 +4194,22 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_20.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
-            local_63 = _e145;
+            local_66 = _e145;
         } else {
-            local_63 = false;
+            local_66 = false;
         }
-        bool _e147 = local_63;
+        bool _e147 = local_66;
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
-                local_64 = _e162;
+                local_67 = _e162;
             } else {
-                local_64 = false;
+                local_67 = false;
             }
-            bool _e164 = local_64;
+            bool _e164 = local_67;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -4201,11 +4229,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
         half_14 = ConstructAirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_65 = (_e183 > 0.0);
+            local_68 = (_e183 > 0.0);
         } else {
-            local_65 = false;
+            local_68 = false;
         }
-        bool _e187 = local_65;
+        bool _e187 = local_68;
         if (_e187) {
             float _e189 = half_14.big_h;
             float _e192 = dv_3;
@@ -4214,20 +4242,20 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
             bool _e197 = infinite_2;
             if (!(_e197)) {
                 float _e201 = dv_3;
-                local_66 = (_e196 < _e201);
+                local_69 = (_e196 < _e201);
             } else {
-                local_66 = true;
+                local_69 = true;
             }
-            bool _e204 = local_66;
+            bool _e204 = local_69;
             if (_e204) {
                 float cut_y_lo = (_e131 / (1.0 + (_e131 * _e196)));
                 if ((cut_y_lo > 0.0)) {
                     const bool _e213 = airlight_is_finite(_e196);
-                    local_67 = _e213;
+                    local_70 = _e213;
                 } else {
-                    local_67 = false;
+                    local_70 = false;
                 }
-                bool _e215 = local_67;
+                bool _e215 = local_70;
                 if (_e215) {
                     float _e218 = half_14.big_h;
                     half_14 = ConstructAirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
@@ -4235,9 +4263,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
             }
         }
         AirlightHalf _e224 = half_14;
-        const float _e225 = airlight_half(s_17, g_20, 1.0, _e224, _e12, f_max_7);
+        const float _e225 = airlight_half(s_18, g_20, 1.0, _e224, _e12, f_max_7);
         float _e226 = total_3;
-        const float _e234 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, ((s_17.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        const float _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     float _e236 = total_3;
@@ -4247,24 +4275,24 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_17, AirlightCanonic
 
 bool airlight_vec_finite(float3 v)
 {
-    bool local_68 = (bool)0;
-    bool local_69 = (bool)0;
+    bool local_71 = (bool)0;
+    bool local_72 = (bool)0;
 
     const bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         const bool _e6 = airlight_is_finite(v.y);
-        local_68 = _e6;
+        local_71 = _e6;
     } else {
-        local_68 = false;
+        local_71 = false;
     }
-    bool _e8 = local_68;
+    bool _e8 = local_71;
     if (_e8) {
         const bool _e12 = airlight_is_finite(v.z);
-        local_69 = _e12;
+        local_72 = _e12;
     } else {
-        local_69 = false;
+        local_72 = false;
     }
-    bool _e14 = local_69;
+    bool _e14 = local_72;
     return _e14;
 }
 
@@ -4279,16 +4307,16 @@ float airlight_safe_length(float3 v_1)
 
 bool airlight_normalisable(float3 v_2)
 {
-    bool local_70 = (bool)0;
+    bool local_73 = (bool)0;
 
     const float _e1 = airlight_safe_length(v_2);
     if ((_e1 > 0.0)) {
         const bool _e6 = airlight_is_finite(_e1);
-        local_70 = _e6;
+        local_73 = _e6;
     } else {
-        local_70 = false;
+        local_73 = false;
     }
-    bool _e8 = local_70;
+    bool _e8 = local_73;
     return _e8;
 }
 
@@ -4299,11 +4327,8 @@ float3 airlight_normalize(float3 v_3)
     return (u_7 / (length(u_7)).xxx);
 }
 
-bool airlight_valid(AirlightScene s_18)
+bool airlight_valid(AirlightScene s_19)
 {
-    bool local_71 = (bool)0;
-    bool local_72 = (bool)0;
-    bool local_73 = (bool)0;
     bool local_74 = (bool)0;
     bool local_75 = (bool)0;
     bool local_76 = (bool)0;
@@ -4311,10 +4336,10 @@ bool airlight_valid(AirlightScene s_18)
     bool local_78 = (bool)0;
     bool local_79 = (bool)0;
     bool local_80 = (bool)0;
-    bool ok = (bool)0;
     bool local_81 = (bool)0;
     bool local_82 = (bool)0;
     bool local_83 = (bool)0;
+    bool ok = (bool)0;
     bool local_84 = (bool)0;
     bool local_85 = (bool)0;
     bool local_86 = (bool)0;
@@ -4354,375 +4379,378 @@ bool airlight_valid(AirlightScene s_18)
     bool local_120 = (bool)0;
     bool local_121 = (bool)0;
     bool local_122 = (bool)0;
+    bool local_123 = (bool)0;
+    bool local_124 = (bool)0;
+    bool local_125 = (bool)0;
 
-    const bool _e2 = airlight_vec_finite(s_18.origin);
+    const bool _e2 = airlight_vec_finite(s_19.origin);
     if (_e2) {
-        const bool _e6 = airlight_vec_finite(s_18.dir);
-        local_71 = _e6;
-    } else {
-        local_71 = false;
-    }
-    bool _e8 = local_71;
-    if (_e8) {
-        const bool _e12 = airlight_normalisable(s_18.dir);
-        local_72 = _e12;
-    } else {
-        local_72 = false;
-    }
-    bool _e14 = local_72;
-    if (_e14) {
-        const bool _e18 = airlight_is_finite(s_18.t_min);
-        local_73 = _e18;
-    } else {
-        local_73 = false;
-    }
-    bool _e20 = local_73;
-    if (_e20) {
-        const bool _e24 = airlight_vec_finite(s_18.light_position);
-        local_74 = _e24;
+        const bool _e6 = airlight_vec_finite(s_19.dir);
+        local_74 = _e6;
     } else {
         local_74 = false;
     }
-    bool _e26 = local_74;
-    if (_e26) {
-        const bool _e30 = airlight_is_finite(s_18.intensity);
-        local_75 = _e30;
+    bool _e8 = local_74;
+    if (_e8) {
+        const bool _e12 = airlight_normalisable(s_19.dir);
+        local_75 = _e12;
     } else {
         local_75 = false;
     }
-    bool _e32 = local_75;
-    if (_e32) {
-        local_76 = (s_18.intensity >= 0.0);
+    bool _e14 = local_75;
+    if (_e14) {
+        const bool _e18 = airlight_is_finite(s_19.t_min);
+        local_76 = _e18;
     } else {
         local_76 = false;
     }
-    bool _e39 = local_76;
-    if (_e39) {
-        const bool _e43 = airlight_is_finite(s_18.sigma_s);
-        local_77 = _e43;
+    bool _e20 = local_76;
+    if (_e20) {
+        const bool _e24 = airlight_vec_finite(s_19.light_position);
+        local_77 = _e24;
     } else {
         local_77 = false;
     }
-    bool _e45 = local_77;
-    if (_e45) {
-        local_78 = (s_18.sigma_s >= 0.0);
+    bool _e26 = local_77;
+    if (_e26) {
+        const bool _e30 = airlight_is_finite(s_19.intensity);
+        local_78 = _e30;
     } else {
         local_78 = false;
     }
-    bool _e52 = local_78;
-    if (_e52) {
-        const bool _e56 = airlight_is_finite(s_18.sigma_t);
-        local_79 = _e56;
+    bool _e32 = local_78;
+    if (_e32) {
+        local_79 = (s_19.intensity >= 0.0);
     } else {
         local_79 = false;
     }
-    bool _e58 = local_79;
-    if (_e58) {
-        local_80 = (s_18.sigma_t >= 0.0);
+    bool _e39 = local_79;
+    if (_e39) {
+        const bool _e43 = airlight_is_finite(s_19.sigma_s);
+        local_80 = _e43;
     } else {
         local_80 = false;
     }
-    bool _e65 = local_80;
+    bool _e45 = local_80;
+    if (_e45) {
+        local_81 = (s_19.sigma_s >= 0.0);
+    } else {
+        local_81 = false;
+    }
+    bool _e52 = local_81;
+    if (_e52) {
+        const bool _e56 = airlight_is_finite(s_19.sigma_t);
+        local_82 = _e56;
+    } else {
+        local_82 = false;
+    }
+    bool _e58 = local_82;
+    if (_e58) {
+        local_83 = (s_19.sigma_t >= 0.0);
+    } else {
+        local_83 = false;
+    }
+    bool _e65 = local_83;
     ok = _e65;
-    if (((s_18.flags & 1u) == 0u)) {
+    if (((s_19.flags & 1u) == 0u)) {
         bool _e72 = ok;
         if (_e72) {
-            const bool _e76 = airlight_is_finite(s_18.t_max);
-            local_81 = _e76;
-        } else {
-            local_81 = false;
-        }
-        bool _e78 = local_81;
-        if (_e78) {
-            local_82 = (s_18.t_min <= s_18.t_max);
-        } else {
-            local_82 = false;
-        }
-        bool _e85 = local_82;
-        ok = _e85;
-    }
-    if ((s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        bool _e89 = ok;
-        if (_e89) {
-            const bool _e93 = airlight_vec_finite(s_18.light_end);
-            local_83 = _e93;
-        } else {
-            local_83 = false;
-        }
-        bool _e95 = local_83;
-        ok = _e95;
-    } else {
-        if ((s_18.light_shape >= AIRLIGHT_SHAPE_DISC)) {
-            local_84 = (s_18.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+            const bool _e76 = airlight_is_finite(s_19.t_max);
+            local_84 = _e76;
         } else {
             local_84 = false;
         }
-        bool _e105 = local_84;
+        bool _e78 = local_84;
+        if (_e78) {
+            local_85 = (s_19.t_min <= s_19.t_max);
+        } else {
+            local_85 = false;
+        }
+        bool _e85 = local_85;
+        ok = _e85;
+    }
+    if ((s_19.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+        bool _e89 = ok;
+        if (_e89) {
+            const bool _e93 = airlight_vec_finite(s_19.light_end);
+            local_86 = _e93;
+        } else {
+            local_86 = false;
+        }
+        bool _e95 = local_86;
+        ok = _e95;
+    } else {
+        if ((s_19.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+            local_87 = (s_19.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_87 = false;
+        }
+        bool _e105 = local_87;
         if (_e105) {
             bool _e106 = ok;
             if (_e106) {
-                local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
-            } else {
-                local_85 = false;
-            }
-            bool _e113 = local_85;
-            if (_e113) {
-                local_86 = (s_18.light_param_b >= 1.0);
-            } else {
-                local_86 = false;
-            }
-            bool _e120 = local_86;
-            if (_e120) {
-                local_87 = (s_18.light_param_b <= 1024.0);
-            } else {
-                local_87 = false;
-            }
-            bool _e127 = local_87;
-            if (_e127) {
-                local_88 = (frac(s_18.light_param_b) == 0.0);
+                local_88 = (s_19.light_kind == AIRLIGHT_LIGHT_OMNI);
             } else {
                 local_88 = false;
             }
-            bool _e135 = local_88;
+            bool _e113 = local_88;
+            if (_e113) {
+                local_89 = (s_19.light_param_b >= 1.0);
+            } else {
+                local_89 = false;
+            }
+            bool _e120 = local_89;
+            if (_e120) {
+                local_90 = (s_19.light_param_b <= 1024.0);
+            } else {
+                local_90 = false;
+            }
+            bool _e127 = local_90;
+            if (_e127) {
+                local_91 = (frac(s_19.light_param_b) == 0.0);
+            } else {
+                local_91 = false;
+            }
+            bool _e135 = local_91;
             ok = _e135;
-            if ((s_18.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
+            if ((s_19.light_shape == AIRLIGHT_SHAPE_RECTANGLE)) {
                 bool _e139 = ok;
                 if (_e139) {
-                    const bool _e143 = airlight_vec_finite(s_18.light_axis);
-                    local_89 = _e143;
-                } else {
-                    local_89 = false;
-                }
-                bool _e145 = local_89;
-                if (_e145) {
-                    const bool _e149 = airlight_normalisable(s_18.light_axis);
-                    local_90 = _e149;
-                } else {
-                    local_90 = false;
-                }
-                bool _e151 = local_90;
-                if (_e151) {
-                    const bool _e155 = airlight_vec_finite(s_18.light_end);
-                    local_91 = _e155;
-                } else {
-                    local_91 = false;
-                }
-                bool _e157 = local_91;
-                if (_e157) {
-                    const bool _e161 = airlight_normalisable(s_18.light_end);
-                    local_92 = _e161;
+                    const bool _e143 = airlight_vec_finite(s_19.light_axis);
+                    local_92 = _e143;
                 } else {
                     local_92 = false;
                 }
-                bool _e163 = local_92;
-                if (_e163) {
-                    const float3 _e167 = airlight_normalize(s_18.light_axis);
-                    const float3 _e169 = airlight_normalize(s_18.light_end);
-                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
-                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                bool _e145 = local_92;
+                if (_e145) {
+                    const bool _e149 = airlight_normalisable(s_19.light_axis);
+                    local_93 = _e149;
                 } else {
                     local_93 = false;
                 }
-                bool _e175 = local_93;
+                bool _e151 = local_93;
+                if (_e151) {
+                    const bool _e155 = airlight_vec_finite(s_19.light_end);
+                    local_94 = _e155;
+                } else {
+                    local_94 = false;
+                }
+                bool _e157 = local_94;
+                if (_e157) {
+                    const bool _e161 = airlight_normalisable(s_19.light_end);
+                    local_95 = _e161;
+                } else {
+                    local_95 = false;
+                }
+                bool _e163 = local_95;
+                if (_e163) {
+                    const float3 _e167 = airlight_normalize(s_19.light_axis);
+                    const float3 _e169 = airlight_normalize(s_19.light_end);
+                    const float _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_96 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_96 = false;
+                }
+                bool _e175 = local_96;
                 ok = _e175;
             } else {
                 bool _e176 = ok;
                 if (_e176) {
-                    const bool _e180 = airlight_is_finite(s_18.light_param_a);
-                    local_94 = _e180;
+                    const bool _e180 = airlight_is_finite(s_19.light_param_a);
+                    local_97 = _e180;
                 } else {
-                    local_94 = false;
+                    local_97 = false;
                 }
-                bool _e182 = local_94;
+                bool _e182 = local_97;
                 if (_e182) {
-                    local_95 = (s_18.light_param_a >= 0.0);
+                    local_98 = (s_19.light_param_a >= 0.0);
                 } else {
-                    local_95 = false;
+                    local_98 = false;
                 }
-                bool _e189 = local_95;
+                bool _e189 = local_98;
                 ok = _e189;
-                if ((s_18.light_shape == AIRLIGHT_SHAPE_DISC)) {
+                if ((s_19.light_shape == AIRLIGHT_SHAPE_DISC)) {
                     bool _e193 = ok;
                     if (_e193) {
-                        const bool _e197 = airlight_vec_finite(s_18.light_axis);
-                        local_96 = _e197;
+                        const bool _e197 = airlight_vec_finite(s_19.light_axis);
+                        local_99 = _e197;
                     } else {
-                        local_96 = false;
+                        local_99 = false;
                     }
-                    bool _e199 = local_96;
+                    bool _e199 = local_99;
                     if (_e199) {
-                        const bool _e203 = airlight_normalisable(s_18.light_axis);
-                        local_97 = _e203;
+                        const bool _e203 = airlight_normalisable(s_19.light_axis);
+                        local_100 = _e203;
                     } else {
-                        local_97 = false;
+                        local_100 = false;
                     }
-                    bool _e205 = local_97;
+                    bool _e205 = local_100;
                     ok = _e205;
                 }
             }
         } else {
-            if ((s_18.light_shape != AIRLIGHT_SHAPE_POINT)) {
+            if ((s_19.light_shape != AIRLIGHT_SHAPE_POINT)) {
                 ok = false;
             }
         }
     }
-    if (!((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_98 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    if (!((s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
+        local_101 = (s_19.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_98 = true;
+        local_101 = true;
     }
-    bool _e220 = local_98;
+    bool _e220 = local_101;
     if (_e220) {
         bool _e221 = ok;
         if (_e221) {
-            const bool _e225 = airlight_is_finite(s_18.brdf_scale);
-            local_99 = _e225;
-        } else {
-            local_99 = false;
-        }
-        bool _e227 = local_99;
-        if (_e227) {
-            local_100 = (s_18.brdf_scale >= 0.0);
-        } else {
-            local_100 = false;
-        }
-        bool _e234 = local_100;
-        if (_e234) {
-            local_101 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_101 = false;
-        }
-        bool _e241 = local_101;
-        if (_e241) {
-            local_102 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+            const bool _e225 = airlight_is_finite(s_19.brdf_scale);
+            local_102 = _e225;
         } else {
             local_102 = false;
         }
-        bool _e248 = local_102;
-        if (_e248) {
-            const float _e254 = airlight_safe_length((s_18.light_position - s_18.origin));
-            const bool _e255 = airlight_is_finite(_e254);
-            local_103 = _e255;
+        bool _e227 = local_102;
+        if (_e227) {
+            local_103 = (s_19.brdf_scale >= 0.0);
         } else {
             local_103 = false;
         }
-        bool _e257 = local_103;
+        bool _e234 = local_103;
+        if (_e234) {
+            local_104 = (s_19.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_104 = false;
+        }
+        bool _e241 = local_104;
+        if (_e241) {
+            local_105 = (s_19.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_105 = false;
+        }
+        bool _e248 = local_105;
+        if (_e248) {
+            const float _e254 = airlight_safe_length((s_19.light_position - s_19.origin));
+            const bool _e255 = airlight_is_finite(_e254);
+            local_106 = _e255;
+        } else {
+            local_106 = false;
+        }
+        bool _e257 = local_106;
         ok = _e257;
-        if ((s_18.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+        if ((s_19.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
             bool _e261 = ok;
             if (_e261) {
-                const bool _e265 = airlight_is_finite(s_18.brdf_exponent);
-                local_104 = _e265;
-            } else {
-                local_104 = false;
-            }
-            bool _e267 = local_104;
-            if (_e267) {
-                local_105 = (s_18.brdf_exponent >= 0.0);
-            } else {
-                local_105 = false;
-            }
-            bool _e274 = local_105;
-            if (_e274) {
-                const bool _e278 = airlight_vec_finite(s_18.brdf_view);
-                local_106 = _e278;
-            } else {
-                local_106 = false;
-            }
-            bool _e280 = local_106;
-            if (_e280) {
-                const bool _e284 = airlight_normalisable(s_18.brdf_view);
-                local_107 = _e284;
+                const bool _e265 = airlight_is_finite(s_19.brdf_exponent);
+                local_107 = _e265;
             } else {
                 local_107 = false;
             }
-            bool _e286 = local_107;
+            bool _e267 = local_107;
+            if (_e267) {
+                local_108 = (s_19.brdf_exponent >= 0.0);
+            } else {
+                local_108 = false;
+            }
+            bool _e274 = local_108;
+            if (_e274) {
+                const bool _e278 = airlight_vec_finite(s_19.brdf_view);
+                local_109 = _e278;
+            } else {
+                local_109 = false;
+            }
+            bool _e280 = local_109;
+            if (_e280) {
+                const bool _e284 = airlight_normalisable(s_19.brdf_view);
+                local_110 = _e284;
+            } else {
+                local_110 = false;
+            }
+            bool _e286 = local_110;
             ok = _e286;
         }
     } else {
-        if ((s_18.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        if ((s_19.surface_kind != AIRLIGHT_SURFACE_NONE)) {
             ok = false;
         }
     }
-    if ((s_18.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
+    if ((s_19.light_kind == AIRLIGHT_LIGHT_TWO_LOBED)) {
         bool _e294 = ok;
         if (_e294) {
-            const bool _e298 = airlight_vec_finite(s_18.light_axis);
-            local_108 = _e298;
-        } else {
-            local_108 = false;
-        }
-        bool _e300 = local_108;
-        if (_e300) {
-            const bool _e304 = airlight_normalisable(s_18.light_axis);
-            local_109 = _e304;
-        } else {
-            local_109 = false;
-        }
-        bool _e306 = local_109;
-        if (_e306) {
-            local_110 = (s_18.light_param_a >= 0.0);
-        } else {
-            local_110 = false;
-        }
-        bool _e313 = local_110;
-        if (_e313) {
-            local_111 = (s_18.light_param_a <= 1024.0);
+            const bool _e298 = airlight_vec_finite(s_19.light_axis);
+            local_111 = _e298;
         } else {
             local_111 = false;
         }
-        bool _e320 = local_111;
-        if (_e320) {
-            local_112 = (frac((s_18.light_param_a * 0.5)) == 0.0);
+        bool _e300 = local_111;
+        if (_e300) {
+            const bool _e304 = airlight_normalisable(s_19.light_axis);
+            local_112 = _e304;
         } else {
             local_112 = false;
         }
-        bool _e330 = local_112;
+        bool _e306 = local_112;
+        if (_e306) {
+            local_113 = (s_19.light_param_a >= 0.0);
+        } else {
+            local_113 = false;
+        }
+        bool _e313 = local_113;
+        if (_e313) {
+            local_114 = (s_19.light_param_a <= 1024.0);
+        } else {
+            local_114 = false;
+        }
+        bool _e320 = local_114;
+        if (_e320) {
+            local_115 = (frac((s_19.light_param_a * 0.5)) == 0.0);
+        } else {
+            local_115 = false;
+        }
+        bool _e330 = local_115;
         ok = _e330;
     } else {
-        if ((s_18.light_kind == AIRLIGHT_LIGHT_SPOT)) {
+        if ((s_19.light_kind == AIRLIGHT_LIGHT_SPOT)) {
             bool _e334 = ok;
             if (_e334) {
-                const bool _e338 = airlight_vec_finite(s_18.light_axis);
-                local_113 = _e338;
-            } else {
-                local_113 = false;
-            }
-            bool _e340 = local_113;
-            if (_e340) {
-                const bool _e344 = airlight_normalisable(s_18.light_axis);
-                local_114 = _e344;
-            } else {
-                local_114 = false;
-            }
-            bool _e346 = local_114;
-            if (_e346) {
-                local_115 = (s_18.light_param_b < s_18.light_param_a);
-            } else {
-                local_115 = false;
-            }
-            bool _e353 = local_115;
-            if (_e353) {
-                local_116 = (s_18.light_param_b >= -1.0);
+                const bool _e338 = airlight_vec_finite(s_19.light_axis);
+                local_116 = _e338;
             } else {
                 local_116 = false;
             }
-            bool _e360 = local_116;
-            if (_e360) {
-                local_117 = (s_18.light_param_a <= 1.0);
+            bool _e340 = local_116;
+            if (_e340) {
+                const bool _e344 = airlight_normalisable(s_19.light_axis);
+                local_117 = _e344;
             } else {
                 local_117 = false;
             }
-            bool _e367 = local_117;
+            bool _e346 = local_117;
+            if (_e346) {
+                local_118 = (s_19.light_param_b < s_19.light_param_a);
+            } else {
+                local_118 = false;
+            }
+            bool _e353 = local_118;
+            if (_e353) {
+                local_119 = (s_19.light_param_b >= -1.0);
+            } else {
+                local_119 = false;
+            }
+            bool _e360 = local_119;
+            if (_e360) {
+                local_120 = (s_19.light_param_a <= 1.0);
+            } else {
+                local_120 = false;
+            }
+            bool _e367 = local_120;
             ok = _e367;
         } else {
-            if ((s_18.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+            if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
                 ok = false;
             }
         }
     }
-    bool g_ok = (abs(s_18.phase_param_a) < 1.0);
-    switch(s_18.phase_kind) {
+    bool g_ok = (abs(s_19.phase_param_a) < 1.0);
+    switch(s_19.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4732,40 +4760,40 @@ bool airlight_valid(AirlightScene s_18)
         case 4u: {
             bool _e377 = ok;
             if (_e377) {
-                local_118 = g_ok;
+                local_121 = g_ok;
             } else {
-                local_118 = false;
+                local_121 = false;
             }
-            bool _e381 = local_118;
+            bool _e381 = local_121;
             ok = _e381;
             break;
         }
         case 5u: {
             bool _e382 = ok;
             if (_e382) {
-                local_119 = g_ok;
-            } else {
-                local_119 = false;
-            }
-            bool _e386 = local_119;
-            if (_e386) {
-                local_120 = (abs(s_18.phase_param_b) < 1.0);
-            } else {
-                local_120 = false;
-            }
-            bool _e394 = local_120;
-            if (_e394) {
-                local_121 = (s_18.phase_param_c >= 0.0);
-            } else {
-                local_121 = false;
-            }
-            bool _e401 = local_121;
-            if (_e401) {
-                local_122 = (s_18.phase_param_c <= 1.0);
+                local_122 = g_ok;
             } else {
                 local_122 = false;
             }
-            bool _e408 = local_122;
+            bool _e386 = local_122;
+            if (_e386) {
+                local_123 = (abs(s_19.phase_param_b) < 1.0);
+            } else {
+                local_123 = false;
+            }
+            bool _e394 = local_123;
+            if (_e394) {
+                local_124 = (s_19.phase_param_c >= 0.0);
+            } else {
+                local_124 = false;
+            }
+            bool _e401 = local_124;
+            if (_e401) {
+                local_125 = (s_19.phase_param_c <= 1.0);
+            } else {
+                local_125 = false;
+            }
+            bool _e408 = local_125;
             ok = _e408;
             break;
         }
@@ -4790,17 +4818,17 @@ AirlightCanonical ConstructAirlightCanonical(float arg0, float arg1, float arg2,
     return ret;
 }
 
-AirlightCanonical airlight_canonical(AirlightScene s_19)
+AirlightCanonical airlight_canonical(AirlightScene s_20)
 {
     float3 a_12 = float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
 
-    const float3 _e2 = airlight_normalize(s_19.dir);
-    if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e12 = airlight_normalize(s_19.light_axis);
+    const float3 _e2 = airlight_normalize(s_20.dir);
+    if ((s_20.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e12 = airlight_normalize(s_20.light_axis);
         a_12 = _e12;
     }
-    float3 to_light = (s_19.light_position - s_19.origin);
+    float3 to_light = (s_20.light_position - s_20.origin);
     float x_h_2 = dot(to_light, _e2);
     float3 perp = ((x_h_2 * _e2) - to_light);
     const float _e19 = airlight_safe_length(perp);
@@ -4808,10 +4836,10 @@ AirlightCanonical airlight_canonical(AirlightScene s_19)
         float3 _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    bool infinite_4 = ((s_19.flags & 1u) != 0u);
+    bool infinite_4 = ((s_20.flags & 1u) != 0u);
     float3 _e32 = a_12;
     float _e34 = d_c_1;
-    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, (infinite_4 ? 0.0 : s_19.t_max), infinite_4);
+    const AirlightCanonical airlightcanonical = ConstructAirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_20.t_min, (infinite_4 ? 0.0 : s_20.t_max), infinite_4);
     return airlightcanonical;
 }
 
@@ -4858,47 +4886,47 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 
 bool airlight_in_exact_range(float3 v_4)
 {
-    bool local_123 = (bool)0;
-    bool local_124 = (bool)0;
+    bool local_126 = (bool)0;
+    bool local_127 = (bool)0;
 
     float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if ((m_9 >= 9.313226e-10)) {
-            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_124 = false;
+            local_127 = false;
         }
-        bool _e21 = local_124;
-        local_123 = _e21;
+        bool _e21 = local_127;
+        local_126 = _e21;
     } else {
-        local_123 = true;
+        local_126 = true;
     }
-    bool _e23 = local_123;
+    bool _e23 = local_126;
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
+AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
 {
-    bool local_125 = (bool)0;
+    bool local_128 = (bool)0;
     AirlightCanonical out_2 = (AirlightCanonical)0;
-    bool local_126 = (bool)0;
+    bool local_129 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
-    uint key_4 = uint((s_20.flags > 1u));
-    const float2 _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
-    const float2 _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
-    const float2 _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
+    uint key_4 = uint((s_21.flags > 1u));
+    const float2 _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_4);
+    const float2 _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_4);
+    const float2 _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_4);
     float3 hi_6 = float3(_e11.x, _e17.x, _e23.x);
     float3 lo_7 = float3(_e11.y, _e17.y, _e23.y);
-    float3 dir_2 = s_20.dir;
+    float3 dir_2 = s_21.dir;
     const bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         const bool _e38 = airlight_in_exact_range(dir_2);
-        local_125 = !(_e38);
+        local_128 = !(_e38);
     } else {
-        local_125 = true;
+        local_128 = true;
     }
-    bool _e41 = local_125;
+    bool _e41 = local_128;
     if (_e41) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
@@ -4925,17 +4953,17 @@ AirlightCanonical airlight_refined(AirlightScene s_20, AirlightCanonical plain)
     float h_7 = (_e85 / _e93);
     const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_126 = (h_7 > 0.0);
+        local_129 = (h_7 > 0.0);
     } else {
-        local_126 = false;
+        local_129 = false;
     }
-    bool _e101 = local_126;
+    bool _e101 = local_129;
     if (!(_e101)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
-    if ((s_20.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e112 = airlight_normalize(s_20.light_axis);
+    if ((s_21.light_kind != AIRLIGHT_LIGHT_OMNI)) {
+        const float3 _e112 = airlight_normalize(s_21.light_axis);
         a_16 = _e112;
     }
     const float3 _e113 = airlight_normalize(dir_2);
@@ -5295,7 +5323,7 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3])
     AirlightEdges e_1 = (AirlightEdges)0;
     uint n_1 = 0u;
     uint i_18 = 0u;
-    bool local_127 = (bool)0;
+    bool local_130 = (bool)0;
 
     cuts_1 = unsorted;
     float _e5 = cuts_1[1];
@@ -5346,11 +5374,11 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3])
             if ((_e50 > _e54)) {
                 uint _e58 = i_18;
                 float _e60 = cuts_1[min(uint(_e58), 2u)];
-                local_127 = (_e60 < hi_3);
+                local_130 = (_e60 < hi_3);
             } else {
-                local_127 = false;
+                local_130 = false;
             }
-            bool _e63 = local_127;
+            bool _e63 = local_130;
             if (_e63) {
                 uint _e64 = n_1;
                 n_1 = (_e64 + 1u);
@@ -5383,9 +5411,9 @@ AirlightSplit ConstructAirlightSplit(bool arg0, float arg1, float arg2, float ar
 AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance)
 {
     uint tries = 0u;
-    bool local_128 = (bool)0;
-    bool local_129 = (bool)0;
-    bool local_130 = (bool)0;
+    bool local_131 = (bool)0;
+    bool local_132 = (bool)0;
+    bool local_133 = (bool)0;
 
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     bool loop_init_23 = true;
@@ -5406,18 +5434,18 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             AirlightPanelList _e8 = list_1;
             const AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
-                local_128 = (count_2 == max_panels);
+                local_131 = (count_2 == max_panels);
             } else {
-                local_128 = true;
+                local_131 = true;
             }
-            bool _e21 = local_128;
+            bool _e21 = local_131;
             if (!(_e21)) {
                 const bool _e26 = airlight_is_finite(_e9.total);
-                local_129 = !(_e26);
+                local_132 = !(_e26);
             } else {
-                local_129 = true;
+                local_132 = true;
             }
-            bool _e29 = local_129;
+            bool _e29 = local_132;
             if (_e29) {
                 break;
             }
@@ -5425,11 +5453,11 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             const float4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_2 = (0.5 * (_e32.x + _e32.y));
             if ((mid_2 > _e32.x)) {
-                local_130 = (mid_2 < _e32.y);
+                local_133 = (mid_2 < _e32.y);
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            bool _e45 = local_130;
+            bool _e45 = local_133;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, float4(_e32.xyz, 0.0));
                 continue;
@@ -5548,13 +5576,13 @@ float airlight_asinh(float x_15)
     return ((x_15 < 0.0) ? -(_e19) : _e18);
 }
 
-float airlight_to_w(AirlightOuter g_21, float s_21)
+float airlight_to_w(AirlightOuter g_21, float s_22)
 {
     if ((g_21.scale > 0.0)) {
-        const float _e9 = airlight_asinh(((s_21 - g_21.s_star) / g_21.scale));
+        const float _e9 = airlight_asinh(((s_22 - g_21.s_star) / g_21.scale));
         return _e9;
     }
-    return s_21;
+    return s_22;
 }
 
 float2 airlight_cos_sin_half_turn(float x_16)
@@ -5573,9 +5601,9 @@ float airlight_acos(float x_17)
     return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
-float airlight_angle(float c_6, float s_22)
+float airlight_angle(float c_6, float s_23)
 {
-    const float _e2 = airlight_atan2_upper(s_22, c_6);
+    const float _e2 = airlight_atan2_upper(s_23, c_6);
     return _e2;
 }
 
@@ -5616,10 +5644,10 @@ AirlightOuter ConstructAirlightOuter(float3 arg0, float3 arg1, float arg2, float
     return ret;
 }
 
-AirlightOuter airlight_outer_point(AirlightScene s_23, uint max_panels_2)
+AirlightOuter airlight_outer_point(AirlightScene s_24, uint max_panels_2)
 {
     float zeros[13] = airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    const AirlightOuter airlightouter = ConstructAirlightOuter(s_23.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_2, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
+    const AirlightOuter airlightouter = ConstructAirlightOuter(s_24.light_position, (0.0).xxx, 0.0, 0.0, zeros, 1u, 0u, max_panels_2, (0.0).xxx, (0.0).xxx, 0.0, 0.0, zeros, 0.0, 0.0, 0.0, float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u);
     return airlightouter;
 }
 
@@ -5635,36 +5663,36 @@ airlight_ret_Constructarray6_float_ airlight_Constructarray6_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_surface(AirlightScene s_24)
+AirlightOuter airlight_surface(AirlightScene s_25)
 {
     AirlightOuter g_22 = (AirlightOuter)0;
-    bool local_131 = (bool)0;
+    bool local_134 = (bool)0;
     float3 u_1 = (float3)0;
     float cuts_2[11] = airlight_Constructarray11_float_(3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_19 = 1u;
     uint j_4 = (uint)0;
-    bool local_132 = (bool)0;
+    bool local_135 = (bool)0;
     uint k_5 = 0u;
     uint i_20 = 0u;
-    bool local_133 = (bool)0;
+    bool local_136 = (bool)0;
     uint i_21 = 0u;
     uint i_22 = 1u;
-    bool local_134 = (bool)0;
-    bool local_135 = (bool)0;
-    bool local_136 = (bool)0;
     bool local_137 = (bool)0;
     bool local_138 = (bool)0;
+    bool local_139 = (bool)0;
+    bool local_140 = (bool)0;
+    bool local_141 = (bool)0;
 
-    const AirlightOuter _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
+    const AirlightOuter _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
-    float3 to_light_1 = (s_24.light_position - s_24.origin);
+    float3 to_light_1 = (s_25.light_position - s_25.origin);
     const float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_24.intensity == 0.0))) {
-        local_131 = (s_24.sigma_s == 0.0);
+    if (!((s_25.intensity == 0.0))) {
+        local_134 = (s_25.sigma_s == 0.0);
     } else {
-        local_131 = true;
+        local_134 = true;
     }
-    bool _e18 = local_131;
+    bool _e18 = local_134;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5677,14 +5705,14 @@ AirlightOuter airlight_surface(AirlightScene s_24)
         const AirlightOuter airlightouter_2 = _e27;
         return airlightouter_2;
     }
-    if ((s_24.brdf_scale == 0.0)) {
+    if ((s_25.brdf_scale == 0.0)) {
         g_22.outcome = 1u;
         AirlightOuter _e33 = g_22;
         const AirlightOuter airlightouter_3 = _e33;
         return airlightouter_3;
     }
     float3 l_3 = (to_light_1 / (_e7).xxx);
-    const float3 _e37 = airlight_normalize(s_24.dir);
+    const float3 _e37 = airlight_normalize(s_25.dir);
     float cos_a_1 = dot(_e37, l_3);
     float3 across = (_e37 - (cos_a_1 * l_3));
     const float _e41 = airlight_safe_length(across);
@@ -5698,7 +5726,7 @@ AirlightOuter airlight_surface(AirlightScene s_24)
     float3 _e67 = u_1;
     g_22.u = _e67;
     g_22.d = _e7;
-    const float3 _e70 = airlight_normalize(s_24.light_axis);
+    const float3 _e70 = airlight_normalize(s_25.light_axis);
     g_22.axis_l = dot(_e70, l_3);
     float3 _e74 = u_1;
     g_22.axis_u = dot(_e70, _e74);
@@ -5708,9 +5736,9 @@ AirlightOuter airlight_surface(AirlightScene s_24)
     float first_1 = abs((1.5707964 - _e92));
     cuts_2[0] = first_1;
     cuts_2[1] = (AIRLIGHT_PI - first_1);
-    if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+    if ((s_25.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
-        const float3 _e105 = airlight_normalize(s_24.brdf_view);
+        const float3 _e105 = airlight_normalize(s_25.brdf_view);
         const float3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         float3 _e112 = u_1;
         float x_35 = dot(_e111, _e112);
@@ -5736,8 +5764,8 @@ AirlightOuter airlight_surface(AirlightScene s_24)
         cuts_2[3] = (AIRLIGHT_PI - first_r);
         float _e163 = g_22.alpha_r;
         cuts_2[4] = _e163;
-        if ((s_24.brdf_exponent > 1.0)) {
-            float width_3 = (1.0 / sqrt(s_24.brdf_exponent));
+        if ((s_25.brdf_exponent > 1.0)) {
+            float width_3 = (1.0 / sqrt(s_25.brdf_exponent));
             float _e173 = g_22.alpha_r;
             cuts_2[5] = (_e173 - (1.5 * width_3));
             float _e179 = g_22.alpha_r;
@@ -5790,11 +5818,11 @@ AirlightOuter airlight_surface(AirlightScene s_24)
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2[min(uint((_e237 - 1u)), 10u)];
-                    local_132 = (_e241 > c_14);
+                    local_135 = (_e241 > c_14);
                 } else {
-                    local_132 = false;
+                    local_135 = false;
                 }
-                bool _e244 = local_132;
+                bool _e244 = local_135;
                 if (_e244) {
                 } else {
                     break;
@@ -5837,11 +5865,11 @@ AirlightOuter airlight_surface(AirlightScene s_24)
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[min(uint(_e289), 10u)];
-                local_133 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_7);
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            bool _e294 = local_133;
+            bool _e294 = local_136;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5878,7 +5906,7 @@ AirlightOuter airlight_surface(AirlightScene s_24)
             g_22.edges[min(uint(_e323), 12u)] = float(_e325);
         }
     }
-    if ((s_24.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
+    if ((s_25.surface_kind == AIRLIGHT_SURFACE_PHONG)) {
         uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
         bool loop_init_27 = true;
         while(true) {
@@ -5899,35 +5927,35 @@ AirlightOuter airlight_surface(AirlightScene s_24)
                 uint _e339 = i_22;
                 float e_12 = g_22.gamma[min(uint(_e339), 12u)];
                 if (!((e_12 == kinks[0]))) {
-                    local_134 = (e_12 == kinks[1]);
-                } else {
-                    local_134 = true;
-                }
-                bool _e350 = local_134;
-                if (!(_e350)) {
-                    local_135 = (e_12 == kinks[2]);
-                } else {
-                    local_135 = true;
-                }
-                bool _e357 = local_135;
-                if (!(_e357)) {
-                    local_136 = (e_12 == kinks[3]);
-                } else {
-                    local_136 = true;
-                }
-                bool _e364 = local_136;
-                if (!(_e364)) {
-                    local_137 = (e_12 == kinks[4]);
+                    local_137 = (e_12 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
-                bool _e371 = local_137;
-                if (!(_e371)) {
-                    local_138 = (e_12 == kinks[5]);
+                bool _e350 = local_137;
+                if (!(_e350)) {
+                    local_138 = (e_12 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
-                bool kink = local_138;
+                bool _e357 = local_138;
+                if (!(_e357)) {
+                    local_139 = (e_12 == kinks[3]);
+                } else {
+                    local_139 = true;
+                }
+                bool _e364 = local_139;
+                if (!(_e364)) {
+                    local_140 = (e_12 == kinks[4]);
+                } else {
+                    local_140 = true;
+                }
+                bool _e371 = local_140;
+                if (!(_e371)) {
+                    local_141 = (e_12 == kinks[5]);
+                } else {
+                    local_141 = true;
+                }
+                bool kink = local_141;
                 uint _e380 = g_22.smooth_edges;
                 uint _e382 = i_22;
                 g_22.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
@@ -5941,7 +5969,7 @@ AirlightOuter airlight_surface(AirlightScene s_24)
 
 float airlight_lobe_at(AirlightLobe q_1, float x_18)
 {
-    bool local_139 = (bool)0;
+    bool local_142 = (bool)0;
 
     const float2 _e4 = airlight_cos_sin((0.5 * x_18));
     float s2_ = (_e4.y * _e4.y);
@@ -5952,11 +5980,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_18)
     float clip_ = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_139 = (clip_ > 0.0);
+        local_142 = (clip_ > 0.0);
     } else {
-        local_139 = false;
+        local_142 = false;
     }
-    bool _e43 = local_139;
+    bool _e43 = local_142;
     if (_e43) {
         const float _e47 = airlight_log1p(-(fall));
         return (clip_ * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5977,7 +6005,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
 float airlight_arc_end(float x_19, float cut)
 {
     float end_1 = (float)0;
-    bool local_140 = (bool)0;
+    bool local_143 = (bool)0;
 
     end_1 = x_19;
     float _e3 = end_1;
@@ -5994,11 +6022,11 @@ float airlight_arc_end(float x_19, float cut)
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_140 = (_e21 < cut);
+        local_143 = (_e21 < cut);
     } else {
-        local_140 = false;
+        local_143 = false;
     }
-    bool _e24 = local_140;
+    bool _e24 = local_143;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -6016,18 +6044,18 @@ airlight_ret_airlight_lobe_rule airlight_lobe_rule()
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smoothstep_1)
 {
-    bool local_141 = (bool)0;
+    bool local_144 = (bool)0;
     float sum_5 = 0.0;
     uint k_6 = 0u;
 
     float w_8 = (hi_5 - lo_6);
     if (!(!((w_8 > 0.0)))) {
         const float _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5 * w_8)));
-        local_141 = !((_e14 > 0.0));
+        local_144 = !((_e14 > 0.0));
     } else {
-        local_141 = true;
+        local_144 = true;
     }
-    bool _e19 = local_141;
+    bool _e19 = local_144;
     if (_e19) {
         return 0.0;
     }
@@ -6147,60 +6175,60 @@ airlight_ret_Constructarray3_float_ airlight_Constructarray3_float_(float arg0, 
     return ret;
 }
 
-AirlightOuter airlight_outer(AirlightScene s_25)
+AirlightOuter airlight_outer(AirlightScene s_26)
 {
     AirlightOuter g_24 = (AirlightOuter)0;
-    bool local_142 = (bool)0;
-    bool local_143 = (bool)0;
-    float s_star = 0.0;
-    float t_star = (float)0;
-    bool local_144 = (bool)0;
     bool local_145 = (bool)0;
     bool local_146 = (bool)0;
+    float s_star = 0.0;
+    float t_star = (float)0;
     bool local_147 = (bool)0;
     bool local_148 = (bool)0;
     bool local_149 = (bool)0;
-    float scale = 0.0;
     bool local_150 = (bool)0;
     bool local_151 = (bool)0;
     bool local_152 = (bool)0;
+    float scale = 0.0;
     bool local_153 = (bool)0;
     bool local_154 = (bool)0;
-    float cuts_3[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
-    float at[3] = {0.0, 0.0, 0.0};
     bool local_155 = (bool)0;
-    uint i_24 = 0u;
     bool local_156 = (bool)0;
     bool local_157 = (bool)0;
+    float cuts_3[3] = airlight_Constructarray3_float_(3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float at[3] = {0.0, 0.0, 0.0};
     bool local_158 = (bool)0;
+    uint i_24 = 0u;
     bool local_159 = (bool)0;
+    bool local_160 = (bool)0;
+    bool local_161 = (bool)0;
+    bool local_162 = (bool)0;
 
-    if ((s_25.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        const AirlightOuter _e4 = airlight_surface(s_25);
+    if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+        const AirlightOuter _e4 = airlight_surface(s_26);
         const AirlightOuter airlightouter_5 = _e4;
         return airlightouter_5;
     }
-    const AirlightOuter _e6 = airlight_outer_point(s_25, AIRLIGHT_SEGMENT_PANELS);
+    const AirlightOuter _e6 = airlight_outer_point(s_26, AIRLIGHT_SEGMENT_PANELS);
     g_24 = _e6;
-    if ((s_25.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_26.light_shape != AIRLIGHT_SHAPE_SEGMENT)) {
         AirlightOuter _e11 = g_24;
         const AirlightOuter airlightouter_6 = _e11;
         return airlightouter_6;
     }
-    float3 ab_1 = (s_25.light_end - s_25.light_position);
+    float3 ab_1 = (s_26.light_end - s_26.light_position);
     const float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_142 = (s_25.intensity == 0.0);
+        local_145 = (s_26.intensity == 0.0);
     } else {
-        local_142 = true;
+        local_145 = true;
     }
-    bool _e26 = local_142;
+    bool _e26 = local_145;
     if (!(_e26)) {
-        local_143 = (s_25.sigma_s == 0.0);
+        local_146 = (s_26.sigma_s == 0.0);
     } else {
-        local_143 = true;
+        local_146 = true;
     }
-    bool _e34 = local_143;
+    bool _e34 = local_146;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -6208,13 +6236,13 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         return airlightouter_7;
     }
     float3 e_13 = (ab_1 / (_e15).xxx);
-    const float3 _e41 = airlight_normalize(s_25.dir);
-    float3 w0_ = (s_25.light_position - s_25.origin);
+    const float3 _e41 = airlight_normalize(s_26.dir);
+    float3 w0_ = (s_26.light_position - s_26.origin);
     float cos_a_2 = dot(e_13, _e41);
     float along_e = dot(e_13, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
-    bool infinite_5 = ((s_25.flags & 1u) != 0u);
+    bool infinite_5 = ((s_26.flags & 1u) != 0u);
     t_star = along_d;
     if ((sin2_ > AIRLIGHT_FLT_EPS)) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -6225,45 +6253,45 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_144 = (sin_a_1 > 0.0);
-    } else {
-        local_144 = false;
-    }
-    bool _e84 = local_144;
-    if (_e84) {
-        float _e87 = s_star;
-        local_145 = (_e87 >= 0.0);
-    } else {
-        local_145 = false;
-    }
-    bool _e91 = local_145;
-    if (_e91) {
-        float _e94 = s_star;
-        local_146 = (_e94 <= _e15);
-    } else {
-        local_146 = false;
-    }
-    bool _e97 = local_146;
-    if (_e97) {
-        float _e101 = t_star;
-        local_147 = (s_25.t_min <= _e101);
+        local_147 = (sin_a_1 > 0.0);
     } else {
         local_147 = false;
     }
-    bool _e104 = local_147;
-    if (_e104) {
-        if (!(infinite_5)) {
-            float _e110 = t_star;
-            local_149 = (_e110 <= s_25.t_max);
-        } else {
-            local_149 = true;
-        }
-        bool _e114 = local_149;
-        local_148 = _e114;
+    bool _e84 = local_147;
+    if (_e84) {
+        float _e87 = s_star;
+        local_148 = (_e87 >= 0.0);
     } else {
         local_148 = false;
     }
-    bool _e116 = local_148;
+    bool _e91 = local_148;
+    if (_e91) {
+        float _e94 = s_star;
+        local_149 = (_e94 <= _e15);
+    } else {
+        local_149 = false;
+    }
+    bool _e97 = local_149;
+    if (_e97) {
+        float _e101 = t_star;
+        local_150 = (s_26.t_min <= _e101);
+    } else {
+        local_150 = false;
+    }
+    bool _e104 = local_150;
+    if (_e104) {
+        if (!(infinite_5)) {
+            float _e110 = t_star;
+            local_152 = (_e110 <= s_26.t_max);
+        } else {
+            local_152 = true;
+        }
+        bool _e114 = local_152;
+        local_151 = _e114;
+    } else {
+        local_151 = false;
+    }
+    bool _e116 = local_151;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
@@ -6271,49 +6299,49 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         return airlightouter_8;
     }
     if ((sin_a_1 > 0.0)) {
-        local_150 = (_e73 > 0.0);
+        local_153 = (_e73 > 0.0);
     } else {
-        local_150 = false;
+        local_153 = false;
     }
-    bool _e129 = local_150;
+    bool _e129 = local_153;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_151 = (_e136 < (_e15 + _e15));
+        local_154 = (_e136 < (_e15 + _e15));
     } else {
-        local_151 = false;
+        local_154 = false;
     }
-    bool _e140 = local_151;
+    bool _e140 = local_154;
     if (_e140) {
         float _e143 = scale;
-        local_152 = (_e143 < _e15);
+        local_155 = (_e143 < _e15);
     } else {
-        local_152 = false;
+        local_155 = false;
     }
-    bool near_1 = local_152;
+    bool near_1 = local_155;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         const float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         const bool _e154 = airlight_is_finite(_e153);
-        local_153 = _e154;
+        local_156 = _e154;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    bool _e156 = local_153;
+    bool _e156 = local_156;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         const float _e162 = airlight_asinh((_e159 / _e160));
         const bool _e163 = airlight_is_finite(_e162);
-        local_154 = _e163;
+        local_157 = _e163;
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    bool _e165 = local_154;
+    bool _e165 = local_157;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -6323,18 +6351,18 @@ AirlightOuter airlight_outer(AirlightScene s_25)
     float _e172 = scale;
     g_24.scale = _e172;
     float _e178 = s_star;
-    at = airlight_Constructarray3_float_(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
+    at = airlight_Constructarray3_float_(_e178, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
     float _e187 = scale;
     if ((_e187 > 0.0)) {
         AirlightOuter _e192 = g_24;
         const float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_24;
         const float _e197 = airlight_to_w(_e196, _e15);
-        local_155 = (min(-(_e194), _e197) < 0.5);
+        local_158 = (min(-(_e194), _e197) < 0.5);
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    bool sliver = local_155;
+    bool sliver = local_158;
     uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     bool loop_init_30 = true;
     while(true) {
@@ -6353,31 +6381,31 @@ AirlightOuter airlight_outer(AirlightScene s_25)
         {
             uint _e208 = i_24;
             if ((_e208 == 0u)) {
-                local_156 = sliver;
+                local_159 = sliver;
             } else {
-                local_156 = false;
+                local_159 = false;
             }
-            bool _e214 = local_156;
+            bool _e214 = local_159;
             if (_e214) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e219 = i_24;
-                local_157 = (_e219 > 0u);
+                local_160 = (_e219 > 0u);
             } else {
-                local_157 = false;
+                local_160 = false;
             }
-            bool _e223 = local_157;
+            bool _e223 = local_160;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_24;
             if ((_e224 == 2u)) {
-                local_158 = infinite_5;
+                local_161 = infinite_5;
             } else {
-                local_158 = false;
+                local_161 = false;
             }
-            bool _e230 = local_158;
+            bool _e230 = local_161;
             if (_e230) {
                 continue;
             }
@@ -6386,11 +6414,11 @@ AirlightOuter airlight_outer(AirlightScene s_25)
             if ((_e233 > 0.0)) {
                 uint _e238 = i_24;
                 float _e240 = at[min(uint(_e238), 2u)];
-                local_159 = (_e240 < _e15);
+                local_162 = (_e240 < _e15);
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            bool _e243 = local_159;
+            bool _e243 = local_162;
             if (_e243) {
                 uint _e244 = i_24;
                 AirlightOuter _e246 = g_24;
@@ -6429,26 +6457,26 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1, AirlightCanon
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x_20)
+AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_20)
 {
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
     float jacobian = (float)0;
-    bool local_160 = (bool)0;
-    bool local_161 = (bool)0;
-    bool local_162 = (bool)0;
     bool local_163 = (bool)0;
     bool local_164 = (bool)0;
     bool local_165 = (bool)0;
+    bool local_166 = (bool)0;
+    bool local_167 = (bool)0;
+    bool local_168 = (bool)0;
     float weight = 0.0;
     float at_1 = (float)0;
     float ds = 1.0;
 
-    p = s_26;
+    p = s_27;
     const AirlightCanonical _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
+    if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_36 = min(airlight_naga_f2u32(max(floor(x_20), 0.0)), (g_25.panels - 1u));
         float t_8 = (x_20 - float(i_36));
         float a_41 = g_25.gamma[min(uint(i_36), 12u)];
@@ -6461,51 +6489,51 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
         jacobian = (((w_9 * 6.0) * t_8) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_160 = !(smooth_a);
-        } else {
-            local_160 = false;
-        }
-        bool _e66 = local_160;
-        gamma_1 = (_e66 ? (a_41 + ((w_9 * t_8) * t_8)) : _e58);
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_161 = !(smooth_a);
-        } else {
-            local_161 = false;
-        }
-        bool _e75 = local_161;
-        jacobian = (_e75 ? (w_9 * (t_8 + t_8)) : _e68);
-        float _e77 = gamma_1;
-        if (smooth_a) {
-            local_162 = !(smooth_b);
-        } else {
-            local_162 = false;
-        }
-        bool _e85 = local_162;
-        gamma_1 = (_e85 ? (b_19 - ((w_9 * u_8) * u_8)) : _e77);
-        float _e87 = jacobian;
-        if (smooth_a) {
-            local_163 = !(smooth_b);
+            local_163 = !(smooth_a);
         } else {
             local_163 = false;
         }
-        bool _e94 = local_163;
-        jacobian = (_e94 ? (w_9 * (u_8 + u_8)) : _e87);
-        float _e96 = gamma_1;
-        if (smooth_a) {
-            local_164 = smooth_b;
+        bool _e66 = local_163;
+        gamma_1 = (_e66 ? (a_41 + ((w_9 * t_8) * t_8)) : _e58);
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_164 = !(smooth_a);
         } else {
             local_164 = false;
         }
-        bool _e102 = local_164;
-        gamma_1 = (_e102 ? (a_41 + (w_9 * t_8)) : _e96);
-        float _e104 = jacobian;
+        bool _e75 = local_164;
+        jacobian = (_e75 ? (w_9 * (t_8 + t_8)) : _e68);
+        float _e77 = gamma_1;
         if (smooth_a) {
-            local_165 = smooth_b;
+            local_165 = !(smooth_b);
         } else {
             local_165 = false;
         }
-        bool _e108 = local_165;
+        bool _e85 = local_165;
+        gamma_1 = (_e85 ? (b_19 - ((w_9 * u_8) * u_8)) : _e77);
+        float _e87 = jacobian;
+        if (smooth_a) {
+            local_166 = !(smooth_b);
+        } else {
+            local_166 = false;
+        }
+        bool _e94 = local_166;
+        jacobian = (_e94 ? (w_9 * (u_8 + u_8)) : _e87);
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_167 = smooth_b;
+        } else {
+            local_167 = false;
+        }
+        bool _e102 = local_167;
+        gamma_1 = (_e102 ? (a_41 + (w_9 * t_8)) : _e96);
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_168 = smooth_b;
+        } else {
+            local_168 = false;
+        }
+        bool _e108 = local_168;
         jacobian = (_e108 ? w_9 : _e104);
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6521,15 +6549,15 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
             const AirlightNode airlightnode_1 = ConstructAirlightNode(_e128, 0.0, _e4, false);
             return airlightnode_1;
         }
-        if ((s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        if ((s_27.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
             const float2 _e144 = airlight_cos_sin_half_turn(_e124);
             float arc = (2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
-            weight = ((s_26.brdf_scale * 0.31830987) * arc);
+            weight = ((s_27.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_5 = s_26.brdf_exponent;
+            float n_5 = s_27.brdf_exponent;
             float _e161 = gamma_1;
             const float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
-            weight = (((s_26.brdf_scale * (n_5 + 2.0)) * 0.15915494) * _e162);
+            weight = (((s_27.brdf_scale * (n_5 + 2.0)) * 0.15915494) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0.0;
@@ -6545,7 +6573,7 @@ AirlightNode airlight_outer_node(AirlightScene s_26, AirlightOuter g_25, float x
         const AirlightNode airlightnode_2 = ConstructAirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
         return airlightnode_2;
     }
-    if ((s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
+    if ((s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
         at_1 = x_20;
         if ((g_25.scale > 0.0)) {
             at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
@@ -6600,21 +6628,21 @@ float2 airlight_triangle_rule(uint i_26)
     return rule_1[min(uint(i_26), 11u)];
 }
 
-float airlight_area_phase(AirlightScene s_27, float mu_2)
+float airlight_area_phase(AirlightScene s_28, float mu_2)
 {
-    const float _e6 = airlight_phase_mu(s_27.phase_kind, s_27.phase_param_a, s_27.phase_param_b, s_27.phase_param_c, mu_2);
+    const float _e6 = airlight_phase_mu(s_28.phase_kind, s_28.phase_param_a, s_28.phase_param_b, s_28.phase_param_c, mu_2);
     return _e6;
 }
 
-float airlight_emitted(AirlightScene s_28, float c_7)
+float airlight_emitted(AirlightScene s_29, float c_7)
 {
     uint e_2 = (uint)0;
     float base_1 = (float)0;
     float acc_1 = 1.0;
 
-    uint p_2 = airlight_naga_f2u32(s_28.light_param_b);
+    uint p_2 = airlight_naga_f2u32(s_29.light_param_b);
     if ((p_2 <= 1u)) {
-        return s_28.intensity;
+        return s_29.intensity;
     }
     e_2 = (p_2 - 1u);
     base_1 = c_7;
@@ -6729,47 +6757,47 @@ float airlight_emitted(AirlightScene s_28, float c_7)
     float _e151 = base_1;
     base_1 = (_e150 * _e151);
     float _e154 = acc_1;
-    return (s_28.intensity * _e154);
+    return (s_29.intensity * _e154);
 }
 
-float airlight_emission_scale(AirlightScene s_29)
+float airlight_emission_scale(AirlightScene s_30)
 {
-    uint p_3 = airlight_naga_f2u32(s_29.light_param_b);
+    uint p_3 = airlight_naga_f2u32(s_30.light_param_b);
     if ((p_3 <= 1u)) {
         return 0.0;
     }
     return (2.0 / sqrt(float((p_3 - 1u))));
 }
 
-bool airlight_far_from_edge(AirlightScene s_30, float depth, float z_9)
+bool airlight_far_from_edge(AirlightScene s_31, float depth, float z_9)
 {
-    const float _e3 = airlight_emission_scale(s_30);
+    const float _e3 = airlight_emission_scale(s_31);
     return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * ((_e3 > 0.0) ? min(_e3, 1.0) : 1.0)));
 }
 
 float2 airlight_lobe(float sign_, float gap_3)
 {
-    bool local_166 = (bool)0;
+    bool local_169 = (bool)0;
 
     if (!(!((gap_3 > 0.0)))) {
-        local_166 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_169 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_166 = true;
+        local_169 = true;
     }
-    bool _e12 = local_166;
+    bool _e12 = local_169;
     if (_e12) {
         return float2(1.0, 0.0);
     }
     return float2(((sign_ < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
 }
 
-float4 airlight_phase_lobes(AirlightScene s_31)
+float4 airlight_phase_lobes(AirlightScene s_32)
 {
     float2 first = float2(1.0, 0.0);
     float2 second = float2(1.0, 0.0);
 
-    float p0_5 = s_31.phase_param_a;
-    switch(s_31.phase_kind) {
+    float p0_5 = s_32.phase_param_a;
+    switch(s_32.phase_kind) {
         case 2u:
         case 4u: {
             const float _e11 = airlight_hg_gap(p0_5);
@@ -6787,8 +6815,8 @@ float4 airlight_phase_lobes(AirlightScene s_31)
             const float _e22 = airlight_hg_gap(p0_5);
             const float2 _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            const float _e26 = airlight_hg_gap(s_31.phase_param_b);
-            const float2 _e27 = airlight_lobe(s_31.phase_param_b, _e26);
+            const float _e26 = airlight_hg_gap(s_32.phase_param_b);
+            const float2 _e27 = airlight_lobe(s_32.phase_param_b, _e26);
             second = _e27;
             break;
         }
@@ -6804,15 +6832,15 @@ float4 airlight_phase_lobes(AirlightScene s_31)
 float3 airlight_basis_e1_(float3 n_2)
 {
     float3 u_3 = float3(0.0, 0.0, 1.0);
-    bool local_167 = (bool)0;
+    bool local_170 = (bool)0;
 
     float3 m_10 = abs(n_2);
     if ((m_10.x <= m_10.y)) {
-        local_167 = (m_10.x <= m_10.z);
+        local_170 = (m_10.x <= m_10.z);
     } else {
-        local_167 = false;
+        local_170 = false;
     }
-    bool _e16 = local_167;
+    bool _e16 = local_170;
     if (_e16) {
         u_3 = float3(1.0, 0.0, 0.0);
     } else {
@@ -6856,16 +6884,10 @@ AirlightArea ConstructAirlightArea(float3 arg0, float3 arg1, float3 arg2, float3
     return ret;
 }
 
-AirlightArea airlight_area(AirlightScene s_32)
+AirlightArea airlight_area(AirlightScene s_33)
 {
     AirlightArea a_18 = (AirlightArea)0;
-    bool local_168 = (bool)0;
-    bool local_169 = (bool)0;
-    bool local_170 = (bool)0;
     bool local_171 = (bool)0;
-    bool local_172 = (bool)0;
-    bool local_173 = (bool)0;
-    bool local_174 = (bool)0;
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
@@ -6873,79 +6895,44 @@ AirlightArea airlight_area(AirlightScene s_32)
     float size = (float)0;
     float t_end_1 = (float)0;
     bool end_infinite = (bool)0;
-    bool local_175 = (bool)0;
+    bool local_172 = (bool)0;
     float cuts_4[3] = {0.0, 0.0, 0.0};
     uint i_27 = 0u;
-    bool local_176 = (bool)0;
-    bool local_177 = (bool)0;
-    bool local_178 = (bool)0;
+    bool local_173 = (bool)0;
+    bool local_174 = (bool)0;
+    bool local_175 = (bool)0;
 
     float3 zero = (0.0).xxx;
-    const float4 _e21 = airlight_phase_lobes(s_32);
-    a_18 = ConstructAirlightArea(zero, s_32.light_position, zero, zero, zero, zero, zero, zero, s_32.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
-    if (!((s_32.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-        if (!((s_32.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-            local_169 = (s_32.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-        } else {
-            local_169 = true;
-        }
-        bool _e44 = local_169;
-        if (_e44) {
-            local_170 = (s_32.phase_param_a == 0.0);
-        } else {
-            local_170 = false;
-        }
-        bool _e51 = local_170;
-        local_168 = _e51;
-    } else {
-        local_168 = true;
-    }
-    bool _e53 = local_168;
-    if (!(_e53)) {
-        if ((s_32.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG)) {
-            local_172 = (s_32.phase_param_a == 0.0);
-        } else {
-            local_172 = false;
-        }
-        bool _e66 = local_172;
-        if (_e66) {
-            local_173 = (s_32.phase_param_b == 0.0);
-        } else {
-            local_173 = false;
-        }
-        bool _e73 = local_173;
-        local_171 = _e73;
+    const float4 _e21 = airlight_phase_lobes(s_33);
+    a_18 = ConstructAirlightArea(zero, s_33.light_position, zero, zero, zero, zero, zero, zero, s_33.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    const bool _e28 = airlight_isotropic_phase(s_33);
+    a_18.isotropic = _e28;
+    if (!((s_33.intensity == 0.0))) {
+        local_171 = (s_33.sigma_s == 0.0);
     } else {
         local_171 = true;
     }
-    bool _e75 = local_171;
-    a_18.isotropic = _e75;
-    if (!((s_32.intensity == 0.0))) {
-        local_174 = (s_32.sigma_s == 0.0);
-    } else {
-        local_174 = true;
-    }
-    bool _e86 = local_174;
-    if (_e86) {
+    bool _e39 = local_171;
+    if (_e39) {
         a_18.outcome = 1u;
-        AirlightArea _e89 = a_18;
-        const AirlightArea airlightarea = _e89;
+        AirlightArea _e42 = a_18;
+        const AirlightArea airlightarea = _e42;
         return airlightarea;
     }
-    float3 o_6 = s_32.origin;
-    const float3 _e92 = airlight_normalize(s_32.dir);
-    a_18.d = _e92;
-    bool infinite_6 = ((s_32.flags & 1u) != 0u);
-    float t0_2 = s_32.t_min;
-    centre = s_32.light_position;
-    size = s_32.light_param_a;
-    if ((s_32.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
-        float3 _e114 = a_18.c;
-        float3 oc = (o_6 - _e114);
-        float b_20 = dot(oc, _e92);
-        float _e119 = a_18.radius;
-        float _e121 = a_18.radius;
-        float k_10 = (dot(oc, oc) - (_e119 * _e121));
+    float3 o_6 = s_33.origin;
+    const float3 _e45 = airlight_normalize(s_33.dir);
+    a_18.d = _e45;
+    bool infinite_6 = ((s_33.flags & 1u) != 0u);
+    float t0_2 = s_33.t_min;
+    centre = s_33.light_position;
+    size = s_33.light_param_a;
+    if ((s_33.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+        float3 _e67 = a_18.c;
+        float3 oc = (o_6 - _e67);
+        float b_20 = dot(oc, _e45);
+        float _e72 = a_18.radius;
+        float _e74 = a_18.radius;
+        float k_10 = (dot(oc, oc) - (_e72 * _e74));
         float disc_2 = ((b_20 * b_20) - k_10);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
@@ -6955,149 +6942,149 @@ AirlightArea airlight_area(AirlightScene s_32)
             cut_count = 2u;
         }
     } else {
-        if ((s_32.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            const float3 _e145 = airlight_normalize(s_32.light_axis);
-            a_18.n = _e145;
-            float3 _e148 = a_18.n;
-            const float3 _e149 = airlight_basis_e1_(_e148);
-            a_18.a1_ = _e149;
+        if ((s_33.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            const float3 _e98 = airlight_normalize(s_33.light_axis);
+            a_18.n = _e98;
+            float3 _e101 = a_18.n;
+            const float3 _e102 = airlight_basis_e1_(_e101);
+            a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_32.light_axis;
-            a_18.ev = s_32.light_end;
-            float3 _e156 = a_18.eu;
-            float3 _e158 = a_18.ev;
-            const float3 _e160 = airlight_normalize(cross(_e156, _e158));
-            a_18.n = _e160;
-            float3 _e163 = a_18.eu;
-            const float3 _e164 = airlight_normalize(_e163);
-            a_18.a1_ = _e164;
-            float3 _e166 = a_18.eu;
-            float3 _e168 = a_18.ev;
-            float3 diagonal = (_e166 + _e168);
-            float3 _e171 = a_18.c;
-            centre = (_e171 + (0.5 * diagonal));
-            const float _e175 = airlight_safe_length(diagonal);
-            float3 _e177 = a_18.eu;
-            float3 _e179 = a_18.ev;
-            const float _e181 = airlight_safe_length((_e177 - _e179));
-            size = (0.5 * max(_e175, _e181));
+            a_18.eu = s_33.light_axis;
+            a_18.ev = s_33.light_end;
+            float3 _e109 = a_18.eu;
+            float3 _e111 = a_18.ev;
+            const float3 _e113 = airlight_normalize(cross(_e109, _e111));
+            a_18.n = _e113;
+            float3 _e116 = a_18.eu;
+            const float3 _e117 = airlight_normalize(_e116);
+            a_18.a1_ = _e117;
+            float3 _e119 = a_18.eu;
+            float3 _e121 = a_18.ev;
+            float3 diagonal = (_e119 + _e121);
+            float3 _e124 = a_18.c;
+            centre = (_e124 + (0.5 * diagonal));
+            const float _e128 = airlight_safe_length(diagonal);
+            float3 _e130 = a_18.eu;
+            float3 _e132 = a_18.ev;
+            const float _e134 = airlight_safe_length((_e130 - _e132));
+            size = (0.5 * max(_e128, _e134));
         }
-        float3 _e187 = a_18.n;
-        float3 _e189 = a_18.a1_;
-        a_18.a2_ = cross(_e187, _e189);
-        float3 _e193 = a_18.a1_;
-        float3 _e196 = a_18.a2_;
-        float3 _e199 = a_18.n;
-        a_18.dirs = float3(dot(_e193, _e92), dot(_e196, _e92), dot(_e199, _e92));
-        float3 _e203 = a_18.c;
-        float3 _e206 = a_18.n;
-        float3 _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o_6), _e206) / dot(_e92, _e209));
+        float3 _e140 = a_18.n;
+        float3 _e142 = a_18.a1_;
+        a_18.a2_ = cross(_e140, _e142);
+        float3 _e146 = a_18.a1_;
+        float3 _e149 = a_18.a2_;
+        float3 _e152 = a_18.n;
+        a_18.dirs = float3(dot(_e146, _e45), dot(_e149, _e45), dot(_e152, _e45));
+        float3 _e156 = a_18.c;
+        float3 _e159 = a_18.n;
+        float3 _e162 = a_18.n;
+        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
         cut_count = 1u;
     }
-    float _e213 = size;
-    if (!((_e213 > 0.0))) {
+    float _e166 = size;
+    if (!((_e166 > 0.0))) {
         a_18.outcome = 1u;
-        AirlightArea _e219 = a_18;
-        const AirlightArea airlightarea_1 = _e219;
+        AirlightArea _e172 = a_18;
+        const AirlightArea airlightarea_1 = _e172;
         return airlightarea_1;
     }
-    float3 _e220 = centre;
-    float3 to_centre = (_e220 - o_6);
-    a_18.x_h = dot(to_centre, _e92);
-    float _e225 = a_18.x_h;
-    const float _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
-    float _e231 = size;
-    float _e232 = size;
-    a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
-    t_end_1 = s_32.t_max;
+    float3 _e173 = centre;
+    float3 to_centre = (_e173 - o_6);
+    a_18.x_h = dot(to_centre, _e45);
+    float _e178 = a_18.x_h;
+    const float _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
+    float _e184 = size;
+    float _e185 = size;
+    a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
+    t_end_1 = s_33.t_max;
     end_infinite = infinite_6;
-    if ((s_32.sigma_t > 0.0)) {
-        float3 _e242 = centre;
-        const float _e246 = airlight_safe_length((_e242 - (o_6 + (t0_2 * _e92))));
-        float _e248 = size;
-        float reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385 / s_32.sigma_t));
+    if ((s_33.sigma_t > 0.0)) {
+        float3 _e195 = centre;
+        const float _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
+        float _e201 = size;
+        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_33.sigma_t));
         if (!(infinite_6)) {
-            float _e257 = t_end_1;
-            local_175 = (reach_1 < _e257);
+            float _e210 = t_end_1;
+            local_172 = (reach_1 < _e210);
         } else {
-            local_175 = true;
+            local_172 = true;
         }
-        bool _e260 = local_175;
-        if (_e260) {
+        bool _e213 = local_172;
+        if (_e213) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e262 = a_18;
-    const float _e264 = airlight_area_theta(_e262, t0_2, false);
-    AirlightArea _e265 = a_18;
-    float _e266 = t_end_1;
-    bool _e267 = end_infinite;
-    const float _e268 = airlight_area_theta(_e265, _e266, _e267);
-    float _e270 = a_18.x_h;
-    float _e272 = a_18.x_h;
-    float _e273 = cut0_;
-    uint _e274 = cut_count;
-    float _e279 = a_18.x_h;
-    float _e280 = cut1_;
-    uint _e281 = cut_count;
-    cuts_4 = airlight_Constructarray3_float_(_e270, ((_e274 > 0u) ? _e273 : _e272), ((_e281 > 1u) ? _e280 : _e279));
+    AirlightArea _e215 = a_18;
+    const float _e217 = airlight_area_theta(_e215, t0_2, false);
+    AirlightArea _e218 = a_18;
+    float _e219 = t_end_1;
+    bool _e220 = end_infinite;
+    const float _e221 = airlight_area_theta(_e218, _e219, _e220);
+    float _e223 = a_18.x_h;
+    float _e225 = a_18.x_h;
+    float _e226 = cut0_;
+    uint _e227 = cut_count;
+    float _e232 = a_18.x_h;
+    float _e233 = cut1_;
+    uint _e234 = cut_count;
+    cuts_4 = airlight_Constructarray3_float_(_e223, ((_e227 > 0u) ? _e226 : _e225), ((_e234 > 1u) ? _e233 : _e232));
     uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     bool loop_init_31 = true;
     while(true) {
         if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
         loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         if (!loop_init_31) {
-            uint _e321 = i_27;
-            i_27 = (_e321 + 1u);
+            uint _e274 = i_27;
+            i_27 = (_e274 + 1u);
         }
         loop_init_31 = false;
-        uint _e289 = i_27;
-        if ((_e289 < 3u)) {
+        uint _e242 = i_27;
+        if ((_e242 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e292 = i_27;
-            float t_9 = cuts_4[min(uint(_e292), 2u)];
-            uint _e295 = i_27;
-            cuts_4[min(uint(_e295), 2u)] = _e264;
-            const bool _e297 = airlight_is_finite(t_9);
-            if (_e297) {
-                local_176 = (t_9 >= t0_2);
+            uint _e245 = i_27;
+            float t_9 = cuts_4[min(uint(_e245), 2u)];
+            uint _e248 = i_27;
+            cuts_4[min(uint(_e248), 2u)] = _e217;
+            const bool _e250 = airlight_is_finite(t_9);
+            if (_e250) {
+                local_173 = (t_9 >= t0_2);
             } else {
-                local_176 = false;
+                local_173 = false;
             }
-            bool _e302 = local_176;
-            if (_e302) {
-                bool _e305 = end_infinite;
-                if (!(_e305)) {
-                    float _e309 = t_end_1;
-                    local_178 = (t_9 <= _e309);
+            bool _e255 = local_173;
+            if (_e255) {
+                bool _e258 = end_infinite;
+                if (!(_e258)) {
+                    float _e262 = t_end_1;
+                    local_175 = (t_9 <= _e262);
                 } else {
-                    local_178 = true;
+                    local_175 = true;
                 }
-                bool _e312 = local_178;
-                local_177 = _e312;
+                bool _e265 = local_175;
+                local_174 = _e265;
             } else {
-                local_177 = false;
+                local_174 = false;
             }
-            bool _e314 = local_177;
-            if (_e314) {
-                uint _e315 = i_27;
-                AirlightArea _e317 = a_18;
-                const float _e319 = airlight_area_theta(_e317, t_9, false);
-                cuts_4[min(uint(_e315), 2u)] = _e319;
+            bool _e267 = local_174;
+            if (_e267) {
+                uint _e268 = i_27;
+                AirlightArea _e270 = a_18;
+                const float _e272 = airlight_area_theta(_e270, t_9, false);
+                cuts_4[min(uint(_e268), 2u)] = _e272;
             }
         }
     }
-    float _e323[3] = cuts_4;
-    const AirlightEdges _e324 = airlight_edges_between(_e264, _e268, _e323);
-    a_18.edges = _e324.at;
-    a_18.panels = _e324.panels;
-    AirlightArea _e329 = a_18;
-    const AirlightArea airlightarea_2 = _e329;
+    float _e276[3] = cuts_4;
+    const AirlightEdges _e277 = airlight_edges_between(_e217, _e221, _e276);
+    a_18.edges = _e277.at;
+    a_18.panels = _e277.panels;
+    AirlightArea _e282 = a_18;
+    const AirlightArea airlightarea_2 = _e282;
     return airlightarea_2;
 }
 
@@ -7115,7 +7102,7 @@ AirlightAbove airlight_above(float z_10, float2 off)
     return airlightabove;
 }
 
-float airlight_flat_node(AirlightScene s_33, AirlightArea a_19, AirlightAbove above_1, float2 e_3, float graded, float node)
+float airlight_flat_node(AirlightScene s_34, AirlightArea a_19, AirlightAbove above_1, float2 e_3, float graded, float node)
 {
     float g_26 = (float)0;
     float jacobian_1 = 1.0;
@@ -7135,32 +7122,32 @@ float airlight_flat_node(AirlightScene s_33, AirlightArea a_19, AirlightAbove ab
     float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    const float _e63 = airlight_area_phase(s_33, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    const float _e63 = airlight_area_phase(s_34, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
     float _e64 = jacobian_1;
-    const float _e65 = airlight_emitted(s_33, cos_);
-    return ((((((((_e64 * _e65) * exp(min((-(s_33.sigma_t) * dist), 0.0))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    const float _e65 = airlight_emitted(s_34, cos_);
+    return ((((((((_e64 * _e65) * exp(min((-(s_34.sigma_t) * dist), 0.0))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_34, AirlightArea a_20, AirlightAbove above_2, float2 e_4, float r_max)
+float airlight_flat_radial(AirlightScene s_35, AirlightArea a_20, AirlightAbove above_2, float2 e_4, float r_max)
 {
     float top = (float)0;
     float graded_1 = (float)0;
-    bool local_179 = (bool)0;
+    bool local_176 = (bool)0;
     float sum_7 = 0.0;
 
     const float _e7 = airlight_atan((r_max / above_2.rho0_));
     top = _e7;
-    const float _e9 = airlight_emission_scale(s_34);
+    const float _e9 = airlight_emission_scale(s_35);
     graded_1 = _e9;
     float _e11 = graded_1;
     if ((_e11 > 0.0)) {
         float _e16 = graded_1;
         float _e17 = top;
-        local_179 = (_e16 < _e17);
+        local_176 = (_e16 < _e17);
     } else {
-        local_179 = false;
+        local_176 = false;
     }
-    bool _e20 = local_179;
+    bool _e20 = local_176;
     if (_e20) {
         float _e21 = top;
         float _e22 = graded_1;
@@ -7175,67 +7162,67 @@ float airlight_flat_radial(AirlightScene s_34, AirlightArea a_20, AirlightAbove 
     float hw_2 = (0.5 * _e29);
     float _e34 = sum_7;
     float _e37 = graded_1;
-    const float _e41 = airlight_flat_node(s_34, a_20, above_2, e_4, _e37, (c_16 - (0.09501251 * hw_2)));
+    const float _e41 = airlight_flat_node(s_35, a_20, above_2, e_4, _e37, (c_16 - (0.09501251 * hw_2)));
     sum_7 = (_e34 + ((0.1894506 * hw_2) * _e41));
     float _e44 = sum_7;
     float _e47 = graded_1;
-    const float _e51 = airlight_flat_node(s_34, a_20, above_2, e_4, _e47, (c_16 + (0.09501251 * hw_2)));
+    const float _e51 = airlight_flat_node(s_35, a_20, above_2, e_4, _e47, (c_16 + (0.09501251 * hw_2)));
     sum_7 = (_e44 + ((0.1894506 * hw_2) * _e51));
     float _e54 = sum_7;
     float _e57 = graded_1;
-    const float _e61 = airlight_flat_node(s_34, a_20, above_2, e_4, _e57, (c_16 - (0.28160354 * hw_2)));
+    const float _e61 = airlight_flat_node(s_35, a_20, above_2, e_4, _e57, (c_16 - (0.28160354 * hw_2)));
     sum_7 = (_e54 + ((0.18260342 * hw_2) * _e61));
     float _e64 = sum_7;
     float _e67 = graded_1;
-    const float _e71 = airlight_flat_node(s_34, a_20, above_2, e_4, _e67, (c_16 + (0.28160354 * hw_2)));
+    const float _e71 = airlight_flat_node(s_35, a_20, above_2, e_4, _e67, (c_16 + (0.28160354 * hw_2)));
     sum_7 = (_e64 + ((0.18260342 * hw_2) * _e71));
     float _e74 = sum_7;
     float _e77 = graded_1;
-    const float _e81 = airlight_flat_node(s_34, a_20, above_2, e_4, _e77, (c_16 - (0.45801678 * hw_2)));
+    const float _e81 = airlight_flat_node(s_35, a_20, above_2, e_4, _e77, (c_16 - (0.45801678 * hw_2)));
     sum_7 = (_e74 + ((0.16915652 * hw_2) * _e81));
     float _e84 = sum_7;
     float _e87 = graded_1;
-    const float _e91 = airlight_flat_node(s_34, a_20, above_2, e_4, _e87, (c_16 + (0.45801678 * hw_2)));
+    const float _e91 = airlight_flat_node(s_35, a_20, above_2, e_4, _e87, (c_16 + (0.45801678 * hw_2)));
     sum_7 = (_e84 + ((0.16915652 * hw_2) * _e91));
     float _e94 = sum_7;
     float _e97 = graded_1;
-    const float _e101 = airlight_flat_node(s_34, a_20, above_2, e_4, _e97, (c_16 - (0.61787623 * hw_2)));
+    const float _e101 = airlight_flat_node(s_35, a_20, above_2, e_4, _e97, (c_16 - (0.61787623 * hw_2)));
     sum_7 = (_e94 + ((0.14959599 * hw_2) * _e101));
     float _e104 = sum_7;
     float _e107 = graded_1;
-    const float _e111 = airlight_flat_node(s_34, a_20, above_2, e_4, _e107, (c_16 + (0.61787623 * hw_2)));
+    const float _e111 = airlight_flat_node(s_35, a_20, above_2, e_4, _e107, (c_16 + (0.61787623 * hw_2)));
     sum_7 = (_e104 + ((0.14959599 * hw_2) * _e111));
     float _e114 = sum_7;
     float _e117 = graded_1;
-    const float _e121 = airlight_flat_node(s_34, a_20, above_2, e_4, _e117, (c_16 - (0.7554044 * hw_2)));
+    const float _e121 = airlight_flat_node(s_35, a_20, above_2, e_4, _e117, (c_16 - (0.7554044 * hw_2)));
     sum_7 = (_e114 + ((0.12462897 * hw_2) * _e121));
     float _e124 = sum_7;
     float _e127 = graded_1;
-    const float _e131 = airlight_flat_node(s_34, a_20, above_2, e_4, _e127, (c_16 + (0.7554044 * hw_2)));
+    const float _e131 = airlight_flat_node(s_35, a_20, above_2, e_4, _e127, (c_16 + (0.7554044 * hw_2)));
     sum_7 = (_e124 + ((0.12462897 * hw_2) * _e131));
     float _e134 = sum_7;
     float _e137 = graded_1;
-    const float _e141 = airlight_flat_node(s_34, a_20, above_2, e_4, _e137, (c_16 - (0.8656312 * hw_2)));
+    const float _e141 = airlight_flat_node(s_35, a_20, above_2, e_4, _e137, (c_16 - (0.8656312 * hw_2)));
     sum_7 = (_e134 + ((0.09515851 * hw_2) * _e141));
     float _e144 = sum_7;
     float _e147 = graded_1;
-    const float _e151 = airlight_flat_node(s_34, a_20, above_2, e_4, _e147, (c_16 + (0.8656312 * hw_2)));
+    const float _e151 = airlight_flat_node(s_35, a_20, above_2, e_4, _e147, (c_16 + (0.8656312 * hw_2)));
     sum_7 = (_e144 + ((0.09515851 * hw_2) * _e151));
     float _e154 = sum_7;
     float _e157 = graded_1;
-    const float _e161 = airlight_flat_node(s_34, a_20, above_2, e_4, _e157, (c_16 - (0.944575 * hw_2)));
+    const float _e161 = airlight_flat_node(s_35, a_20, above_2, e_4, _e157, (c_16 - (0.944575 * hw_2)));
     sum_7 = (_e154 + ((0.062253524 * hw_2) * _e161));
     float _e164 = sum_7;
     float _e167 = graded_1;
-    const float _e171 = airlight_flat_node(s_34, a_20, above_2, e_4, _e167, (c_16 + (0.944575 * hw_2)));
+    const float _e171 = airlight_flat_node(s_35, a_20, above_2, e_4, _e167, (c_16 + (0.944575 * hw_2)));
     sum_7 = (_e164 + ((0.062253524 * hw_2) * _e171));
     float _e174 = sum_7;
     float _e177 = graded_1;
-    const float _e181 = airlight_flat_node(s_34, a_20, above_2, e_4, _e177, (c_16 - (0.9894009 * hw_2)));
+    const float _e181 = airlight_flat_node(s_35, a_20, above_2, e_4, _e177, (c_16 - (0.9894009 * hw_2)));
     sum_7 = (_e174 + ((0.02715246 * hw_2) * _e181));
     float _e184 = sum_7;
     float _e187 = graded_1;
-    const float _e191 = airlight_flat_node(s_34, a_20, above_2, e_4, _e187, (c_16 + (0.9894009 * hw_2)));
+    const float _e191 = airlight_flat_node(s_35, a_20, above_2, e_4, _e187, (c_16 + (0.9894009 * hw_2)));
     sum_7 = (_e184 + ((0.02715246 * hw_2) * _e191));
     float _e194 = sum_7;
     return _e194;
@@ -7247,7 +7234,7 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
     float2 nearest = (float2)0;
     bool inside = true;
     uint i_28 = 0u;
-    bool local_180 = (bool)0;
+    bool local_177 = (bool)0;
 
     if ((o.radius > 0.0)) {
         float2 qc = (q_4 - o.corners[0]);
@@ -7277,11 +7264,11 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
             float2 e_14 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_43);
             bool _e50 = inside;
             if (_e50) {
-                local_180 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
+                local_177 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
             } else {
-                local_180 = false;
+                local_177 = false;
             }
-            bool _e67 = local_180;
+            bool _e67 = local_177;
             inside = _e67;
             float t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
             float2 p_5 = (a_43 + (t_10 * e_14));
@@ -7317,9 +7304,9 @@ AirlightFlatLobe ConstructAirlightFlatLobe(float3 arg0, float arg1, float arg2, 
 AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutline o_2, float2 centre_1, float size_1)
 {
     uint j_5 = 0u;
-    bool local_181 = (bool)0;
-    bool local_182 = (bool)0;
-    bool local_183 = (bool)0;
+    bool local_178 = (bool)0;
+    bool local_179 = (bool)0;
+    bool local_180 = (bool)0;
 
     const float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
@@ -7342,17 +7329,17 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
             float2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
             float3 p_6 = (lobe_4.x * a_21.dirs);
             if ((lobe_4.y > 0.0)) {
-                local_181 = (p_6.z < 0.0);
+                local_178 = (p_6.z < 0.0);
             } else {
-                local_181 = false;
+                local_178 = false;
             }
-            bool _e36 = local_181;
+            bool _e36 = local_178;
             if (_e36) {
-                local_182 = (lobe_4.y < (_e10 + _e10));
+                local_179 = (lobe_4.y < (_e10 + _e10));
             } else {
-                local_182 = false;
+                local_179 = false;
             }
-            bool _e43 = local_182;
+            bool _e43 = local_179;
             if (_e43) {
                 float l_4 = (z_11 / -(p_6.z));
                 float2 q_13 = (l_4 * p_6.xy);
@@ -7361,11 +7348,11 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
                 float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
                 if (!(all((_e49 == q_13)))) {
                     const float _e63 = airlight_acos(cos_1);
-                    local_183 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_183 = true;
+                    local_180 = true;
                 }
-                bool _e69 = local_183;
+                bool _e69 = local_180;
                 if (_e69) {
                     const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13);
                     return airlightflatlobe;
@@ -7432,7 +7419,7 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
     return _e93;
 }
 
-float airlight_flat_lobe_node(AirlightScene s_35, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded_2, float g_27)
+float airlight_flat_lobe_node(AirlightScene s_36, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded_2, float g_27)
 {
     const float2 _e7 = airlight_cos_sin_half_turn(g_27);
     const float2 _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
@@ -7440,12 +7427,12 @@ float airlight_flat_lobe_node(AirlightScene s_35, float z_12, AirlightFlatLobe l
     if (!((c_17 > 0.0))) {
         return 0.0;
     }
-    const float _e26 = airlight_emitted(s_35, c_17);
-    const float _e38 = airlight_area_phase(s_35, (lobe_1.sign_ * _e13.x));
-    return (((((_e26 * exp(min(((-(s_35.sigma_t) * z_12) / c_17), 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    const float _e26 = airlight_emitted(s_36, c_17);
+    const float _e38 = airlight_area_phase(s_36, (lobe_1.sign_ * _e13.x));
+    return (((((_e26 * exp(min(((-(s_36.sigma_t) * z_12) / c_17), 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-float airlight_flat_lobe_along(AirlightScene s_36, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, float3 u_4, float3 v_6, float2 cs_1)
+float airlight_flat_lobe_along(AirlightScene s_37, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, float3 u_4, float3 v_6, float2 cs_1)
 {
     float sum_8 = 0.0;
 
@@ -7462,52 +7449,52 @@ float airlight_flat_lobe_along(AirlightScene s_36, float z_13, AirlightOutline o
     float c_18 = (0.5 * _e45);
     float hw_3 = (0.5 * _e45);
     float _e52 = sum_8;
-    const float _e58 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251 * hw_3)));
+    const float _e58 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    const float _e67 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251 * hw_3)));
+    const float _e67 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    const float _e76 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354 * hw_3)));
+    const float _e76 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    const float _e85 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354 * hw_3)));
+    const float _e85 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    const float _e94 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678 * hw_3)));
+    const float _e94 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    const float _e103 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678 * hw_3)));
+    const float _e103 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    const float _e112 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623 * hw_3)));
+    const float _e112 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    const float _e121 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623 * hw_3)));
+    const float _e121 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    const float _e130 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044 * hw_3)));
+    const float _e130 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    const float _e139 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044 * hw_3)));
+    const float _e139 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    const float _e148 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312 * hw_3)));
+    const float _e148 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    const float _e157 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312 * hw_3)));
+    const float _e157 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    const float _e166 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575 * hw_3)));
+    const float _e166 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    const float _e175 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575 * hw_3)));
+    const float _e175 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    const float _e184 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009 * hw_3)));
+    const float _e184 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    const float _e193 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009 * hw_3)));
+    const float _e193 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7539,7 +7526,7 @@ float4 airlight_sort4_(float4 x_23)
     return float4(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-float airlight_flat_about_lobe(AirlightScene s_37, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
+float airlight_flat_about_lobe(AirlightScene s_38, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
     uint i_29 = 0u;
@@ -7574,7 +7561,7 @@ float airlight_flat_about_lobe(AirlightScene s_37, float z_14, AirlightOutline o
                     uint _e33 = i_29;
                     const float3 _e34 = airlight_azimuths(true, _e33);
                     float _e35 = sum_9;
-                    const float _e38 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
+                    const float _e38 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
                     sum_9 = (_e35 + (_e34.z * _e38));
                 }
             }
@@ -7610,7 +7597,7 @@ float airlight_flat_about_lobe(AirlightScene s_37, float z_14, AirlightOutline o
                 const float3 _e98 = airlight_azimuths(false, _e97);
                 float _e99 = sum_9;
                 const float2 _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
-                const float _e108 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e107);
+                const float _e108 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e107);
                 sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
             }
         }
@@ -7683,7 +7670,7 @@ float airlight_flat_about_lobe(AirlightScene s_37, float z_14, AirlightOutline o
                     const float2 _e198 = airlight_triangle_rule(_e197);
                     float _e199 = sum_9;
                     const float2 _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                    const float _e206 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e205);
+                    const float _e206 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e205);
                     sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
                 }
             }
@@ -7700,10 +7687,10 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-float airlight_disc(AirlightScene s_38, AirlightArea a_23, float3 x_24)
+float airlight_disc(AirlightScene s_39, AirlightArea a_23, float3 x_24)
 {
-    bool local_184 = (bool)0;
-    bool local_185 = (bool)0;
+    bool local_181 = (bool)0;
+    bool local_182 = (bool)0;
     float2 u_6 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_10 = 0.0;
@@ -7724,22 +7711,22 @@ float airlight_disc(AirlightScene s_38, AirlightArea a_23, float3 x_24)
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
     const AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        const float _e34 = airlight_flat_about_lobe(s_38, z_20, outline, _e30);
+        const float _e34 = airlight_flat_about_lobe(s_39, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            const bool _e44 = airlight_far_from_edge(s_38, (radius_2 - rf), z_20);
-            local_185 = _e44;
+            const bool _e44 = airlight_far_from_edge(s_39, (radius_2 - rf), z_20);
+            local_182 = _e44;
         } else {
-            local_185 = true;
+            local_182 = true;
         }
-        bool _e46 = local_185;
-        local_184 = _e46;
+        bool _e46 = local_182;
+        local_181 = _e46;
     } else {
-        local_184 = false;
+        local_181 = false;
     }
-    bool inside_3 = local_184;
+    bool inside_3 = local_181;
     const AirlightAbove _e54 = airlight_above(z_20, (0.0).xx);
     above_3 = _e54;
     if (!(inside_3)) {
@@ -7783,7 +7770,7 @@ float airlight_disc(AirlightScene s_38, AirlightArea a_23, float3 x_24)
             AirlightAbove _e120 = above_3;
             float2 _e121 = e_8;
             float _e122 = r_max_1;
-            const float _e123 = airlight_flat_radial(s_38, a_23, _e120, _e121, _e122);
+            const float _e123 = airlight_flat_radial(s_39, a_23, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -7791,10 +7778,10 @@ float airlight_disc(AirlightScene s_38, AirlightArea a_23, float3 x_24)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_39, AirlightArea a_24, float3 x_25)
+float airlight_parallelogram(AirlightScene s_40, AirlightArea a_24, float3 x_25)
 {
     float2 q_8 = (float2)0;
-    bool local_186 = (bool)0;
+    bool local_183 = (bool)0;
     float sum_11 = 0.0;
     uint i_33 = 0u;
     uint j_7 = (uint)0;
@@ -7813,18 +7800,18 @@ float airlight_parallelogram(AirlightScene s_39, AirlightArea a_24, float3 x_25)
     float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
     const AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
     if ((_e69.scale > 0.0)) {
-        const float _e73 = airlight_flat_about_lobe(s_39, z_21, about_foot, _e69);
+        const float _e73 = airlight_flat_about_lobe(s_40, z_21, about_foot, _e69);
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
     q_8 = (_e76.xy + foot);
     if ((_e76.z > 0.0)) {
-        const bool _e89 = airlight_far_from_edge(s_39, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_186 = _e89;
+        const bool _e89 = airlight_far_from_edge(s_40, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_183 = _e89;
     } else {
-        local_186 = false;
+        local_183 = false;
     }
-    bool _e91 = local_186;
+    bool _e91 = local_183;
     if (_e91) {
         q_8 = foot;
     }
@@ -7885,7 +7872,7 @@ float airlight_parallelogram(AirlightScene s_39, AirlightArea a_24, float3 x_25)
                     const float2 _e171 = airlight_cos_sin_half_turn(((0.5 * _e147) * (1.0 + _e164.x)));
                     float2 dir_3 = float2(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
                     float _e187 = sum_11;
-                    const float _e200 = airlight_flat_radial(s_39, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    const float _e200 = airlight_flat_radial(s_40, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
                     sum_11 = (_e187 + (((_e164.y * 0.5) * _e147) * _e200));
                 }
             }
@@ -7895,7 +7882,7 @@ float airlight_parallelogram(AirlightScene s_39, AirlightArea a_24, float3 x_25)
     return _e209;
 }
 
-float3 airlight_cap_row(AirlightScene s_40, AirlightCap cap, float graded_3, float node_1, float weight_1)
+float3 airlight_cap_row(AirlightScene s_41, AirlightCap cap, float graded_3, float node_1, float weight_1)
 {
     float phi = (float)0;
     float w_2 = (float)0;
@@ -7913,8 +7900,8 @@ float3 airlight_cap_row(AirlightScene s_40, AirlightCap cap, float graded_3, flo
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0.0);
     float _e38 = w_2;
-    const float _e40 = airlight_emitted(s_40, _e20.x);
-    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_40.sigma_t) * dist_1), 0.0)));
+    const float _e40 = airlight_emitted(s_41, _e20.x);
+    float factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_41.sigma_t) * dist_1), 0.0)));
     return float3(factor, cb_2, sb_2);
 }
 
@@ -7924,11 +7911,11 @@ airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 a
     return ret;
 }
 
-float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap_1)
+float airlight_sphere_cap(AirlightScene s_42, AirlightArea a_25, AirlightCap cap_1)
 {
     float graded_4 = (float)0;
     float top_1 = 1.5707964;
-    bool local_187 = (bool)0;
+    bool local_184 = (bool)0;
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
     uint i_34 = 0u;
@@ -7939,17 +7926,17 @@ float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap
     float ad = dot(cap_1.a, a_25.d);
     float e1d = dot(_e4, a_25.d);
     float e2d = dot(e2_2, a_25.d);
-    const float _e14 = airlight_emission_scale(s_41);
+    const float _e14 = airlight_emission_scale(s_42);
     graded_4 = _e14;
     float _e18 = graded_4;
     if ((_e18 > 0.0)) {
         float _e23 = graded_4;
         float _e24 = top_1;
-        local_187 = (_e23 < _e24);
+        local_184 = (_e23 < _e24);
     } else {
-        local_187 = false;
+        local_184 = false;
     }
-    bool _e27 = local_187;
+    bool _e27 = local_184;
     if (_e27) {
         float _e28 = top_1;
         float _e29 = graded_4;
@@ -7963,55 +7950,55 @@ float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap
     float _e36 = top_1;
     float hw_5 = (0.5 * _e36);
     float _e74 = graded_4;
-    const float3 _e80 = airlight_cap_row(s_41, cap_1, _e74, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    const float3 _e80 = airlight_cap_row(s_42, cap_1, _e74, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[0] = _e80;
     float _e82 = graded_4;
-    const float3 _e88 = airlight_cap_row(s_41, cap_1, _e82, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    const float3 _e88 = airlight_cap_row(s_42, cap_1, _e82, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[1] = _e88;
     float _e90 = graded_4;
-    const float3 _e96 = airlight_cap_row(s_41, cap_1, _e90, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e96 = airlight_cap_row(s_42, cap_1, _e90, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[2] = _e96;
     float _e98 = graded_4;
-    const float3 _e104 = airlight_cap_row(s_41, cap_1, _e98, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e104 = airlight_cap_row(s_42, cap_1, _e98, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[3] = _e104;
     float _e106 = graded_4;
-    const float3 _e112 = airlight_cap_row(s_41, cap_1, _e106, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e112 = airlight_cap_row(s_42, cap_1, _e106, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[4] = _e112;
     float _e114 = graded_4;
-    const float3 _e120 = airlight_cap_row(s_41, cap_1, _e114, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e120 = airlight_cap_row(s_42, cap_1, _e114, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[5] = _e120;
     float _e122 = graded_4;
-    const float3 _e128 = airlight_cap_row(s_41, cap_1, _e122, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e128 = airlight_cap_row(s_42, cap_1, _e122, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[6] = _e128;
     float _e130 = graded_4;
-    const float3 _e136 = airlight_cap_row(s_41, cap_1, _e130, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e136 = airlight_cap_row(s_42, cap_1, _e130, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[7] = _e136;
     float _e138 = graded_4;
-    const float3 _e144 = airlight_cap_row(s_41, cap_1, _e138, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e144 = airlight_cap_row(s_42, cap_1, _e138, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[8] = _e144;
     float _e146 = graded_4;
-    const float3 _e152 = airlight_cap_row(s_41, cap_1, _e146, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e152 = airlight_cap_row(s_42, cap_1, _e146, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[9] = _e152;
     float _e154 = graded_4;
-    const float3 _e160 = airlight_cap_row(s_41, cap_1, _e154, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e160 = airlight_cap_row(s_42, cap_1, _e154, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[10] = _e160;
     float _e162 = graded_4;
-    const float3 _e168 = airlight_cap_row(s_41, cap_1, _e162, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e168 = airlight_cap_row(s_42, cap_1, _e162, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[11] = _e168;
     float _e170 = graded_4;
-    const float3 _e176 = airlight_cap_row(s_41, cap_1, _e170, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e176 = airlight_cap_row(s_42, cap_1, _e170, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[12] = _e176;
     float _e178 = graded_4;
-    const float3 _e184 = airlight_cap_row(s_41, cap_1, _e178, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e184 = airlight_cap_row(s_42, cap_1, _e178, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[13] = _e184;
     float _e186 = graded_4;
-    const float3 _e192 = airlight_cap_row(s_41, cap_1, _e186, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e192 = airlight_cap_row(s_42, cap_1, _e186, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[14] = _e192;
     float _e194 = graded_4;
-    const float3 _e200 = airlight_cap_row(s_41, cap_1, _e194, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e200 = airlight_cap_row(s_42, cap_1, _e194, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[15] = _e200;
     if (a_25.isotropic) {
-        const float _e206 = airlight_area_phase(s_41, 0.0);
+        const float _e206 = airlight_area_phase(s_42, 0.0);
         float around_1 = (6.2831855 * _e206);
         float _e208 = sum_12;
         float _e211 = rows[0].x;
@@ -8088,97 +8075,97 @@ float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap
             float _e323 = rows[0].x;
             float _e326 = rows[0].y;
             float _e330 = rows[0].z;
-            const float _e333 = airlight_area_phase(s_41, ((_e326 * ad) + (_e330 * across_1)));
+            const float _e333 = airlight_area_phase(s_42, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[1].x;
             float _e342 = rows[1].y;
             float _e346 = rows[1].z;
-            const float _e349 = airlight_area_phase(s_41, ((_e342 * ad) + (_e346 * across_1)));
+            const float _e349 = airlight_area_phase(s_42, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[2].x;
             float _e358 = rows[2].y;
             float _e362 = rows[2].z;
-            const float _e365 = airlight_area_phase(s_41, ((_e358 * ad) + (_e362 * across_1)));
+            const float _e365 = airlight_area_phase(s_42, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[3].x;
             float _e374 = rows[3].y;
             float _e378 = rows[3].z;
-            const float _e381 = airlight_area_phase(s_41, ((_e374 * ad) + (_e378 * across_1)));
+            const float _e381 = airlight_area_phase(s_42, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[4].x;
             float _e390 = rows[4].y;
             float _e394 = rows[4].z;
-            const float _e397 = airlight_area_phase(s_41, ((_e390 * ad) + (_e394 * across_1)));
+            const float _e397 = airlight_area_phase(s_42, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[5].x;
             float _e406 = rows[5].y;
             float _e410 = rows[5].z;
-            const float _e413 = airlight_area_phase(s_41, ((_e406 * ad) + (_e410 * across_1)));
+            const float _e413 = airlight_area_phase(s_42, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[6].x;
             float _e422 = rows[6].y;
             float _e426 = rows[6].z;
-            const float _e429 = airlight_area_phase(s_41, ((_e422 * ad) + (_e426 * across_1)));
+            const float _e429 = airlight_area_phase(s_42, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[7].x;
             float _e438 = rows[7].y;
             float _e442 = rows[7].z;
-            const float _e445 = airlight_area_phase(s_41, ((_e438 * ad) + (_e442 * across_1)));
+            const float _e445 = airlight_area_phase(s_42, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[8].x;
             float _e454 = rows[8].y;
             float _e458 = rows[8].z;
-            const float _e461 = airlight_area_phase(s_41, ((_e454 * ad) + (_e458 * across_1)));
+            const float _e461 = airlight_area_phase(s_42, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[9].x;
             float _e470 = rows[9].y;
             float _e474 = rows[9].z;
-            const float _e477 = airlight_area_phase(s_41, ((_e470 * ad) + (_e474 * across_1)));
+            const float _e477 = airlight_area_phase(s_42, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[10].x;
             float _e486 = rows[10].y;
             float _e490 = rows[10].z;
-            const float _e493 = airlight_area_phase(s_41, ((_e486 * ad) + (_e490 * across_1)));
+            const float _e493 = airlight_area_phase(s_42, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[11].x;
             float _e502 = rows[11].y;
             float _e506 = rows[11].z;
-            const float _e509 = airlight_area_phase(s_41, ((_e502 * ad) + (_e506 * across_1)));
+            const float _e509 = airlight_area_phase(s_42, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[12].x;
             float _e518 = rows[12].y;
             float _e522 = rows[12].z;
-            const float _e525 = airlight_area_phase(s_41, ((_e518 * ad) + (_e522 * across_1)));
+            const float _e525 = airlight_area_phase(s_42, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[13].x;
             float _e534 = rows[13].y;
             float _e538 = rows[13].z;
-            const float _e541 = airlight_area_phase(s_41, ((_e534 * ad) + (_e538 * across_1)));
+            const float _e541 = airlight_area_phase(s_42, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = at_2;
             float _e547 = rows[14].x;
             float _e550 = rows[14].y;
             float _e554 = rows[14].z;
-            const float _e557 = airlight_area_phase(s_41, ((_e550 * ad) + (_e554 * across_1)));
+            const float _e557 = airlight_area_phase(s_42, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             float _e560 = at_2;
             float _e563 = rows[15].x;
             float _e566 = rows[15].y;
             float _e570 = rows[15].z;
-            const float _e573 = airlight_area_phase(s_41, ((_e566 * ad) + (_e570 * across_1)));
+            const float _e573 = airlight_area_phase(s_42, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
             float _e576 = sum_12;
             float _e578 = at_2;
@@ -8189,19 +8176,19 @@ float airlight_sphere_cap(AirlightScene s_41, AirlightArea a_25, AirlightCap cap
     return _e584;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_42, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_5, float g_28)
+float airlight_sphere_lobe_node(AirlightScene s_43, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_5, float g_28)
 {
     const float2 _e8 = airlight_cos_sin_half_turn(g_28);
     const float2 _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_5 * _e8.y) / _e8.x)));
     float toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
     float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
-    const float _e43 = airlight_emitted(s_42, (root_5 / cap_2.radius));
-    const float _e53 = airlight_area_phase(s_42, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_42.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
+    const float _e43 = airlight_emitted(s_43, (root_5 / cap_2.radius));
+    const float _e53 = airlight_area_phase(s_43, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_43.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_43, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1)
+float airlight_sphere_about_lobe(AirlightScene s_44, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1)
 {
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
@@ -8275,82 +8262,82 @@ float airlight_sphere_about_lobe(AirlightScene s_43, AirlightArea a_26, Airlight
             float _e117 = around;
             float _e120 = big_b_1;
             float _e121 = start_3;
-            const float _e125 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251 * hw_6)));
+            const float _e125 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251 * hw_6)));
             around = (_e117 + ((0.1894506 * hw_6) * _e125));
             float _e128 = around;
             float _e131 = big_b_1;
             float _e132 = start_3;
-            const float _e136 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251 * hw_6)));
+            const float _e136 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251 * hw_6)));
             around = (_e128 + ((0.1894506 * hw_6) * _e136));
             float _e139 = around;
             float _e142 = big_b_1;
             float _e143 = start_3;
-            const float _e147 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354 * hw_6)));
+            const float _e147 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354 * hw_6)));
             around = (_e139 + ((0.18260342 * hw_6) * _e147));
             float _e150 = around;
             float _e153 = big_b_1;
             float _e154 = start_3;
-            const float _e158 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354 * hw_6)));
+            const float _e158 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354 * hw_6)));
             around = (_e150 + ((0.18260342 * hw_6) * _e158));
             float _e161 = around;
             float _e164 = big_b_1;
             float _e165 = start_3;
-            const float _e169 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678 * hw_6)));
+            const float _e169 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678 * hw_6)));
             around = (_e161 + ((0.16915652 * hw_6) * _e169));
             float _e172 = around;
             float _e175 = big_b_1;
             float _e176 = start_3;
-            const float _e180 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678 * hw_6)));
+            const float _e180 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678 * hw_6)));
             around = (_e172 + ((0.16915652 * hw_6) * _e180));
             float _e183 = around;
             float _e186 = big_b_1;
             float _e187 = start_3;
-            const float _e191 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623 * hw_6)));
+            const float _e191 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623 * hw_6)));
             around = (_e183 + ((0.14959599 * hw_6) * _e191));
             float _e194 = around;
             float _e197 = big_b_1;
             float _e198 = start_3;
-            const float _e202 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623 * hw_6)));
+            const float _e202 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623 * hw_6)));
             around = (_e194 + ((0.14959599 * hw_6) * _e202));
             float _e205 = around;
             float _e208 = big_b_1;
             float _e209 = start_3;
-            const float _e213 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044 * hw_6)));
+            const float _e213 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044 * hw_6)));
             around = (_e205 + ((0.12462897 * hw_6) * _e213));
             float _e216 = around;
             float _e219 = big_b_1;
             float _e220 = start_3;
-            const float _e224 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044 * hw_6)));
+            const float _e224 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044 * hw_6)));
             around = (_e216 + ((0.12462897 * hw_6) * _e224));
             float _e227 = around;
             float _e230 = big_b_1;
             float _e231 = start_3;
-            const float _e235 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312 * hw_6)));
+            const float _e235 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312 * hw_6)));
             around = (_e227 + ((0.09515851 * hw_6) * _e235));
             float _e238 = around;
             float _e241 = big_b_1;
             float _e242 = start_3;
-            const float _e246 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312 * hw_6)));
+            const float _e246 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312 * hw_6)));
             around = (_e238 + ((0.09515851 * hw_6) * _e246));
             float _e249 = around;
             float _e252 = big_b_1;
             float _e253 = start_3;
-            const float _e257 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575 * hw_6)));
+            const float _e257 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575 * hw_6)));
             around = (_e249 + ((0.062253524 * hw_6) * _e257));
             float _e260 = around;
             float _e263 = big_b_1;
             float _e264 = start_3;
-            const float _e268 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575 * hw_6)));
+            const float _e268 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575 * hw_6)));
             around = (_e260 + ((0.062253524 * hw_6) * _e268));
             float _e271 = around;
             float _e274 = big_b_1;
             float _e275 = start_3;
-            const float _e279 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009 * hw_6)));
+            const float _e279 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009 * hw_6)));
             around = (_e271 + ((0.02715246 * hw_6) * _e279));
             float _e282 = around;
             float _e285 = big_b_1;
             float _e286 = start_3;
-            const float _e290 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009 * hw_6)));
+            const float _e290 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009 * hw_6)));
             around = (_e282 + ((0.02715246 * hw_6) * _e290));
             float _e293 = sum_13;
             float _e294 = wpsi;
@@ -8372,17 +8359,17 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_44, AirlightArea a_27, float3 x_26)
+float airlight_sphere(AirlightScene s_45, AirlightArea a_27, float3 x_26)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_8 = 0u;
+    bool local_185 = (bool)0;
+    bool local_186 = (bool)0;
+    bool local_187 = (bool)0;
     bool local_188 = (bool)0;
     bool local_189 = (bool)0;
-    bool local_190 = (bool)0;
-    bool local_191 = (bool)0;
-    bool local_192 = (bool)0;
 
     float3 v_11 = (a_27.c - x_26);
     const float _e5 = airlight_safe_length(v_11);
@@ -8413,36 +8400,36 @@ float airlight_sphere(AirlightScene s_44, AirlightArea a_27, float3 x_26)
             float c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_188 = (lobe_5.y > 0.0);
+                local_185 = (lobe_5.y > 0.0);
             } else {
-                local_188 = false;
+                local_185 = false;
             }
-            bool _e57 = local_188;
+            bool _e57 = local_185;
             if (_e57) {
-                local_189 = (lobe_5.y < (_e23 + _e23));
+                local_186 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_189 = false;
+                local_186 = false;
             }
-            bool _e64 = local_189;
+            bool _e64 = local_186;
             if (_e64) {
                 if (!((c_22 > cap_4.cos_a))) {
                     if ((c_22 > -(cap_4.cos_a))) {
                         const float _e77 = airlight_acos(c_22);
-                        local_192 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_192 = false;
+                        local_189 = false;
                     }
-                    bool _e84 = local_192;
-                    local_191 = _e84;
+                    bool _e84 = local_189;
+                    local_188 = _e84;
                 } else {
-                    local_191 = true;
+                    local_188 = true;
                 }
-                bool _e86 = local_191;
-                local_190 = _e86;
+                bool _e86 = local_188;
+                local_187 = _e86;
             } else {
-                local_190 = false;
+                local_187 = false;
             }
-            bool _e88 = local_190;
+            bool _e88 = local_187;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -8455,51 +8442,51 @@ float airlight_sphere(AirlightScene s_44, AirlightArea a_27, float3 x_26)
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        const float _e100 = airlight_sphere_about_lobe(s_44, a_27, cap_4, _e97, _e98, _e99);
+        const float _e100 = airlight_sphere_about_lobe(s_45, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    const float _e101 = airlight_sphere_cap(s_44, a_27, cap_4);
+    const float _e101 = airlight_sphere_cap(s_45, a_27, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_45, AirlightArea a_28, float3 x_27)
+float airlight_emitter_radiance(AirlightScene s_46, AirlightArea a_28, float3 x_27)
 {
-    switch(s_45.light_shape) {
+    switch(s_46.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_45, a_28, x_27);
+            const float _e4 = airlight_disc(s_46, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_45, a_28, x_27);
+            const float _e5 = airlight_parallelogram(s_46, a_28, x_27);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_45, a_28, x_27);
+            const float _e6 = airlight_sphere(s_46, a_28, x_27);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_46, AirlightArea a_29, float theta)
+float airlight_area_node(AirlightScene s_47, AirlightArea a_29, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
     float along = ((a_29.h_eff * _e3.y) / _e3.x);
     float t_12 = (a_29.x_h + along);
-    float fade = exp(min((-(s_46.sigma_t) * max(((a_29.x_h - s_46.t_min) + along), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_46, a_29, (s_46.origin + (t_12 * a_29.d)));
+    float fade = exp(min((-(s_47.sigma_t) * max(((a_29.x_h - s_47.t_min) + along), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_47, a_29, (s_47.origin + (t_12 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_47)
+AirlightResult airlight_area_light(AirlightScene s_48)
 {
     AirlightAdaptive st_1 = (AirlightAdaptive)0;
     uint step_2 = 0u;
     float k_8 = (float)0;
     float gauss_1 = (float)0;
     uint j_9 = (uint)0;
-    bool local_193 = (bool)0;
+    bool local_190 = (bool)0;
 
-    const AirlightArea _e1 = airlight_area(s_47);
+    const AirlightArea _e1 = airlight_area(s_48);
     if ((_e1.outcome == 1u)) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_8;
@@ -8555,13 +8542,13 @@ AirlightResult airlight_area_light(AirlightScene s_47)
                     uint _e59 = j_9;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_9;
-                        local_193 = (_e66 < 14u);
+                        local_190 = (_e66 < 14u);
                     } else {
-                        local_193 = false;
+                        local_190 = false;
                     }
-                    bool _e70 = local_193;
+                    bool _e70 = local_190;
                     float x_36 = (_e70 ? (c_23 - (hw_7 * node_3.x)) : (c_23 + (hw_7 * node_3.x)));
-                    const float _e72 = airlight_area_node(s_47, _e1, x_36);
+                    const float _e72 = airlight_area_node(s_48, _e1, x_36);
                     float _e73 = k_8;
                     k_8 = (_e73 + (node_3.y * _e72));
                     float _e77 = gauss_1;
@@ -8588,48 +8575,48 @@ AirlightResult airlight_area_light(AirlightScene s_47)
         const AirlightResult airlightresult_9 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_9;
     }
-    const AirlightResult airlightresult_10 = ConstructAirlightResult((s_47.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    const AirlightResult airlightresult_10 = ConstructAirlightResult((s_48.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
     return airlightresult_10;
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_48)
+AirlightResult airlight_in_scatter_area(AirlightScene s_49)
 {
-    bool local_194 = (bool)0;
-    bool local_195 = (bool)0;
+    bool local_191 = (bool)0;
+    bool local_192 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_48);
+    const bool _e1 = airlight_valid(s_49);
     if (!(!(_e1))) {
-        local_194 = (s_48.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_191 = (s_49.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_194 = true;
+        local_191 = true;
     }
-    bool _e10 = local_194;
+    bool _e10 = local_191;
     if (!(_e10)) {
-        local_195 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_192 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_195 = true;
+        local_192 = true;
     }
-    bool _e18 = local_195;
+    bool _e18 = local_192;
     if (_e18) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
     }
-    const AirlightResult _e22 = airlight_area_light(s_48);
+    const AirlightResult _e22 = airlight_area_light(s_49);
     const AirlightResult airlightresult_12 = _e22;
     return airlightresult_12;
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_196 = (bool)0;
+    bool local_193 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_196 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_196 = true;
+        local_193 = true;
     }
-    bool _e11 = local_196;
+    bool _e11 = local_193;
     if (_e11) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_13;
@@ -8641,18 +8628,18 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_3)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_197 = (bool)0;
+    bool local_194 = (bool)0;
     AirlightCanonical g_29 = (AirlightCanonical)0;
 
     AirlightScene p_8 = n_3.scene;
     const bool _e7 = airlight_vec_finite(p_8.light_position);
     if (_e7) {
         const bool _e11 = airlight_vec_finite(p_8.dir);
-        local_197 = _e11;
+        local_194 = _e11;
     } else {
-        local_197 = false;
+        local_194 = false;
     }
-    bool _e13 = local_197;
+    bool _e13 = local_194;
     if (_e13) {
         g_29 = n_3.canonical;
         if (!(n_3.exact)) {
@@ -8678,66 +8665,66 @@ AirlightResult airlight_point_integral(AirlightScene p_1)
     return airlightresult_16;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_49)
+AirlightResult airlight_in_scatter_point(AirlightScene s_50)
 {
-    bool local_198 = (bool)0;
-    bool local_199 = (bool)0;
+    bool local_195 = (bool)0;
+    bool local_196 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_49);
+    const bool _e1 = airlight_valid(s_50);
     if (!(!(_e1))) {
-        local_198 = (s_49.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_195 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_198 = true;
+        local_195 = true;
     }
-    bool _e10 = local_198;
+    bool _e10 = local_195;
     if (!(_e10)) {
-        local_199 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_196 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_199 = true;
+        local_196 = true;
     }
-    bool _e18 = local_199;
+    bool _e18 = local_196;
     if (_e18) {
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
     }
-    const AirlightResult _e22 = airlight_point_integral(s_49);
+    const AirlightResult _e22 = airlight_point_integral(s_50);
     const AirlightResult airlightresult_18 = _e22;
     return airlightresult_18;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_50)
+AirlightResult airlight_in_scatter_route(AirlightScene s_51)
 {
-    bool local_200 = (bool)0;
-    bool local_201 = (bool)0;
+    bool local_197 = (bool)0;
+    bool local_198 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_50);
+    const bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_200 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_197 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_200 = true;
+        local_197 = true;
     }
-    bool _e10 = local_200;
+    bool _e10 = local_197;
     if (!(_e10)) {
-        local_201 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_198 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_201 = true;
+        local_198 = true;
     }
-    bool _e18 = local_201;
+    bool _e18 = local_198;
     if (_e18) {
         const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_19;
     }
-    const AirlightCanonical _e22 = airlight_canonical(s_50);
-    const AirlightCanonical _e23 = airlight_refined(s_50, _e22);
-    const AirlightResult _e24 = airlight_limits(s_50, _e23);
+    const AirlightCanonical _e22 = airlight_canonical(s_51);
+    const AirlightCanonical _e23 = airlight_refined(s_51, _e22);
+    const AirlightResult _e24 = airlight_limits(s_51, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult _e28 = airlight_overflowed(_e24);
         const AirlightResult airlightresult_20 = _e28;
         return airlightresult_20;
     }
-    const bool _e29 = airlight_isotropic_scene(s_50);
+    const bool _e29 = airlight_isotropic_scene(s_51);
     if (!(_e29)) {
-        const float2 _e31 = airlight_angle_route(s_50, _e23);
+        const float2 _e31 = airlight_angle_route(s_51, _e23);
         if ((_e31.x > 0.5)) {
             const AirlightResult _e40 = airlight_overflowed(ConstructAirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             const AirlightResult airlightresult_21 = _e40;
@@ -8748,27 +8735,27 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_50)
     return airlightresult_22;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_51)
+AirlightResult airlight_in_scatter(AirlightScene s_52)
 {
     AirlightAdaptive st_2 = (AirlightAdaptive)0;
     uint step_3 = 0u;
     float k_9 = (float)0;
     float gauss_2 = (float)0;
     uint j_10 = (uint)0;
-    bool local_202 = (bool)0;
+    bool local_199 = (bool)0;
     float f = (float)0;
-    bool local_203 = (bool)0;
+    bool local_200 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_51);
+    const bool _e1 = airlight_valid(s_52);
     if (!(_e1)) {
         const AirlightResult airlightresult_23 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_23;
     }
-    if ((s_51.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_52.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         const AirlightResult airlightresult_24 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_24;
     }
-    const AirlightOuter _e12 = airlight_outer(s_51);
+    const AirlightOuter _e12 = airlight_outer(s_52);
     if ((_e12.outcome == 1u)) {
         const AirlightResult airlightresult_25 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_25;
@@ -8827,13 +8814,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_51)
                     uint _e74 = j_10;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_10;
-                        local_202 = (_e81 < 6u);
+                        local_199 = (_e81 < 6u);
                     } else {
-                        local_202 = false;
+                        local_199 = false;
                     }
-                    bool _e85 = local_202;
+                    bool _e85 = local_199;
                     float w_11 = (_e85 ? (c_24 - (hw_8 * node_4.x)) : (c_24 + (hw_8 * node_4.x)));
-                    const AirlightNode _e87 = airlight_outer_node(s_51, _e12, w_11);
+                    const AirlightNode _e87 = airlight_outer_node(s_52, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         const AirlightResult _e93 = airlight_node_integral(_e87);
@@ -8841,12 +8828,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_51)
                             const AirlightResult airlightresult_27 = _e93;
                             return airlightresult_27;
                         }
-                        if ((s_51.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_203 = (s_51.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_52.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_200 = (s_52.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_203 = false;
+                            local_200 = false;
                         }
-                        bool _e106 = local_203;
+                        bool _e106 = local_200;
                         if (_e106) {
                             const AirlightResult airlightresult_28 = _e93;
                             return airlightresult_28;

@@ -321,8 +321,8 @@ metal::float2 airlight_cos_sin(
 ) {
     float z_9 = x * x;
     float c_7 = 1.0 + (z_9 * (-0.5 + (z_9 * (0.041666668 + (z_9 * (-0.0013888889 + (z_9 * (0.000024801588 + (z_9 * (-0.0000002755732 + (z_9 * (0.0000000020876756 + (z_9 * (-0.000000000011470745 + (z_9 * 0.000000000000047794773)))))))))))))));
-    float s_26 = 1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (0.0000027557319 + (z_9 * (-0.000000025052108 + (z_9 * (0.00000000016059044 + (z_9 * (-0.00000000000076471636 + (z_9 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_7, s_26 * x);
+    float s_27 = 1.0 + (z_9 * (-0.16666667 + (z_9 * (0.008333334 + (z_9 * (-0.0001984127 + (z_9 * (0.0000027557319 + (z_9 * (-0.000000025052108 + (z_9 * (0.00000000016059044 + (z_9 * (-0.00000000000076471636 + (z_9 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_7, s_27 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -384,10 +384,10 @@ float airlight_log1p(
     if (_e9) {
         return metal::log(1.0 + x_2);
     }
-    float s_27 = x_2 / (2.0 + x_2);
-    float z_11 = s_27 * s_27;
+    float s_28 = x_2 / (2.0 + x_2);
+    float z_11 = s_28 * s_28;
     float sum_7 = (((((((((((((((z_11 / 17.0) + 0.06666667) * z_11) + 0.07692308) * z_11) + 0.09090909) * z_11) + 0.11111111) * z_11) + 0.14285715) * z_11) + 0.2) * z_11) + 0.33333334) * z_11) + 1.0;
-    return (2.0 * s_27) * sum_7;
+    return (2.0 * s_28) * sum_7;
 }
 
 bool airlight_is_finite(
@@ -3764,7 +3764,7 @@ AirlightResult airlight_limits(
     return AirlightResult {0.0, 3u};
 }
 
-bool airlight_isotropic_scene(
+bool airlight_isotropic_phase(
     AirlightScene s_14
 ) {
     bool local_50 = {};
@@ -3773,72 +3773,100 @@ bool airlight_isotropic_scene(
     bool local_53 = {};
     bool local_54 = {};
     bool local_55 = {};
-    if (!((s_14.light_kind == AIRLIGHT_LIGHT_OMNI))) {
-        if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_51 = s_14.light_param_a == 0.0;
+    if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
+        if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
+            local_51 = s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK;
         } else {
-            local_51 = false;
+            local_51 = true;
         }
-        bool _e16 = local_51;
-        local_50 = _e16;
+        bool _e17 = local_51;
+        if (_e17) {
+            local_52 = s_14.phase_param_a == 0.0;
+        } else {
+            local_52 = false;
+        }
+        bool _e24 = local_52;
+        local_50 = _e24;
     } else {
         local_50 = true;
     }
-    bool _e18 = local_50;
-    if (_e18) {
-        if (!((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC))) {
-            if (!((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN))) {
-                local_54 = s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK;
-            } else {
-                local_54 = true;
-            }
-            bool _e37 = local_54;
-            if (_e37) {
-                local_55 = s_14.phase_param_a == 0.0;
-            } else {
-                local_55 = false;
-            }
-            bool _e44 = local_55;
-            local_53 = _e44;
+    bool _e26 = local_50;
+    if (!(_e26)) {
+        if (s_14.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
+            local_54 = s_14.phase_param_a == 0.0;
         } else {
-            local_53 = true;
+            local_54 = false;
         }
-        bool _e46 = local_53;
-        local_52 = _e46;
+        bool _e39 = local_54;
+        if (_e39) {
+            local_55 = s_14.phase_param_b == 0.0;
+        } else {
+            local_55 = false;
+        }
+        bool _e46 = local_55;
+        local_53 = _e46;
     } else {
-        local_52 = false;
+        local_53 = true;
     }
-    bool _e48 = local_52;
+    bool _e48 = local_53;
     return _e48;
 }
 
-AirlightResult airlight_in_scatter_canonical(
-    AirlightScene s_15,
-    AirlightCanonical g_18
+bool airlight_isotropic_scene(
+    AirlightScene s_15
 ) {
     bool local_56 = {};
     bool local_57 = {};
     bool local_58 = {};
+    if (!((s_15.light_kind == AIRLIGHT_LIGHT_OMNI))) {
+        if (s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_57 = s_15.light_param_a == 0.0;
+        } else {
+            local_57 = false;
+        }
+        bool _e16 = local_57;
+        local_56 = _e16;
+    } else {
+        local_56 = true;
+    }
+    bool _e18 = local_56;
+    if (_e18) {
+        bool _e21 = airlight_isotropic_phase(s_15);
+        local_58 = _e21;
+    } else {
+        local_58 = false;
+    }
+    bool _e23 = local_58;
+    return _e23;
+}
+
+AirlightResult airlight_in_scatter_canonical(
+    AirlightScene s_16,
+    AirlightCanonical g_18
+) {
+    bool local_59 = {};
+    bool local_60 = {};
+    bool local_61 = {};
     float total_3 = 0.0;
     float f_max_7 = 0.0;
     bool behind_cut = false;
     float t_end = {};
-    bool local_59 = {};
-    AirlightHalf half_13 = {};
-    bool local_60 = {};
-    bool local_61 = {};
     bool local_62 = {};
+    AirlightHalf half_13 = {};
+    bool local_63 = {};
+    bool local_64 = {};
+    bool local_65 = {};
     float y_lo = 0.0;
     float dv_3 = 0.0;
     float dy = {};
     bool infinite_2 = true;
-    bool local_63 = {};
-    bool local_64 = {};
-    AirlightHalf half_14 = {};
-    bool local_65 = {};
     bool local_66 = {};
     bool local_67 = {};
-    AirlightResult _e2 = airlight_limits(s_15, g_18);
+    AirlightHalf half_14 = {};
+    bool local_68 = {};
+    bool local_69 = {};
+    bool local_70 = {};
+    AirlightResult _e2 = airlight_limits(s_16, g_18);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
         return _e2;
     }
@@ -3846,32 +3874,32 @@ AirlightResult airlight_in_scatter_canonical(
     float t1_1 = g_18.t_hi;
     float h_6 = g_18.h;
     float x_h_1 = g_18.x_h;
-    float big_h_8 = s_15.sigma_t * h_6;
-    bool _e12 = airlight_isotropic_scene(s_15);
+    float big_h_8 = s_16.sigma_t * h_6;
+    bool _e12 = airlight_isotropic_scene(s_16);
     if (_e12) {
-        local_56 = t0_1 < x_h_1;
+        local_59 = t0_1 < x_h_1;
     } else {
-        local_56 = false;
+        local_59 = false;
     }
-    bool _e17 = local_56;
+    bool _e17 = local_59;
     if (_e17) {
         if (!(g_18.t_hi_infinite)) {
-            local_58 = x_h_1 < t1_1;
+            local_61 = x_h_1 < t1_1;
         } else {
-            local_58 = true;
+            local_61 = true;
         }
-        bool _e26 = local_58;
-        local_57 = _e26;
+        bool _e26 = local_61;
+        local_60 = _e26;
     } else {
-        local_57 = false;
+        local_60 = false;
     }
-    bool _e28 = local_57;
+    bool _e28 = local_60;
     if (_e28) {
-        float _e29 = airlight_whole_line(s_15, g_18, big_h_8);
+        float _e29 = airlight_whole_line(s_16, g_18, big_h_8);
         return AirlightResult {metal::max(_e29, 0.0), AIRLIGHT_STATUS_OK};
     }
     if (!(_e12)) {
-        metal::float2 _e35 = airlight_angle_route(s_15, g_18);
+        metal::float2 _e35 = airlight_angle_route(s_16, g_18);
         if (_e35.x > 0.5) {
             return AirlightResult {metal::max(_e35.y, 0.0), AIRLIGHT_STATUS_OK};
         }
@@ -3881,11 +3909,11 @@ AirlightResult airlight_in_scatter_canonical(
         float a_s_1 = (x_h_1 - t0_1) / h_6;
         t_end = x_h_1;
         if (!(g_18.t_hi_infinite)) {
-            local_59 = t1_1 < x_h_1;
+            local_62 = t1_1 < x_h_1;
         } else {
-            local_59 = false;
+            local_62 = false;
         }
-        bool _e61 = local_59;
+        bool _e61 = local_62;
         if (_e61) {
             t_end = t1_1;
         }
@@ -3901,11 +3929,11 @@ AirlightResult airlight_in_scatter_canonical(
         half_13 = AirlightHalf {false, {}, _e82, _e67, _e68, dy_1, dy_1, false};
         if (cut_1) {
             float _e89 = half_13.big_h;
-            local_60 = _e89 > 0.0;
+            local_63 = _e89 > 0.0;
         } else {
-            local_60 = false;
+            local_63 = false;
         }
-        bool _e93 = local_60;
+        bool _e93 = local_63;
         if (_e93) {
             float _e95 = half_13.big_h;
             float _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -3916,24 +3944,24 @@ AirlightResult airlight_in_scatter_canonical(
             }
         }
         AirlightHalf _e106 = half_13;
-        float _e107 = airlight_half(s_15, g_18, -1.0, _e106, _e12, f_max_7);
+        float _e107 = airlight_half(s_16, g_18, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        float _e112 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, big_h_8 * _e65, _e107);
+        float _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, big_h_8 * _e65, _e107);
         total_3 = _e108 + _e112;
     }
     if (!(g_18.t_hi_infinite)) {
-        local_61 = t1_1 > x_h_1;
+        local_64 = t1_1 > x_h_1;
     } else {
-        local_61 = true;
+        local_64 = true;
     }
-    bool _e120 = local_61;
+    bool _e120 = local_64;
     if (_e120) {
         bool _e123 = behind_cut;
-        local_62 = !(_e123);
+        local_65 = !(_e123);
     } else {
-        local_62 = false;
+        local_65 = false;
     }
-    bool _e126 = local_62;
+    bool _e126 = local_65;
     if (_e126) {
         float t_start = metal::max(t0_1, x_h_1);
         float a_s_2 = (t_start - x_h_1) / h_6;
@@ -3943,22 +3971,22 @@ AirlightResult airlight_in_scatter_canonical(
         float a_e_1 = (t1_1 - x_h_1) / h_6;
         if (!(g_18.t_hi_infinite)) {
             bool _e145 = airlight_is_finite(a_e_1);
-            local_63 = _e145;
+            local_66 = _e145;
         } else {
-            local_63 = false;
+            local_66 = false;
         }
-        bool _e147 = local_63;
+        bool _e147 = local_66;
         if (_e147) {
             float _e148 = airlight_bounded(a_e_1);
             float _e152 = airlight_hypot_one(a_e_1);
             float dv_end_1 = ((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152)));
             if (_e148 > 0.0) {
                 bool _e162 = airlight_is_finite(dv_end_1);
-                local_64 = _e162;
+                local_67 = _e162;
             } else {
-                local_64 = false;
+                local_67 = false;
             }
-            bool _e164 = local_64;
+            bool _e164 = local_67;
             if (_e164) {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3978,11 +4006,11 @@ AirlightResult airlight_in_scatter_canonical(
         half_14 = AirlightHalf {true, {}, _e173, _e174, _e131, _e175, _e176, _e177};
         if (cut_1) {
             float _e183 = half_14.big_h;
-            local_65 = _e183 > 0.0;
+            local_68 = _e183 > 0.0;
         } else {
-            local_65 = false;
+            local_68 = false;
         }
-        bool _e187 = local_65;
+        bool _e187 = local_68;
         if (_e187) {
             float _e189 = half_14.big_h;
             float _e192 = dv_3;
@@ -3991,20 +4019,20 @@ AirlightResult airlight_in_scatter_canonical(
             bool _e197 = infinite_2;
             if (!(_e197)) {
                 float _e201 = dv_3;
-                local_66 = _e196 < _e201;
+                local_69 = _e196 < _e201;
             } else {
-                local_66 = true;
+                local_69 = true;
             }
-            bool _e204 = local_66;
+            bool _e204 = local_69;
             if (_e204) {
                 float cut_y_lo = _e131 / (1.0 + (_e131 * _e196));
                 if (cut_y_lo > 0.0) {
                     bool _e213 = airlight_is_finite(_e196);
-                    local_67 = _e213;
+                    local_70 = _e213;
                 } else {
-                    local_67 = false;
+                    local_70 = false;
                 }
-                bool _e215 = local_67;
+                bool _e215 = local_70;
                 if (_e215) {
                     float _e218 = half_14.big_h;
                     half_14 = AirlightHalf {true, {}, _e218, cut_y_lo, _e131, (_e196 * cut_y_lo) * _e131, _e196, false};
@@ -4012,9 +4040,9 @@ AirlightResult airlight_in_scatter_canonical(
             }
         }
         AirlightHalf _e224 = half_14;
-        float _e225 = airlight_half(s_15, g_18, 1.0, _e224, _e12, f_max_7);
+        float _e225 = airlight_half(s_16, g_18, 1.0, _e224, _e12, f_max_7);
         float _e226 = total_3;
-        float _e234 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, (s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130), _e225);
+        float _e234 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130), _e225);
         total_3 = _e226 + _e234;
     }
     float _e236 = total_3;
@@ -4024,23 +4052,23 @@ AirlightResult airlight_in_scatter_canonical(
 bool airlight_vec_finite(
     metal::float3 v
 ) {
-    bool local_68 = {};
-    bool local_69 = {};
+    bool local_71 = {};
+    bool local_72 = {};
     bool _e2 = airlight_is_finite(v.x);
     if (_e2) {
         bool _e6 = airlight_is_finite(v.y);
-        local_68 = _e6;
+        local_71 = _e6;
     } else {
-        local_68 = false;
+        local_71 = false;
     }
-    bool _e8 = local_68;
+    bool _e8 = local_71;
     if (_e8) {
         bool _e12 = airlight_is_finite(v.z);
-        local_69 = _e12;
+        local_72 = _e12;
     } else {
-        local_69 = false;
+        local_72 = false;
     }
-    bool _e14 = local_69;
+    bool _e14 = local_72;
     return _e14;
 }
 
@@ -4057,15 +4085,15 @@ float airlight_safe_length(
 bool airlight_normalisable(
     metal::float3 v_2
 ) {
-    bool local_70 = {};
+    bool local_73 = {};
     float _e1 = airlight_safe_length(v_2);
     if (_e1 > 0.0) {
         bool _e6 = airlight_is_finite(_e1);
-        local_70 = _e6;
+        local_73 = _e6;
     } else {
-        local_70 = false;
+        local_73 = false;
     }
-    bool _e8 = local_70;
+    bool _e8 = local_73;
     return _e8;
 }
 
@@ -4078,11 +4106,8 @@ metal::float3 airlight_normalize(
 }
 
 bool airlight_valid(
-    AirlightScene s_16
+    AirlightScene s_17
 ) {
-    bool local_71 = {};
-    bool local_72 = {};
-    bool local_73 = {};
     bool local_74 = {};
     bool local_75 = {};
     bool local_76 = {};
@@ -4090,10 +4115,10 @@ bool airlight_valid(
     bool local_78 = {};
     bool local_79 = {};
     bool local_80 = {};
-    bool ok = {};
     bool local_81 = {};
     bool local_82 = {};
     bool local_83 = {};
+    bool ok = {};
     bool local_84 = {};
     bool local_85 = {};
     bool local_86 = {};
@@ -4133,374 +4158,377 @@ bool airlight_valid(
     bool local_120 = {};
     bool local_121 = {};
     bool local_122 = {};
-    bool _e2 = airlight_vec_finite(s_16.origin);
+    bool local_123 = {};
+    bool local_124 = {};
+    bool local_125 = {};
+    bool _e2 = airlight_vec_finite(s_17.origin);
     if (_e2) {
-        bool _e6 = airlight_vec_finite(s_16.dir);
-        local_71 = _e6;
-    } else {
-        local_71 = false;
-    }
-    bool _e8 = local_71;
-    if (_e8) {
-        bool _e12 = airlight_normalisable(s_16.dir);
-        local_72 = _e12;
-    } else {
-        local_72 = false;
-    }
-    bool _e14 = local_72;
-    if (_e14) {
-        bool _e18 = airlight_is_finite(s_16.t_min);
-        local_73 = _e18;
-    } else {
-        local_73 = false;
-    }
-    bool _e20 = local_73;
-    if (_e20) {
-        bool _e24 = airlight_vec_finite(s_16.light_position);
-        local_74 = _e24;
+        bool _e6 = airlight_vec_finite(s_17.dir);
+        local_74 = _e6;
     } else {
         local_74 = false;
     }
-    bool _e26 = local_74;
-    if (_e26) {
-        bool _e30 = airlight_is_finite(s_16.intensity);
-        local_75 = _e30;
+    bool _e8 = local_74;
+    if (_e8) {
+        bool _e12 = airlight_normalisable(s_17.dir);
+        local_75 = _e12;
     } else {
         local_75 = false;
     }
-    bool _e32 = local_75;
-    if (_e32) {
-        local_76 = s_16.intensity >= 0.0;
+    bool _e14 = local_75;
+    if (_e14) {
+        bool _e18 = airlight_is_finite(s_17.t_min);
+        local_76 = _e18;
     } else {
         local_76 = false;
     }
-    bool _e39 = local_76;
-    if (_e39) {
-        bool _e43 = airlight_is_finite(s_16.sigma_s);
-        local_77 = _e43;
+    bool _e20 = local_76;
+    if (_e20) {
+        bool _e24 = airlight_vec_finite(s_17.light_position);
+        local_77 = _e24;
     } else {
         local_77 = false;
     }
-    bool _e45 = local_77;
-    if (_e45) {
-        local_78 = s_16.sigma_s >= 0.0;
+    bool _e26 = local_77;
+    if (_e26) {
+        bool _e30 = airlight_is_finite(s_17.intensity);
+        local_78 = _e30;
     } else {
         local_78 = false;
     }
-    bool _e52 = local_78;
-    if (_e52) {
-        bool _e56 = airlight_is_finite(s_16.sigma_t);
-        local_79 = _e56;
+    bool _e32 = local_78;
+    if (_e32) {
+        local_79 = s_17.intensity >= 0.0;
     } else {
         local_79 = false;
     }
-    bool _e58 = local_79;
-    if (_e58) {
-        local_80 = s_16.sigma_t >= 0.0;
+    bool _e39 = local_79;
+    if (_e39) {
+        bool _e43 = airlight_is_finite(s_17.sigma_s);
+        local_80 = _e43;
     } else {
         local_80 = false;
     }
-    bool _e65 = local_80;
+    bool _e45 = local_80;
+    if (_e45) {
+        local_81 = s_17.sigma_s >= 0.0;
+    } else {
+        local_81 = false;
+    }
+    bool _e52 = local_81;
+    if (_e52) {
+        bool _e56 = airlight_is_finite(s_17.sigma_t);
+        local_82 = _e56;
+    } else {
+        local_82 = false;
+    }
+    bool _e58 = local_82;
+    if (_e58) {
+        local_83 = s_17.sigma_t >= 0.0;
+    } else {
+        local_83 = false;
+    }
+    bool _e65 = local_83;
     ok = _e65;
-    if ((s_16.flags & 1u) == 0u) {
+    if ((s_17.flags & 1u) == 0u) {
         bool _e72 = ok;
         if (_e72) {
-            bool _e76 = airlight_is_finite(s_16.t_max);
-            local_81 = _e76;
-        } else {
-            local_81 = false;
-        }
-        bool _e78 = local_81;
-        if (_e78) {
-            local_82 = s_16.t_min <= s_16.t_max;
-        } else {
-            local_82 = false;
-        }
-        bool _e85 = local_82;
-        ok = _e85;
-    }
-    if (s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        bool _e89 = ok;
-        if (_e89) {
-            bool _e93 = airlight_vec_finite(s_16.light_end);
-            local_83 = _e93;
-        } else {
-            local_83 = false;
-        }
-        bool _e95 = local_83;
-        ok = _e95;
-    } else {
-        if (s_16.light_shape >= AIRLIGHT_SHAPE_DISC) {
-            local_84 = s_16.light_shape <= AIRLIGHT_SHAPE_SPHERE;
+            bool _e76 = airlight_is_finite(s_17.t_max);
+            local_84 = _e76;
         } else {
             local_84 = false;
         }
-        bool _e105 = local_84;
+        bool _e78 = local_84;
+        if (_e78) {
+            local_85 = s_17.t_min <= s_17.t_max;
+        } else {
+            local_85 = false;
+        }
+        bool _e85 = local_85;
+        ok = _e85;
+    }
+    if (s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        bool _e89 = ok;
+        if (_e89) {
+            bool _e93 = airlight_vec_finite(s_17.light_end);
+            local_86 = _e93;
+        } else {
+            local_86 = false;
+        }
+        bool _e95 = local_86;
+        ok = _e95;
+    } else {
+        if (s_17.light_shape >= AIRLIGHT_SHAPE_DISC) {
+            local_87 = s_17.light_shape <= AIRLIGHT_SHAPE_SPHERE;
+        } else {
+            local_87 = false;
+        }
+        bool _e105 = local_87;
         if (_e105) {
             bool _e106 = ok;
             if (_e106) {
-                local_85 = s_16.light_kind == AIRLIGHT_LIGHT_OMNI;
-            } else {
-                local_85 = false;
-            }
-            bool _e113 = local_85;
-            if (_e113) {
-                local_86 = s_16.light_param_b >= 1.0;
-            } else {
-                local_86 = false;
-            }
-            bool _e120 = local_86;
-            if (_e120) {
-                local_87 = s_16.light_param_b <= 1024.0;
-            } else {
-                local_87 = false;
-            }
-            bool _e127 = local_87;
-            if (_e127) {
-                local_88 = metal::fract(s_16.light_param_b) == 0.0;
+                local_88 = s_17.light_kind == AIRLIGHT_LIGHT_OMNI;
             } else {
                 local_88 = false;
             }
-            bool _e135 = local_88;
+            bool _e113 = local_88;
+            if (_e113) {
+                local_89 = s_17.light_param_b >= 1.0;
+            } else {
+                local_89 = false;
+            }
+            bool _e120 = local_89;
+            if (_e120) {
+                local_90 = s_17.light_param_b <= 1024.0;
+            } else {
+                local_90 = false;
+            }
+            bool _e127 = local_90;
+            if (_e127) {
+                local_91 = metal::fract(s_17.light_param_b) == 0.0;
+            } else {
+                local_91 = false;
+            }
+            bool _e135 = local_91;
             ok = _e135;
-            if (s_16.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+            if (s_17.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
                 bool _e139 = ok;
                 if (_e139) {
-                    bool _e143 = airlight_vec_finite(s_16.light_axis);
-                    local_89 = _e143;
-                } else {
-                    local_89 = false;
-                }
-                bool _e145 = local_89;
-                if (_e145) {
-                    bool _e149 = airlight_normalisable(s_16.light_axis);
-                    local_90 = _e149;
-                } else {
-                    local_90 = false;
-                }
-                bool _e151 = local_90;
-                if (_e151) {
-                    bool _e155 = airlight_vec_finite(s_16.light_end);
-                    local_91 = _e155;
-                } else {
-                    local_91 = false;
-                }
-                bool _e157 = local_91;
-                if (_e157) {
-                    bool _e161 = airlight_normalisable(s_16.light_end);
-                    local_92 = _e161;
+                    bool _e143 = airlight_vec_finite(s_17.light_axis);
+                    local_92 = _e143;
                 } else {
                     local_92 = false;
                 }
-                bool _e163 = local_92;
-                if (_e163) {
-                    metal::float3 _e167 = airlight_normalize(s_16.light_axis);
-                    metal::float3 _e169 = airlight_normalize(s_16.light_end);
-                    float _e171 = airlight_safe_length(metal::cross(_e167, _e169));
-                    local_93 = _e171 > AIRLIGHT_FLT_EPS;
+                bool _e145 = local_92;
+                if (_e145) {
+                    bool _e149 = airlight_normalisable(s_17.light_axis);
+                    local_93 = _e149;
                 } else {
                     local_93 = false;
                 }
-                bool _e175 = local_93;
+                bool _e151 = local_93;
+                if (_e151) {
+                    bool _e155 = airlight_vec_finite(s_17.light_end);
+                    local_94 = _e155;
+                } else {
+                    local_94 = false;
+                }
+                bool _e157 = local_94;
+                if (_e157) {
+                    bool _e161 = airlight_normalisable(s_17.light_end);
+                    local_95 = _e161;
+                } else {
+                    local_95 = false;
+                }
+                bool _e163 = local_95;
+                if (_e163) {
+                    metal::float3 _e167 = airlight_normalize(s_17.light_axis);
+                    metal::float3 _e169 = airlight_normalize(s_17.light_end);
+                    float _e171 = airlight_safe_length(metal::cross(_e167, _e169));
+                    local_96 = _e171 > AIRLIGHT_FLT_EPS;
+                } else {
+                    local_96 = false;
+                }
+                bool _e175 = local_96;
                 ok = _e175;
             } else {
                 bool _e176 = ok;
                 if (_e176) {
-                    bool _e180 = airlight_is_finite(s_16.light_param_a);
-                    local_94 = _e180;
+                    bool _e180 = airlight_is_finite(s_17.light_param_a);
+                    local_97 = _e180;
                 } else {
-                    local_94 = false;
+                    local_97 = false;
                 }
-                bool _e182 = local_94;
+                bool _e182 = local_97;
                 if (_e182) {
-                    local_95 = s_16.light_param_a >= 0.0;
+                    local_98 = s_17.light_param_a >= 0.0;
                 } else {
-                    local_95 = false;
+                    local_98 = false;
                 }
-                bool _e189 = local_95;
+                bool _e189 = local_98;
                 ok = _e189;
-                if (s_16.light_shape == AIRLIGHT_SHAPE_DISC) {
+                if (s_17.light_shape == AIRLIGHT_SHAPE_DISC) {
                     bool _e193 = ok;
                     if (_e193) {
-                        bool _e197 = airlight_vec_finite(s_16.light_axis);
-                        local_96 = _e197;
+                        bool _e197 = airlight_vec_finite(s_17.light_axis);
+                        local_99 = _e197;
                     } else {
-                        local_96 = false;
+                        local_99 = false;
                     }
-                    bool _e199 = local_96;
+                    bool _e199 = local_99;
                     if (_e199) {
-                        bool _e203 = airlight_normalisable(s_16.light_axis);
-                        local_97 = _e203;
+                        bool _e203 = airlight_normalisable(s_17.light_axis);
+                        local_100 = _e203;
                     } else {
-                        local_97 = false;
+                        local_100 = false;
                     }
-                    bool _e205 = local_97;
+                    bool _e205 = local_100;
                     ok = _e205;
                 }
             }
         } else {
-            if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
+            if (s_17.light_shape != AIRLIGHT_SHAPE_POINT) {
                 ok = false;
             }
         }
     }
-    if (!((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
-        local_98 = s_16.surface_kind == AIRLIGHT_SURFACE_PHONG;
+    if (!((s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT))) {
+        local_101 = s_17.surface_kind == AIRLIGHT_SURFACE_PHONG;
     } else {
-        local_98 = true;
+        local_101 = true;
     }
-    bool _e220 = local_98;
+    bool _e220 = local_101;
     if (_e220) {
         bool _e221 = ok;
         if (_e221) {
-            bool _e225 = airlight_is_finite(s_16.brdf_scale);
-            local_99 = _e225;
-        } else {
-            local_99 = false;
-        }
-        bool _e227 = local_99;
-        if (_e227) {
-            local_100 = s_16.brdf_scale >= 0.0;
-        } else {
-            local_100 = false;
-        }
-        bool _e234 = local_100;
-        if (_e234) {
-            local_101 = s_16.light_kind == AIRLIGHT_LIGHT_OMNI;
-        } else {
-            local_101 = false;
-        }
-        bool _e241 = local_101;
-        if (_e241) {
-            local_102 = s_16.light_shape == AIRLIGHT_SHAPE_POINT;
+            bool _e225 = airlight_is_finite(s_17.brdf_scale);
+            local_102 = _e225;
         } else {
             local_102 = false;
         }
-        bool _e248 = local_102;
-        if (_e248) {
-            float _e254 = airlight_safe_length(s_16.light_position - s_16.origin);
-            bool _e255 = airlight_is_finite(_e254);
-            local_103 = _e255;
+        bool _e227 = local_102;
+        if (_e227) {
+            local_103 = s_17.brdf_scale >= 0.0;
         } else {
             local_103 = false;
         }
-        bool _e257 = local_103;
+        bool _e234 = local_103;
+        if (_e234) {
+            local_104 = s_17.light_kind == AIRLIGHT_LIGHT_OMNI;
+        } else {
+            local_104 = false;
+        }
+        bool _e241 = local_104;
+        if (_e241) {
+            local_105 = s_17.light_shape == AIRLIGHT_SHAPE_POINT;
+        } else {
+            local_105 = false;
+        }
+        bool _e248 = local_105;
+        if (_e248) {
+            float _e254 = airlight_safe_length(s_17.light_position - s_17.origin);
+            bool _e255 = airlight_is_finite(_e254);
+            local_106 = _e255;
+        } else {
+            local_106 = false;
+        }
+        bool _e257 = local_106;
         ok = _e257;
-        if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        if (s_17.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             bool _e261 = ok;
             if (_e261) {
-                bool _e265 = airlight_is_finite(s_16.brdf_exponent);
-                local_104 = _e265;
-            } else {
-                local_104 = false;
-            }
-            bool _e267 = local_104;
-            if (_e267) {
-                local_105 = s_16.brdf_exponent >= 0.0;
-            } else {
-                local_105 = false;
-            }
-            bool _e274 = local_105;
-            if (_e274) {
-                bool _e278 = airlight_vec_finite(s_16.brdf_view);
-                local_106 = _e278;
-            } else {
-                local_106 = false;
-            }
-            bool _e280 = local_106;
-            if (_e280) {
-                bool _e284 = airlight_normalisable(s_16.brdf_view);
-                local_107 = _e284;
+                bool _e265 = airlight_is_finite(s_17.brdf_exponent);
+                local_107 = _e265;
             } else {
                 local_107 = false;
             }
-            bool _e286 = local_107;
+            bool _e267 = local_107;
+            if (_e267) {
+                local_108 = s_17.brdf_exponent >= 0.0;
+            } else {
+                local_108 = false;
+            }
+            bool _e274 = local_108;
+            if (_e274) {
+                bool _e278 = airlight_vec_finite(s_17.brdf_view);
+                local_109 = _e278;
+            } else {
+                local_109 = false;
+            }
+            bool _e280 = local_109;
+            if (_e280) {
+                bool _e284 = airlight_normalisable(s_17.brdf_view);
+                local_110 = _e284;
+            } else {
+                local_110 = false;
+            }
+            bool _e286 = local_110;
             ok = _e286;
         }
     } else {
-        if (s_16.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_17.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         bool _e294 = ok;
         if (_e294) {
-            bool _e298 = airlight_vec_finite(s_16.light_axis);
-            local_108 = _e298;
-        } else {
-            local_108 = false;
-        }
-        bool _e300 = local_108;
-        if (_e300) {
-            bool _e304 = airlight_normalisable(s_16.light_axis);
-            local_109 = _e304;
-        } else {
-            local_109 = false;
-        }
-        bool _e306 = local_109;
-        if (_e306) {
-            local_110 = s_16.light_param_a >= 0.0;
-        } else {
-            local_110 = false;
-        }
-        bool _e313 = local_110;
-        if (_e313) {
-            local_111 = s_16.light_param_a <= 1024.0;
+            bool _e298 = airlight_vec_finite(s_17.light_axis);
+            local_111 = _e298;
         } else {
             local_111 = false;
         }
-        bool _e320 = local_111;
-        if (_e320) {
-            local_112 = metal::fract(s_16.light_param_a * 0.5) == 0.0;
+        bool _e300 = local_111;
+        if (_e300) {
+            bool _e304 = airlight_normalisable(s_17.light_axis);
+            local_112 = _e304;
         } else {
             local_112 = false;
         }
-        bool _e330 = local_112;
+        bool _e306 = local_112;
+        if (_e306) {
+            local_113 = s_17.light_param_a >= 0.0;
+        } else {
+            local_113 = false;
+        }
+        bool _e313 = local_113;
+        if (_e313) {
+            local_114 = s_17.light_param_a <= 1024.0;
+        } else {
+            local_114 = false;
+        }
+        bool _e320 = local_114;
+        if (_e320) {
+            local_115 = metal::fract(s_17.light_param_a * 0.5) == 0.0;
+        } else {
+            local_115 = false;
+        }
+        bool _e330 = local_115;
         ok = _e330;
     } else {
-        if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_17.light_kind == AIRLIGHT_LIGHT_SPOT) {
             bool _e334 = ok;
             if (_e334) {
-                bool _e338 = airlight_vec_finite(s_16.light_axis);
-                local_113 = _e338;
-            } else {
-                local_113 = false;
-            }
-            bool _e340 = local_113;
-            if (_e340) {
-                bool _e344 = airlight_normalisable(s_16.light_axis);
-                local_114 = _e344;
-            } else {
-                local_114 = false;
-            }
-            bool _e346 = local_114;
-            if (_e346) {
-                local_115 = s_16.light_param_b < s_16.light_param_a;
-            } else {
-                local_115 = false;
-            }
-            bool _e353 = local_115;
-            if (_e353) {
-                local_116 = s_16.light_param_b >= -1.0;
+                bool _e338 = airlight_vec_finite(s_17.light_axis);
+                local_116 = _e338;
             } else {
                 local_116 = false;
             }
-            bool _e360 = local_116;
-            if (_e360) {
-                local_117 = s_16.light_param_a <= 1.0;
+            bool _e340 = local_116;
+            if (_e340) {
+                bool _e344 = airlight_normalisable(s_17.light_axis);
+                local_117 = _e344;
             } else {
                 local_117 = false;
             }
-            bool _e367 = local_117;
+            bool _e346 = local_117;
+            if (_e346) {
+                local_118 = s_17.light_param_b < s_17.light_param_a;
+            } else {
+                local_118 = false;
+            }
+            bool _e353 = local_118;
+            if (_e353) {
+                local_119 = s_17.light_param_b >= -1.0;
+            } else {
+                local_119 = false;
+            }
+            bool _e360 = local_119;
+            if (_e360) {
+                local_120 = s_17.light_param_a <= 1.0;
+            } else {
+                local_120 = false;
+            }
+            bool _e367 = local_120;
             ok = _e367;
         } else {
-            if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    bool g_ok = metal::abs(s_16.phase_param_a) < 1.0;
-    switch(s_16.phase_kind) {
+    bool g_ok = metal::abs(s_17.phase_param_a) < 1.0;
+    switch(s_17.phase_kind) {
         case 0u:
         case 1u: {
             break;
@@ -4510,40 +4538,40 @@ bool airlight_valid(
         case 4u: {
             bool _e377 = ok;
             if (_e377) {
-                local_118 = g_ok;
+                local_121 = g_ok;
             } else {
-                local_118 = false;
+                local_121 = false;
             }
-            bool _e381 = local_118;
+            bool _e381 = local_121;
             ok = _e381;
             break;
         }
         case 5u: {
             bool _e382 = ok;
             if (_e382) {
-                local_119 = g_ok;
-            } else {
-                local_119 = false;
-            }
-            bool _e386 = local_119;
-            if (_e386) {
-                local_120 = metal::abs(s_16.phase_param_b) < 1.0;
-            } else {
-                local_120 = false;
-            }
-            bool _e394 = local_120;
-            if (_e394) {
-                local_121 = s_16.phase_param_c >= 0.0;
-            } else {
-                local_121 = false;
-            }
-            bool _e401 = local_121;
-            if (_e401) {
-                local_122 = s_16.phase_param_c <= 1.0;
+                local_122 = g_ok;
             } else {
                 local_122 = false;
             }
-            bool _e408 = local_122;
+            bool _e386 = local_122;
+            if (_e386) {
+                local_123 = metal::abs(s_17.phase_param_b) < 1.0;
+            } else {
+                local_123 = false;
+            }
+            bool _e394 = local_123;
+            if (_e394) {
+                local_124 = s_17.phase_param_c >= 0.0;
+            } else {
+                local_124 = false;
+            }
+            bool _e401 = local_124;
+            if (_e401) {
+                local_125 = s_17.phase_param_c <= 1.0;
+            } else {
+                local_125 = false;
+            }
+            bool _e408 = local_125;
             ok = _e408;
             break;
         }
@@ -4557,16 +4585,16 @@ bool airlight_valid(
 }
 
 AirlightCanonical airlight_canonical(
-    AirlightScene s_17
+    AirlightScene s_18
 ) {
     metal::float3 a_12 = metal::float3(0.0, 0.0, 1.0);
     float d_c_1 = 0.0;
-    metal::float3 _e2 = airlight_normalize(s_17.dir);
-    if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e12 = airlight_normalize(s_17.light_axis);
+    metal::float3 _e2 = airlight_normalize(s_18.dir);
+    if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        metal::float3 _e12 = airlight_normalize(s_18.light_axis);
         a_12 = _e12;
     }
-    metal::float3 to_light = s_17.light_position - s_17.origin;
+    metal::float3 to_light = s_18.light_position - s_18.origin;
     float x_h_2 = metal::dot(to_light, _e2);
     metal::float3 perp = (x_h_2 * _e2) - to_light;
     float _e19 = airlight_safe_length(perp);
@@ -4574,10 +4602,10 @@ AirlightCanonical airlight_canonical(
         metal::float3 _e24 = a_12;
         d_c_1 = metal::dot(perp, _e24) / _e19;
     }
-    bool infinite_3 = (s_17.flags & 1u) != 0u;
+    bool infinite_3 = (s_18.flags & 1u) != 0u;
     metal::float3 _e32 = a_12;
     float _e34 = d_c_1;
-    return AirlightCanonical {_e19, x_h_2, metal::dot(_e2, _e32), _e34, s_17.t_min, infinite_3 ? 0.0 : s_17.t_max, infinite_3};
+    return AirlightCanonical {_e19, x_h_2, metal::dot(_e2, _e32), _e34, s_18.t_min, infinite_3 ? 0.0 : s_18.t_max, infinite_3};
 }
 
 float airlight_opaque(
@@ -4638,54 +4666,54 @@ float airlight_diff_of_products(
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
-    bool local_123 = {};
-    bool local_124 = {};
+    bool local_126 = {};
+    bool local_127 = {};
     float m_9 = metal::max(metal::abs(v_4.x), metal::max(metal::abs(v_4.y), metal::abs(v_4.z)));
     if (!((m_9 == 0.0))) {
         if (m_9 >= 0.0000000009313226) {
-            local_124 = m_9 <= AIRLIGHT_EXACT_RANGE;
+            local_127 = m_9 <= AIRLIGHT_EXACT_RANGE;
         } else {
-            local_124 = false;
+            local_127 = false;
         }
-        bool _e21 = local_124;
-        local_123 = _e21;
+        bool _e21 = local_127;
+        local_126 = _e21;
     } else {
-        local_123 = true;
+        local_126 = true;
     }
-    bool _e23 = local_123;
+    bool _e23 = local_126;
     return _e23;
 }
 
 AirlightCanonical airlight_refined(
-    AirlightScene s_18,
+    AirlightScene s_19,
     AirlightCanonical plain
 ) {
-    bool local_125 = {};
+    bool local_128 = {};
     AirlightCanonical out_2 = {};
-    bool local_126 = {};
+    bool local_129 = {};
     metal::float3 a_16 = metal::float3(0.0, 0.0, 1.0);
-    uint key_4 = static_cast<uint>(s_18.flags > 1u);
-    metal::float2 _e11 = airlight_two_sum(s_18.light_position[0], -(s_18.origin[0]), key_4);
-    metal::float2 _e17 = airlight_two_sum(s_18.light_position[1], -(s_18.origin[1]), key_4);
-    metal::float2 _e23 = airlight_two_sum(s_18.light_position[2], -(s_18.origin[2]), key_4);
+    uint key_4 = static_cast<uint>(s_19.flags > 1u);
+    metal::float2 _e11 = airlight_two_sum(s_19.light_position[0], -(s_19.origin[0]), key_4);
+    metal::float2 _e17 = airlight_two_sum(s_19.light_position[1], -(s_19.origin[1]), key_4);
+    metal::float2 _e23 = airlight_two_sum(s_19.light_position[2], -(s_19.origin[2]), key_4);
     metal::float3 hi_6 = metal::float3(_e11.x, _e17.x, _e23.x);
     metal::float3 lo_7 = metal::float3(_e11.y, _e17.y, _e23.y);
-    metal::float3 dir = s_18.dir;
+    metal::float3 dir = s_19.dir;
     bool _e33 = airlight_in_exact_range(hi_6);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir);
-        local_125 = !(_e38);
+        local_128 = !(_e38);
     } else {
-        local_125 = true;
+        local_128 = true;
     }
-    bool _e41 = local_125;
+    bool _e41 = local_128;
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_6.y, s_18.dir[2], hi_6.z, s_18.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_6.z, s_18.dir[0], hi_6.x, s_18.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_6.x, s_18.dir[1], hi_6.y, s_18.dir[0], key_4);
-    metal::float3 w_5 = metal::float3(_e46 + ((lo_7.y * s_18.dir[2]) - (lo_7.z * s_18.dir[1])), _e59 + ((lo_7.z * s_18.dir[0]) - (lo_7.x * s_18.dir[2])), _e72 + ((lo_7.x * s_18.dir[1]) - (lo_7.y * s_18.dir[0])));
+    float _e46 = airlight_diff_of_products(hi_6.y, s_19.dir[2], hi_6.z, s_19.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_6.z, s_19.dir[0], hi_6.x, s_19.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_6.x, s_19.dir[1], hi_6.y, s_19.dir[0], key_4);
+    metal::float3 w_5 = metal::float3(_e46 + ((lo_7.y * s_19.dir[2]) - (lo_7.z * s_19.dir[1])), _e59 + ((lo_7.z * s_19.dir[0]) - (lo_7.x * s_19.dir[2])), _e72 + ((lo_7.x * s_19.dir[1]) - (lo_7.y * s_19.dir[0])));
     bool _e82 = airlight_vec_finite(w_5);
     if (!(_e82)) {
         return plain;
@@ -4702,16 +4730,16 @@ AirlightCanonical airlight_refined(
     float h_7 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_126 = h_7 > 0.0;
+        local_129 = h_7 > 0.0;
     } else {
-        local_126 = false;
+        local_129 = false;
     }
-    bool _e101 = local_126;
+    bool _e101 = local_129;
     if (!(_e101)) {
         return plain;
     }
-    if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e112 = airlight_normalize(s_18.light_axis);
+    if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        metal::float3 _e112 = airlight_normalize(s_19.light_axis);
         a_16 = _e112;
     }
     metal::float3 _e113 = airlight_normalize(dir);
@@ -5056,7 +5084,7 @@ AirlightEdges airlight_edges_between(
     AirlightEdges e_1 = {};
     uint n_1 = 0u;
     uint i_18 = 0u;
-    bool local_127 = {};
+    bool local_130 = {};
     cuts_1 = unsorted;
     float _e5 = cuts_1.inner[1];
     float _e7 = cuts_1.inner[0];
@@ -5106,11 +5134,11 @@ AirlightEdges airlight_edges_between(
             if (_e50 > _e54) {
                 uint _e58 = i_18;
                 float _e60 = cuts_1.inner[metal::min(unsigned(_e58), 2u)];
-                local_127 = _e60 < hi_3;
+                local_130 = _e60 < hi_3;
             } else {
-                local_127 = false;
+                local_130 = false;
             }
-            bool _e63 = local_127;
+            bool _e63 = local_130;
             if (_e63) {
                 uint _e64 = n_1;
                 n_1 = _e64 + 1u;
@@ -5136,9 +5164,9 @@ AirlightSplit airlight_split_worst(
     float tolerance
 ) {
     uint tries = 0u;
-    bool local_128 = {};
-    bool local_129 = {};
-    bool local_130 = {};
+    bool local_131 = {};
+    bool local_132 = {};
+    bool local_133 = {};
     uint2 loop_bound_23 = uint2(4294967295u);
     bool loop_init_23 = true;
     while(true) {
@@ -5158,18 +5186,18 @@ AirlightSplit airlight_split_worst(
             AirlightPanelList _e8 = list_1;
             AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * metal::abs(_e9.total)))))) {
-                local_128 = count_2 == max_panels;
+                local_131 = count_2 == max_panels;
             } else {
-                local_128 = true;
+                local_131 = true;
             }
-            bool _e21 = local_128;
+            bool _e21 = local_131;
             if (!(_e21)) {
                 bool _e26 = airlight_is_finite(_e9.total);
-                local_129 = !(_e26);
+                local_132 = !(_e26);
             } else {
-                local_129 = true;
+                local_132 = true;
             }
-            bool _e29 = local_129;
+            bool _e29 = local_132;
             if (_e29) {
                 break;
             }
@@ -5177,11 +5205,11 @@ AirlightSplit airlight_split_worst(
             metal::float4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_1 = 0.5 * (_e32.x + _e32.y);
             if (mid_1 > _e32.x) {
-                local_130 = mid_1 < _e32.y;
+                local_133 = mid_1 < _e32.y;
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            bool _e45 = local_130;
+            bool _e45 = local_133;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, metal::float4(_e32.xyz, 0.0));
                 continue;
@@ -5271,13 +5299,13 @@ float airlight_asinh(
 
 float airlight_to_w(
     AirlightOuter g_19,
-    float s_19
+    float s_20
 ) {
     if (g_19.scale > 0.0) {
-        float _e9 = airlight_asinh((s_19 - g_19.s_star) / g_19.scale);
+        float _e9 = airlight_asinh((s_20 - g_19.s_star) / g_19.scale);
         return _e9;
     }
-    return s_19;
+    return s_20;
 }
 
 metal::float2 airlight_cos_sin_half_turn(
@@ -5300,9 +5328,9 @@ float airlight_acos(
 
 float airlight_angle(
     float c_6,
-    float s_20
+    float s_21
 ) {
-    float _e2 = airlight_atan2_upper(s_20, c_6);
+    float _e2 = airlight_atan2_upper(s_21, c_6);
     return _e2;
 }
 
@@ -5322,43 +5350,43 @@ float airlight_half_arc(
 }
 
 AirlightOuter airlight_outer_point(
-    AirlightScene s_21,
+    AirlightScene s_22,
     uint max_panels_2
 ) {
     airlight_type_3 zeros = airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
-    return AirlightOuter {s_21.light_position, metal::float3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_2, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, {}, metal::float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u};
+    return AirlightOuter {s_22.light_position, metal::float3(0.0), 0.0, 0.0, zeros, 1u, 0u, max_panels_2, {}, metal::float3(0.0), metal::float3(0.0), 0.0, 0.0, zeros, 0.0, 0.0, 0.0, {}, metal::float3(0.0, 1.0, 0.0), 0.0, 0.0, 0.0, 0u};
 }
 
 AirlightOuter airlight_surface(
-    AirlightScene s_22
+    AirlightScene s_23
 ) {
     AirlightOuter g_20 = {};
-    bool local_131 = {};
+    bool local_134 = {};
     metal::float3 u_1 = {};
     airlight_type_16 cuts_2 = airlight_type_16 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     uint i_19 = 1u;
     uint j_4 = {};
-    bool local_132 = {};
+    bool local_135 = {};
     uint k_4 = 0u;
     uint i_20 = 0u;
-    bool local_133 = {};
+    bool local_136 = {};
     uint i_21 = 0u;
     uint i_22 = 1u;
-    bool local_134 = {};
-    bool local_135 = {};
-    bool local_136 = {};
     bool local_137 = {};
     bool local_138 = {};
-    AirlightOuter _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
+    bool local_139 = {};
+    bool local_140 = {};
+    bool local_141 = {};
+    AirlightOuter _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
-    metal::float3 to_light_1 = s_22.light_position - s_22.origin;
+    metal::float3 to_light_1 = s_23.light_position - s_23.origin;
     float _e7 = airlight_safe_length(to_light_1);
-    if (!((s_22.intensity == 0.0))) {
-        local_131 = s_22.sigma_s == 0.0;
+    if (!((s_23.intensity == 0.0))) {
+        local_134 = s_23.sigma_s == 0.0;
     } else {
-        local_131 = true;
+        local_134 = true;
     }
-    bool _e18 = local_131;
+    bool _e18 = local_134;
     if (_e18) {
         g_20.outcome = 1u;
         AirlightOuter _e21 = g_20;
@@ -5369,13 +5397,13 @@ AirlightOuter airlight_surface(
         AirlightOuter _e27 = g_20;
         return _e27;
     }
-    if (s_22.brdf_scale == 0.0) {
+    if (s_23.brdf_scale == 0.0) {
         g_20.outcome = 1u;
         AirlightOuter _e33 = g_20;
         return _e33;
     }
     metal::float3 l_3 = to_light_1 / metal::float3(_e7);
-    metal::float3 _e37 = airlight_normalize(s_22.dir);
+    metal::float3 _e37 = airlight_normalize(s_23.dir);
     float cos_a_1 = metal::dot(_e37, l_3);
     metal::float3 across = _e37 - (cos_a_1 * l_3);
     float _e41 = airlight_safe_length(across);
@@ -5389,7 +5417,7 @@ AirlightOuter airlight_surface(
     metal::float3 _e67 = u_1;
     g_20.u = _e67;
     g_20.d = _e7;
-    metal::float3 _e70 = airlight_normalize(s_22.light_axis);
+    metal::float3 _e70 = airlight_normalize(s_23.light_axis);
     g_20.axis_l = metal::dot(_e70, l_3);
     metal::float3 _e74 = u_1;
     g_20.axis_u = metal::dot(_e70, _e74);
@@ -5399,9 +5427,9 @@ AirlightOuter airlight_surface(
     float first = metal::abs(1.5707964 - _e92);
     cuts_2.inner[0] = first;
     cuts_2.inner[1] = AIRLIGHT_PI - first;
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_23.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        metal::float3 _e105 = airlight_normalize(s_22.brdf_view);
+        metal::float3 _e105 = airlight_normalize(s_23.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
         float x_28 = metal::dot(_e111, _e112);
@@ -5427,8 +5455,8 @@ AirlightOuter airlight_surface(
         cuts_2.inner[3] = AIRLIGHT_PI - first_r;
         float _e163 = g_20.alpha_r;
         cuts_2.inner[4] = _e163;
-        if (s_22.brdf_exponent > 1.0) {
-            float width_3 = 1.0 / metal::sqrt(s_22.brdf_exponent);
+        if (s_23.brdf_exponent > 1.0) {
+            float width_3 = 1.0 / metal::sqrt(s_23.brdf_exponent);
             float _e173 = g_20.alpha_r;
             cuts_2.inner[5] = _e173 - (1.5 * width_3);
             float _e179 = g_20.alpha_r;
@@ -5481,11 +5509,11 @@ AirlightOuter airlight_surface(
                 if (_e232 > 0u) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2.inner[metal::min(unsigned(_e237 - 1u), 10u)];
-                    local_132 = _e241 > c_13;
+                    local_135 = _e241 > c_13;
                 } else {
-                    local_132 = false;
+                    local_135 = false;
                 }
-                bool _e244 = local_132;
+                bool _e244 = local_135;
                 if (_e244) {
                 } else {
                     break;
@@ -5528,11 +5556,11 @@ AirlightOuter airlight_surface(
             if (_e281 > _e285) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2.inner[metal::min(unsigned(_e289), 10u)];
-                local_133 = _e291 < hi_7;
+                local_136 = _e291 < hi_7;
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            bool _e294 = local_133;
+            bool _e294 = local_136;
             if (_e294) {
                 uint _e295 = k_4;
                 k_4 = _e295 + 1u;
@@ -5569,7 +5597,7 @@ AirlightOuter airlight_surface(
             g_20.edges.inner[metal::min(unsigned(_e323), 12u)] = static_cast<float>(_e325);
         }
     }
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_23.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         uint2 loop_bound_28 = uint2(4294967295u);
         bool loop_init_27 = true;
         while(true) {
@@ -5590,35 +5618,35 @@ AirlightOuter airlight_surface(
                 uint _e339 = i_22;
                 float e_5 = g_20.gamma.inner[metal::min(unsigned(_e339), 12u)];
                 if (!((e_5 == kinks.inner[0]))) {
-                    local_134 = e_5 == kinks.inner[1];
-                } else {
-                    local_134 = true;
-                }
-                bool _e350 = local_134;
-                if (!(_e350)) {
-                    local_135 = e_5 == kinks.inner[2];
-                } else {
-                    local_135 = true;
-                }
-                bool _e357 = local_135;
-                if (!(_e357)) {
-                    local_136 = e_5 == kinks.inner[3];
-                } else {
-                    local_136 = true;
-                }
-                bool _e364 = local_136;
-                if (!(_e364)) {
-                    local_137 = e_5 == kinks.inner[4];
+                    local_137 = e_5 == kinks.inner[1];
                 } else {
                     local_137 = true;
                 }
-                bool _e371 = local_137;
-                if (!(_e371)) {
-                    local_138 = e_5 == kinks.inner[5];
+                bool _e350 = local_137;
+                if (!(_e350)) {
+                    local_138 = e_5 == kinks.inner[2];
                 } else {
                     local_138 = true;
                 }
-                bool kink = local_138;
+                bool _e357 = local_138;
+                if (!(_e357)) {
+                    local_139 = e_5 == kinks.inner[3];
+                } else {
+                    local_139 = true;
+                }
+                bool _e364 = local_139;
+                if (!(_e364)) {
+                    local_140 = e_5 == kinks.inner[4];
+                } else {
+                    local_140 = true;
+                }
+                bool _e371 = local_140;
+                if (!(_e371)) {
+                    local_141 = e_5 == kinks.inner[5];
+                } else {
+                    local_141 = true;
+                }
+                bool kink = local_141;
                 uint _e380 = g_20.smooth_edges;
                 uint _e382 = i_22;
                 g_20.smooth_edges = _e380 | (kink ? 0u : (1u << _e382));
@@ -5633,7 +5661,7 @@ float airlight_lobe_at(
     AirlightLobe q_1,
     float x_18
 ) {
-    bool local_139 = {};
+    bool local_142 = {};
     metal::float2 _e4 = airlight_cos_sin(0.5 * x_18);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
@@ -5643,11 +5671,11 @@ float airlight_lobe_at(
     float clip = metal::max(even + odd_1, 0.0) + metal::max(even - odd_1, 0.0);
     float fall = q_1.k * s2_;
     if (fall < 1.0) {
-        local_139 = clip > 0.0;
+        local_142 = clip > 0.0;
     } else {
-        local_139 = false;
+        local_142 = false;
     }
-    bool _e43 = local_139;
+    bool _e43 = local_142;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return clip * metal::exp(q_1.exponent * (q_1.log_peak + _e47));
@@ -5675,7 +5703,7 @@ float airlight_arc_end(
     float cut
 ) {
     float end = {};
-    bool local_140 = {};
+    bool local_143 = {};
     end = x_19;
     float _e3 = end;
     if (_e3 > AIRLIGHT_PI) {
@@ -5691,11 +5719,11 @@ float airlight_arc_end(
     float _e16 = end;
     if (_e16 > -(cut)) {
         float _e21 = end;
-        local_140 = _e21 < cut;
+        local_143 = _e21 < cut;
     } else {
-        local_140 = false;
+        local_143 = false;
     }
-    bool _e24 = local_140;
+    bool _e24 = local_143;
     return _e24 ? _e15 : 0.0;
 }
 
@@ -5710,17 +5738,17 @@ float airlight_lobe_piece(
     float hi_5,
     bool smoothstep_1
 ) {
-    bool local_141 = {};
+    bool local_144 = {};
     float sum_5 = 0.0;
     uint k_5 = 0u;
     float w_6 = hi_5 - lo_6;
     if (!(!((w_6 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, lo_6 + (0.5 * w_6));
-        local_141 = !((_e14 > 0.0));
+        local_144 = !((_e14 > 0.0));
     } else {
-        local_141 = true;
+        local_144 = true;
     }
-    bool _e19 = local_141;
+    bool _e19 = local_144;
     if (_e19) {
         return 0.0;
     }
@@ -5827,70 +5855,70 @@ float airlight_lobe_arcs(
 }
 
 AirlightOuter airlight_outer(
-    AirlightScene s_23
+    AirlightScene s_24
 ) {
     AirlightOuter g_22 = {};
-    bool local_142 = {};
-    bool local_143 = {};
-    float s_star = 0.0;
-    float t_star = {};
-    bool local_144 = {};
     bool local_145 = {};
     bool local_146 = {};
+    float s_star = 0.0;
+    float t_star = {};
     bool local_147 = {};
     bool local_148 = {};
     bool local_149 = {};
-    float scale = 0.0;
     bool local_150 = {};
     bool local_151 = {};
     bool local_152 = {};
+    float scale = 0.0;
     bool local_153 = {};
     bool local_154 = {};
-    airlight_type_15 cuts_3 = airlight_type_15 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_15 at = {};
     bool local_155 = {};
-    uint i_24 = 0u;
     bool local_156 = {};
     bool local_157 = {};
+    airlight_type_15 cuts_3 = airlight_type_15 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_15 at = {};
     bool local_158 = {};
+    uint i_24 = 0u;
     bool local_159 = {};
-    if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        AirlightOuter _e4 = airlight_surface(s_23);
+    bool local_160 = {};
+    bool local_161 = {};
+    bool local_162 = {};
+    if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        AirlightOuter _e4 = airlight_surface(s_24);
         return _e4;
     }
-    AirlightOuter _e6 = airlight_outer_point(s_23, AIRLIGHT_SEGMENT_PANELS);
+    AirlightOuter _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
     g_22 = _e6;
-    if (s_23.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         AirlightOuter _e11 = g_22;
         return _e11;
     }
-    metal::float3 ab_1 = s_23.light_end - s_23.light_position;
+    metal::float3 ab_1 = s_24.light_end - s_24.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_142 = s_23.intensity == 0.0;
+        local_145 = s_24.intensity == 0.0;
     } else {
-        local_142 = true;
+        local_145 = true;
     }
-    bool _e26 = local_142;
+    bool _e26 = local_145;
     if (!(_e26)) {
-        local_143 = s_23.sigma_s == 0.0;
+        local_146 = s_24.sigma_s == 0.0;
     } else {
-        local_143 = true;
+        local_146 = true;
     }
-    bool _e34 = local_143;
+    bool _e34 = local_146;
     if (_e34) {
         g_22.outcome = 1u;
         AirlightOuter _e37 = g_22;
         return _e37;
     }
     metal::float3 e_6 = ab_1 / metal::float3(_e15);
-    metal::float3 _e41 = airlight_normalize(s_23.dir);
-    metal::float3 w0_ = s_23.light_position - s_23.origin;
+    metal::float3 _e41 = airlight_normalize(s_24.dir);
+    metal::float3 w0_ = s_24.light_position - s_24.origin;
     float cos_a_2 = metal::dot(e_6, _e41);
     float along_e = metal::dot(e_6, w0_);
     float along_d = metal::dot(_e41, w0_);
     float sin2_ = 1.0 - (cos_a_2 * cos_a_2);
-    bool infinite_4 = (s_23.flags & 1u) != 0u;
+    bool infinite_4 = (s_24.flags & 1u) != 0u;
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = ((cos_a_2 * along_d) - along_e) / sin2_;
@@ -5901,94 +5929,94 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_6 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_144 = sin_a_1 > 0.0;
-    } else {
-        local_144 = false;
-    }
-    bool _e84 = local_144;
-    if (_e84) {
-        float _e87 = s_star;
-        local_145 = _e87 >= 0.0;
-    } else {
-        local_145 = false;
-    }
-    bool _e91 = local_145;
-    if (_e91) {
-        float _e94 = s_star;
-        local_146 = _e94 <= _e15;
-    } else {
-        local_146 = false;
-    }
-    bool _e97 = local_146;
-    if (_e97) {
-        float _e101 = t_star;
-        local_147 = s_23.t_min <= _e101;
+        local_147 = sin_a_1 > 0.0;
     } else {
         local_147 = false;
     }
-    bool _e104 = local_147;
-    if (_e104) {
-        if (!(infinite_4)) {
-            float _e110 = t_star;
-            local_149 = _e110 <= s_23.t_max;
-        } else {
-            local_149 = true;
-        }
-        bool _e114 = local_149;
-        local_148 = _e114;
+    bool _e84 = local_147;
+    if (_e84) {
+        float _e87 = s_star;
+        local_148 = _e87 >= 0.0;
     } else {
         local_148 = false;
     }
-    bool _e116 = local_148;
+    bool _e91 = local_148;
+    if (_e91) {
+        float _e94 = s_star;
+        local_149 = _e94 <= _e15;
+    } else {
+        local_149 = false;
+    }
+    bool _e97 = local_149;
+    if (_e97) {
+        float _e101 = t_star;
+        local_150 = s_24.t_min <= _e101;
+    } else {
+        local_150 = false;
+    }
+    bool _e104 = local_150;
+    if (_e104) {
+        if (!(infinite_4)) {
+            float _e110 = t_star;
+            local_152 = _e110 <= s_24.t_max;
+        } else {
+            local_152 = true;
+        }
+        bool _e114 = local_152;
+        local_151 = _e114;
+    } else {
+        local_151 = false;
+    }
+    bool _e116 = local_151;
     if (_e116) {
         g_22.outcome = 2u;
         AirlightOuter _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_150 = _e73 > 0.0;
+        local_153 = _e73 > 0.0;
     } else {
-        local_150 = false;
+        local_153 = false;
     }
-    bool _e129 = local_150;
+    bool _e129 = local_153;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_151 = _e136 < (_e15 + _e15);
+        local_154 = _e136 < (_e15 + _e15);
     } else {
-        local_151 = false;
+        local_154 = false;
     }
-    bool _e140 = local_151;
+    bool _e140 = local_154;
     if (_e140) {
         float _e143 = scale;
-        local_152 = _e143 < _e15;
+        local_155 = _e143 < _e15;
     } else {
-        local_152 = false;
+        local_155 = false;
     }
-    bool near_1 = local_152;
+    bool near_1 = local_155;
     if (near_1) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_153 = _e154;
+        local_156 = _e154;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    bool _e156 = local_153;
+    bool _e156 = local_156;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_154 = _e163;
+        local_157 = _e163;
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    bool _e165 = local_154;
+    bool _e165 = local_157;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -5998,18 +6026,18 @@ AirlightOuter airlight_outer(
     float _e172 = scale;
     g_22.scale = _e172;
     float _e178 = s_star;
-    at = airlight_type_15 {{_e178, (s_23.t_min - along_d) / cos_a_2, (s_23.t_max - along_d) / cos_a_2}};
+    at = airlight_type_15 {{_e178, (s_24.t_min - along_d) / cos_a_2, (s_24.t_max - along_d) / cos_a_2}};
     float _e187 = scale;
     if (_e187 > 0.0) {
         AirlightOuter _e192 = g_22;
         float _e194 = airlight_to_w(_e192, 0.0);
         AirlightOuter _e196 = g_22;
         float _e197 = airlight_to_w(_e196, _e15);
-        local_155 = metal::min(-(_e194), _e197) < 0.5;
+        local_158 = metal::min(-(_e194), _e197) < 0.5;
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    bool sliver = local_155;
+    bool sliver = local_158;
     uint2 loop_bound_31 = uint2(4294967295u);
     bool loop_init_30 = true;
     while(true) {
@@ -6028,31 +6056,31 @@ AirlightOuter airlight_outer(
         {
             uint _e208 = i_24;
             if (_e208 == 0u) {
-                local_156 = sliver;
+                local_159 = sliver;
             } else {
-                local_156 = false;
+                local_159 = false;
             }
-            bool _e214 = local_156;
+            bool _e214 = local_159;
             if (_e214) {
                 continue;
             }
             if (cos_a_2 == 0.0) {
                 uint _e219 = i_24;
-                local_157 = _e219 > 0u;
+                local_160 = _e219 > 0u;
             } else {
-                local_157 = false;
+                local_160 = false;
             }
-            bool _e223 = local_157;
+            bool _e223 = local_160;
             if (_e223) {
                 continue;
             }
             uint _e224 = i_24;
             if (_e224 == 2u) {
-                local_158 = infinite_4;
+                local_161 = infinite_4;
             } else {
-                local_158 = false;
+                local_161 = false;
             }
-            bool _e230 = local_158;
+            bool _e230 = local_161;
             if (_e230) {
                 continue;
             }
@@ -6061,11 +6089,11 @@ AirlightOuter airlight_outer(
             if (_e233 > 0.0) {
                 uint _e238 = i_24;
                 float _e240 = at.inner[metal::min(unsigned(_e238), 2u)];
-                local_159 = _e240 < _e15;
+                local_162 = _e240 < _e15;
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            bool _e243 = local_159;
+            bool _e243 = local_162;
             if (_e243) {
                 uint _e244 = i_24;
                 AirlightOuter _e246 = g_22;
@@ -6094,27 +6122,27 @@ AirlightCanonical airlight_no_canonical(
 }
 
 AirlightNode airlight_outer_node(
-    AirlightScene s_24,
+    AirlightScene s_25,
     AirlightOuter g_23,
     float x_20
 ) {
     AirlightScene p = {};
     float gamma_1 = {};
     float jacobian = {};
-    bool local_160 = {};
-    bool local_161 = {};
-    bool local_162 = {};
     bool local_163 = {};
     bool local_164 = {};
     bool local_165 = {};
+    bool local_166 = {};
+    bool local_167 = {};
+    bool local_168 = {};
     float weight = 0.0;
     float at_1 = {};
     float ds = 1.0;
-    p = s_24;
+    p = s_25;
     AirlightCanonical _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
+    if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         uint i_25 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_20), 0.0)), g_23.panels - 1u);
         float t_7 = x_20 - static_cast<float>(i_25);
         float a_28 = g_23.gamma.inner[metal::min(unsigned(i_25), 12u)];
@@ -6127,51 +6155,51 @@ AirlightNode airlight_outer_node(
         jacobian = ((w_7 * 6.0) * t_7) * u_4;
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_160 = !(smooth_a);
-        } else {
-            local_160 = false;
-        }
-        bool _e66 = local_160;
-        gamma_1 = _e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58;
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_161 = !(smooth_a);
-        } else {
-            local_161 = false;
-        }
-        bool _e75 = local_161;
-        jacobian = _e75 ? (w_7 * (t_7 + t_7)) : _e68;
-        float _e77 = gamma_1;
-        if (smooth_a) {
-            local_162 = !(smooth_b);
-        } else {
-            local_162 = false;
-        }
-        bool _e85 = local_162;
-        gamma_1 = _e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77;
-        float _e87 = jacobian;
-        if (smooth_a) {
-            local_163 = !(smooth_b);
+            local_163 = !(smooth_a);
         } else {
             local_163 = false;
         }
-        bool _e94 = local_163;
-        jacobian = _e94 ? (w_7 * (u_4 + u_4)) : _e87;
-        float _e96 = gamma_1;
-        if (smooth_a) {
-            local_164 = smooth_b;
+        bool _e66 = local_163;
+        gamma_1 = _e66 ? (a_28 + ((w_7 * t_7) * t_7)) : _e58;
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_164 = !(smooth_a);
         } else {
             local_164 = false;
         }
-        bool _e102 = local_164;
-        gamma_1 = _e102 ? (a_28 + (w_7 * t_7)) : _e96;
-        float _e104 = jacobian;
+        bool _e75 = local_164;
+        jacobian = _e75 ? (w_7 * (t_7 + t_7)) : _e68;
+        float _e77 = gamma_1;
         if (smooth_a) {
-            local_165 = smooth_b;
+            local_165 = !(smooth_b);
         } else {
             local_165 = false;
         }
-        bool _e108 = local_165;
+        bool _e85 = local_165;
+        gamma_1 = _e85 ? (b_18 - ((w_7 * u_4) * u_4)) : _e77;
+        float _e87 = jacobian;
+        if (smooth_a) {
+            local_166 = !(smooth_b);
+        } else {
+            local_166 = false;
+        }
+        bool _e94 = local_166;
+        jacobian = _e94 ? (w_7 * (u_4 + u_4)) : _e87;
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_167 = smooth_b;
+        } else {
+            local_167 = false;
+        }
+        bool _e102 = local_167;
+        gamma_1 = _e102 ? (a_28 + (w_7 * t_7)) : _e96;
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_168 = smooth_b;
+        } else {
+            local_168 = false;
+        }
+        bool _e108 = local_168;
         jacobian = _e108 ? w_7 : _e104;
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6185,15 +6213,15 @@ AirlightNode airlight_outer_node(
             AirlightScene _e128 = p;
             return AirlightNode {_e128, 0.0, _e4, false};
         }
-        if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        if (s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
             metal::float2 _e144 = airlight_cos_sin_half_turn(_e124);
             float arc = 2.0 * (((g_23.cos_a * _e119.x) * _e124) + ((g_23.sin_a * _e119.y) * _e144.y));
-            weight = (s_24.brdf_scale * 0.31830987) * arc;
+            weight = (s_25.brdf_scale * 0.31830987) * arc;
         } else {
-            float n_4 = s_24.brdf_exponent;
+            float n_4 = s_25.brdf_exponent;
             float _e161 = gamma_1;
             float _e162 = airlight_lobe_arcs(g_23, _e119, _e161, _e124, n_4);
-            weight = ((s_24.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162;
+            weight = ((s_25.brdf_scale * (n_4 + 2.0)) * 0.15915494) * _e162;
         }
         p.dir = (_e119.x * g_23.l) + (_e119.y * g_23.u);
         p.t_min = 0.0;
@@ -6208,7 +6236,7 @@ AirlightNode airlight_outer_node(
         float _e210 = jacobian;
         return AirlightNode {_e206, (_e207 * _e119.y) * _e210, exact, true};
     }
-    if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_20;
         if (g_23.scale > 0.0) {
             at_1 = g_23.s_star + (g_23.scale * metal::sinh(x_20));
@@ -6227,14 +6255,14 @@ AirlightNode airlight_outer_node(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_166 = {};
+    bool local_169 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_166 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_169 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_166 = true;
+        local_169 = true;
     }
-    bool _e11 = local_166;
+    bool _e11 = local_169;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -6245,17 +6273,17 @@ AirlightResult airlight_node_integral(
     AirlightNode n_2
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_167 = {};
+    bool local_170 = {};
     AirlightCanonical g_24 = {};
     AirlightScene p_1 = n_2.scene;
     bool _e7 = airlight_vec_finite(n_2.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_2.scene.dir);
-        local_167 = _e11;
+        local_170 = _e11;
     } else {
-        local_167 = false;
+        local_170 = false;
     }
-    bool _e13 = local_167;
+    bool _e13 = local_170;
     if (_e13) {
         g_24 = n_2.canonical;
         if (!(n_2.exact)) {
@@ -6273,24 +6301,24 @@ AirlightResult airlight_node_integral(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_25
+    AirlightScene s_26
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
     float k_6 = {};
     float gauss_1 = {};
     uint j_5 = {};
-    bool local_168 = {};
+    bool local_171 = {};
     float f = {};
-    bool local_169 = {};
-    bool _e1 = airlight_valid(s_25);
+    bool local_172 = {};
+    bool _e1 = airlight_valid(s_26);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    if (s_25.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_26.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e12 = airlight_outer(s_25);
+    AirlightOuter _e12 = airlight_outer(s_26);
     if (_e12.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -6347,25 +6375,25 @@ AirlightResult airlight_in_scatter(
                     uint _e74 = j_5;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_5;
-                        local_168 = _e81 < 6u;
+                        local_171 = _e81 < 6u;
                     } else {
-                        local_168 = false;
+                        local_171 = false;
                     }
-                    bool _e85 = local_168;
+                    bool _e85 = local_171;
                     float w_8 = _e85 ? (c_15 - (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_15 + (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
-                    AirlightNode _e87 = airlight_outer_node(s_25, _e12, w_8);
+                    AirlightNode _e87 = airlight_outer_node(s_26, _e12, w_8);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_169 = s_25.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_26.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_172 = s_26.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_169 = false;
+                            local_172 = false;
                         }
-                        bool _e106 = local_169;
+                        bool _e106 = local_172;
                         if (_e106) {
                             return _e93;
                         }

@@ -270,8 +270,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_9 = (x * x);
     let c_7 = (1f + (z_9 * (-0.5f + (z_9 * (0.041666668f + (z_9 * (-0.0013888889f + (z_9 * (0.000024801588f + (z_9 * (-0.0000002755732f + (z_9 * (0.0000000020876756f + (z_9 * (-0.000000000011470745f + (z_9 * 0.000000000000047794773f))))))))))))))));
-    let s_26 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_7, (s_26 * x));
+    let s_27 = (1f + (z_9 * (-0.16666667f + (z_9 * (0.008333334f + (z_9 * (-0.0001984127f + (z_9 * (0.0000027557319f + (z_9 * (-0.000000025052108f + (z_9 * (0.00000000016059044f + (z_9 * (-0.00000000000076471636f + (z_9 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_7, (s_27 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -328,10 +328,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_27 = (x_2 / (2f + x_2));
-    let z_11 = (s_27 * s_27);
+    let s_28 = (x_2 / (2f + x_2));
+    let z_11 = (s_28 * s_28);
     let sum_7 = ((((((((((((((((z_11 / 17f) + 0.06666667f) * z_11) + 0.07692308f) * z_11) + 0.09090909f) * z_11) + 0.11111111f) * z_11) + 0.14285715f) * z_11) + 0.2f) * z_11) + 0.33333334f) * z_11) + 1f);
-    return ((2f * s_27) * sum_7);
+    return ((2f * s_28) * sum_7);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -3363,7 +3363,7 @@ fn airlight_limits(s_13: AirlightScene, g_17: AirlightCanonical) -> AirlightResu
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_isotropic_scene(s_14: AirlightScene) -> bool {
+fn airlight_isotropic_phase(s_14: AirlightScene) -> bool {
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
@@ -3371,70 +3371,97 @@ fn airlight_isotropic_scene(s_14: AirlightScene) -> bool {
     var local_54: bool;
     var local_55: bool;
 
-    if !((s_14.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_14.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_51 = (s_14.light_param_a == 0f);
+    if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+        if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+            local_51 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
-            local_51 = false;
+            local_51 = true;
         }
-        let _e16 = local_51;
-        local_50 = _e16;
+        let _e17 = local_51;
+        if _e17 {
+            local_52 = (s_14.phase_param_a == 0f);
+        } else {
+            local_52 = false;
+        }
+        let _e24 = local_52;
+        local_50 = _e24;
     } else {
         local_50 = true;
     }
-    let _e18 = local_50;
-    if _e18 {
-        if !((s_14.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_14.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_54 = (s_14.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_54 = true;
-            }
-            let _e37 = local_54;
-            if _e37 {
-                local_55 = (s_14.phase_param_a == 0f);
-            } else {
-                local_55 = false;
-            }
-            let _e44 = local_55;
-            local_53 = _e44;
+    let _e26 = local_50;
+    if !(_e26) {
+        if (s_14.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
+            local_54 = (s_14.phase_param_a == 0f);
         } else {
-            local_53 = true;
+            local_54 = false;
         }
-        let _e46 = local_53;
-        local_52 = _e46;
+        let _e39 = local_54;
+        if _e39 {
+            local_55 = (s_14.phase_param_b == 0f);
+        } else {
+            local_55 = false;
+        }
+        let _e46 = local_55;
+        local_53 = _e46;
     } else {
-        local_52 = false;
+        local_53 = true;
     }
-    let _e48 = local_52;
+    let _e48 = local_53;
     return _e48;
 }
 
-fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
+fn airlight_isotropic_scene(s_15: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
+
+    if !((s_15.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_15.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_57 = (s_15.light_param_a == 0f);
+        } else {
+            local_57 = false;
+        }
+        let _e16 = local_57;
+        local_56 = _e16;
+    } else {
+        local_56 = true;
+    }
+    let _e18 = local_56;
+    if _e18 {
+        let _e21 = airlight_isotropic_phase(s_15);
+        local_58 = _e21;
+    } else {
+        local_58 = false;
+    }
+    let _e23 = local_58;
+    return _e23;
+}
+
+fn airlight_in_scatter_canonical(s_16: AirlightScene, g_18: AirlightCanonical) -> AirlightResult {
+    var local_59: bool;
+    var local_60: bool;
+    var local_61: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_59: bool;
-    var half_13: AirlightHalf;
-    var local_60: bool;
-    var local_61: bool;
     var local_62: bool;
+    var half_13: AirlightHalf;
+    var local_63: bool;
+    var local_64: bool;
+    var local_65: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_63: bool;
-    var local_64: bool;
-    var half_14: AirlightHalf;
-    var local_65: bool;
     var local_66: bool;
     var local_67: bool;
+    var half_14: AirlightHalf;
+    var local_68: bool;
+    var local_69: bool;
+    var local_70: bool;
 
-    let _e2 = airlight_limits(s_15, g_18);
+    let _e2 = airlight_limits(s_16, g_18);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
         return _e2;
     }
@@ -3442,32 +3469,32 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
     let t1_1 = g_18.t_hi;
     let h_6 = g_18.h;
     let x_h_1 = g_18.x_h;
-    let big_h_8 = (s_15.sigma_t * h_6);
-    let _e12 = airlight_isotropic_scene(s_15);
+    let big_h_8 = (s_16.sigma_t * h_6);
+    let _e12 = airlight_isotropic_scene(s_16);
     if _e12 {
-        local_56 = (t0_1 < x_h_1);
+        local_59 = (t0_1 < x_h_1);
     } else {
-        local_56 = false;
+        local_59 = false;
     }
-    let _e17 = local_56;
+    let _e17 = local_59;
     if _e17 {
         if !(g_18.t_hi_infinite) {
-            local_58 = (x_h_1 < t1_1);
+            local_61 = (x_h_1 < t1_1);
         } else {
-            local_58 = true;
+            local_61 = true;
         }
-        let _e26 = local_58;
-        local_57 = _e26;
+        let _e26 = local_61;
+        local_60 = _e26;
     } else {
-        local_57 = false;
+        local_60 = false;
     }
-    let _e28 = local_57;
+    let _e28 = local_60;
     if _e28 {
-        let _e29 = airlight_whole_line(s_15, g_18, big_h_8);
+        let _e29 = airlight_whole_line(s_16, g_18, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
     }
     if !(_e12) {
-        let _e35 = airlight_angle_route(s_15, g_18);
+        let _e35 = airlight_angle_route(s_16, g_18);
         if (_e35.x > 0.5f) {
             return AirlightResult(max(_e35.y, 0f), AIRLIGHT_STATUS_OK);
         }
@@ -3477,11 +3504,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_18.t_hi_infinite) {
-            local_59 = (t1_1 < x_h_1);
+            local_62 = (t1_1 < x_h_1);
         } else {
-            local_59 = false;
+            local_62 = false;
         }
-        let _e61 = local_59;
+        let _e61 = local_62;
         if _e61 {
             t_end = t1_1;
         }
@@ -3497,11 +3524,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
             let _e89 = half_13.big_h;
-            local_60 = (_e89 > 0f);
+            local_63 = (_e89 > 0f);
         } else {
-            local_60 = false;
+            local_63 = false;
         }
-        let _e93 = local_60;
+        let _e93 = local_63;
         if _e93 {
             let _e95 = half_13.big_h;
             let _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -3512,24 +3539,24 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
             }
         }
         let _e106 = half_13;
-        let _e107 = airlight_half(s_15, g_18, -1f, _e106, _e12, (&f_max_7));
+        let _e107 = airlight_half(s_16, g_18, -1f, _e106, _e12, (&f_max_7));
         let _e108 = total_3;
-        let _e112 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, (big_h_8 * _e65), _e107);
+        let _e112 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if !(g_18.t_hi_infinite) {
-        local_61 = (t1_1 > x_h_1);
+        local_64 = (t1_1 > x_h_1);
     } else {
-        local_61 = true;
+        local_64 = true;
     }
-    let _e120 = local_61;
+    let _e120 = local_64;
     if _e120 {
         let _e123 = behind_cut;
-        local_62 = !(_e123);
+        local_65 = !(_e123);
     } else {
-        local_62 = false;
+        local_65 = false;
     }
-    let _e126 = local_62;
+    let _e126 = local_65;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3539,22 +3566,22 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_18.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_63 = _e145;
+            local_66 = _e145;
         } else {
-            local_63 = false;
+            local_66 = false;
         }
-        let _e147 = local_63;
+        let _e147 = local_66;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_64 = _e162;
+                local_67 = _e162;
             } else {
-                local_64 = false;
+                local_67 = false;
             }
-            let _e164 = local_64;
+            let _e164 = local_67;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3574,11 +3601,11 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut_1 {
             let _e183 = half_14.big_h;
-            local_65 = (_e183 > 0f);
+            local_68 = (_e183 > 0f);
         } else {
-            local_65 = false;
+            local_68 = false;
         }
-        let _e187 = local_65;
+        let _e187 = local_68;
         if _e187 {
             let _e189 = half_14.big_h;
             let _e192 = dv_3;
@@ -3587,20 +3614,20 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
             let _e197 = infinite_2;
             if !(_e197) {
                 let _e201 = dv_3;
-                local_66 = (_e196 < _e201);
+                local_69 = (_e196 < _e201);
             } else {
-                local_66 = true;
+                local_69 = true;
             }
-            let _e204 = local_66;
+            let _e204 = local_69;
             if _e204 {
                 let cut_y_lo = (_e131 / (1f + (_e131 * _e196)));
                 if (cut_y_lo > 0f) {
                     let _e213 = airlight_is_finite(_e196);
-                    local_67 = _e213;
+                    local_70 = _e213;
                 } else {
-                    local_67 = false;
+                    local_70 = false;
                 }
-                let _e215 = local_67;
+                let _e215 = local_70;
                 if _e215 {
                     let _e218 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
@@ -3608,9 +3635,9 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
             }
         }
         let _e224 = half_14;
-        let _e225 = airlight_half(s_15, g_18, 1f, _e224, _e12, (&f_max_7));
+        let _e225 = airlight_half(s_16, g_18, 1f, _e224, _e12, (&f_max_7));
         let _e226 = total_3;
-        let _e234 = airlight_weighted(s_15.sigma_s, s_15.intensity, h_6, ((s_15.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        let _e234 = airlight_weighted(s_16.sigma_s, s_16.intensity, h_6, ((s_16.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     let _e236 = total_3;
@@ -3618,24 +3645,24 @@ fn airlight_in_scatter_canonical(s_15: AirlightScene, g_18: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_68: bool;
-    var local_69: bool;
+    var local_71: bool;
+    var local_72: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_68 = _e6;
+        local_71 = _e6;
     } else {
-        local_68 = false;
+        local_71 = false;
     }
-    let _e8 = local_68;
+    let _e8 = local_71;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_69 = _e12;
+        local_72 = _e12;
     } else {
-        local_69 = false;
+        local_72 = false;
     }
-    let _e14 = local_69;
+    let _e14 = local_72;
     return _e14;
 }
 
@@ -3648,16 +3675,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_70: bool;
+    var local_73: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_70 = _e6;
+        local_73 = _e6;
     } else {
-        local_70 = false;
+        local_73 = false;
     }
-    let _e8 = local_70;
+    let _e8 = local_73;
     return _e8;
 }
 
@@ -3667,10 +3694,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_3 / vec3(length(u_3)));
 }
 
-fn airlight_valid(s_16: AirlightScene) -> bool {
-    var local_71: bool;
-    var local_72: bool;
-    var local_73: bool;
+fn airlight_valid(s_17: AirlightScene) -> bool {
     var local_74: bool;
     var local_75: bool;
     var local_76: bool;
@@ -3678,10 +3702,10 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_78: bool;
     var local_79: bool;
     var local_80: bool;
-    var ok: bool;
     var local_81: bool;
     var local_82: bool;
     var local_83: bool;
+    var ok: bool;
     var local_84: bool;
     var local_85: bool;
     var local_86: bool;
@@ -3721,413 +3745,416 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     var local_120: bool;
     var local_121: bool;
     var local_122: bool;
+    var local_123: bool;
+    var local_124: bool;
+    var local_125: bool;
 
-    let _e2 = airlight_vec_finite(s_16.origin);
+    let _e2 = airlight_vec_finite(s_17.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_16.dir);
-        local_71 = _e6;
-    } else {
-        local_71 = false;
-    }
-    let _e8 = local_71;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_16.dir);
-        local_72 = _e12;
-    } else {
-        local_72 = false;
-    }
-    let _e14 = local_72;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_16.t_min);
-        local_73 = _e18;
-    } else {
-        local_73 = false;
-    }
-    let _e20 = local_73;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_16.light_position);
-        local_74 = _e24;
+        let _e6 = airlight_vec_finite(s_17.dir);
+        local_74 = _e6;
     } else {
         local_74 = false;
     }
-    let _e26 = local_74;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_16.intensity);
-        local_75 = _e30;
+    let _e8 = local_74;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_17.dir);
+        local_75 = _e12;
     } else {
         local_75 = false;
     }
-    let _e32 = local_75;
-    if _e32 {
-        local_76 = (s_16.intensity >= 0f);
+    let _e14 = local_75;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_17.t_min);
+        local_76 = _e18;
     } else {
         local_76 = false;
     }
-    let _e39 = local_76;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_16.sigma_s);
-        local_77 = _e43;
+    let _e20 = local_76;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_17.light_position);
+        local_77 = _e24;
     } else {
         local_77 = false;
     }
-    let _e45 = local_77;
-    if _e45 {
-        local_78 = (s_16.sigma_s >= 0f);
+    let _e26 = local_77;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_17.intensity);
+        local_78 = _e30;
     } else {
         local_78 = false;
     }
-    let _e52 = local_78;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_16.sigma_t);
-        local_79 = _e56;
+    let _e32 = local_78;
+    if _e32 {
+        local_79 = (s_17.intensity >= 0f);
     } else {
         local_79 = false;
     }
-    let _e58 = local_79;
-    if _e58 {
-        local_80 = (s_16.sigma_t >= 0f);
+    let _e39 = local_79;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_17.sigma_s);
+        local_80 = _e43;
     } else {
         local_80 = false;
     }
-    let _e65 = local_80;
+    let _e45 = local_80;
+    if _e45 {
+        local_81 = (s_17.sigma_s >= 0f);
+    } else {
+        local_81 = false;
+    }
+    let _e52 = local_81;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_17.sigma_t);
+        local_82 = _e56;
+    } else {
+        local_82 = false;
+    }
+    let _e58 = local_82;
+    if _e58 {
+        local_83 = (s_17.sigma_t >= 0f);
+    } else {
+        local_83 = false;
+    }
+    let _e65 = local_83;
     ok = _e65;
-    if ((s_16.flags & 1u) == 0u) {
+    if ((s_17.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_16.t_max);
-            local_81 = _e76;
-        } else {
-            local_81 = false;
-        }
-        let _e78 = local_81;
-        if _e78 {
-            local_82 = (s_16.t_min <= s_16.t_max);
-        } else {
-            local_82 = false;
-        }
-        let _e85 = local_82;
-        ok = _e85;
-    }
-    if (s_16.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        let _e89 = ok;
-        if _e89 {
-            let _e93 = airlight_vec_finite(s_16.light_end);
-            local_83 = _e93;
-        } else {
-            local_83 = false;
-        }
-        let _e95 = local_83;
-        ok = _e95;
-    } else {
-        if (s_16.light_shape >= AIRLIGHT_SHAPE_DISC) {
-            local_84 = (s_16.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+            let _e76 = airlight_is_finite(s_17.t_max);
+            local_84 = _e76;
         } else {
             local_84 = false;
         }
-        let _e105 = local_84;
+        let _e78 = local_84;
+        if _e78 {
+            local_85 = (s_17.t_min <= s_17.t_max);
+        } else {
+            local_85 = false;
+        }
+        let _e85 = local_85;
+        ok = _e85;
+    }
+    if (s_17.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        let _e89 = ok;
+        if _e89 {
+            let _e93 = airlight_vec_finite(s_17.light_end);
+            local_86 = _e93;
+        } else {
+            local_86 = false;
+        }
+        let _e95 = local_86;
+        ok = _e95;
+    } else {
+        if (s_17.light_shape >= AIRLIGHT_SHAPE_DISC) {
+            local_87 = (s_17.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_87 = false;
+        }
+        let _e105 = local_87;
         if _e105 {
             let _e106 = ok;
             if _e106 {
-                local_85 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
-            } else {
-                local_85 = false;
-            }
-            let _e113 = local_85;
-            if _e113 {
-                local_86 = (s_16.light_param_b >= 1f);
-            } else {
-                local_86 = false;
-            }
-            let _e120 = local_86;
-            if _e120 {
-                local_87 = (s_16.light_param_b <= 1024f);
-            } else {
-                local_87 = false;
-            }
-            let _e127 = local_87;
-            if _e127 {
-                local_88 = (fract(s_16.light_param_b) == 0f);
+                local_88 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
             } else {
                 local_88 = false;
             }
-            let _e135 = local_88;
+            let _e113 = local_88;
+            if _e113 {
+                local_89 = (s_17.light_param_b >= 1f);
+            } else {
+                local_89 = false;
+            }
+            let _e120 = local_89;
+            if _e120 {
+                local_90 = (s_17.light_param_b <= 1024f);
+            } else {
+                local_90 = false;
+            }
+            let _e127 = local_90;
+            if _e127 {
+                local_91 = (fract(s_17.light_param_b) == 0f);
+            } else {
+                local_91 = false;
+            }
+            let _e135 = local_91;
             ok = _e135;
-            if (s_16.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+            if (s_17.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
                 let _e139 = ok;
                 if _e139 {
-                    let _e143 = airlight_vec_finite(s_16.light_axis);
-                    local_89 = _e143;
-                } else {
-                    local_89 = false;
-                }
-                let _e145 = local_89;
-                if _e145 {
-                    let _e149 = airlight_normalisable(s_16.light_axis);
-                    local_90 = _e149;
-                } else {
-                    local_90 = false;
-                }
-                let _e151 = local_90;
-                if _e151 {
-                    let _e155 = airlight_vec_finite(s_16.light_end);
-                    local_91 = _e155;
-                } else {
-                    local_91 = false;
-                }
-                let _e157 = local_91;
-                if _e157 {
-                    let _e161 = airlight_normalisable(s_16.light_end);
-                    local_92 = _e161;
+                    let _e143 = airlight_vec_finite(s_17.light_axis);
+                    local_92 = _e143;
                 } else {
                     local_92 = false;
                 }
-                let _e163 = local_92;
-                if _e163 {
-                    let _e167 = airlight_normalize(s_16.light_axis);
-                    let _e169 = airlight_normalize(s_16.light_end);
-                    let _e171 = airlight_safe_length(cross(_e167, _e169));
-                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                let _e145 = local_92;
+                if _e145 {
+                    let _e149 = airlight_normalisable(s_17.light_axis);
+                    local_93 = _e149;
                 } else {
                     local_93 = false;
                 }
-                let _e175 = local_93;
+                let _e151 = local_93;
+                if _e151 {
+                    let _e155 = airlight_vec_finite(s_17.light_end);
+                    local_94 = _e155;
+                } else {
+                    local_94 = false;
+                }
+                let _e157 = local_94;
+                if _e157 {
+                    let _e161 = airlight_normalisable(s_17.light_end);
+                    local_95 = _e161;
+                } else {
+                    local_95 = false;
+                }
+                let _e163 = local_95;
+                if _e163 {
+                    let _e167 = airlight_normalize(s_17.light_axis);
+                    let _e169 = airlight_normalize(s_17.light_end);
+                    let _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_96 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_96 = false;
+                }
+                let _e175 = local_96;
                 ok = _e175;
             } else {
                 let _e176 = ok;
                 if _e176 {
-                    let _e180 = airlight_is_finite(s_16.light_param_a);
-                    local_94 = _e180;
+                    let _e180 = airlight_is_finite(s_17.light_param_a);
+                    local_97 = _e180;
                 } else {
-                    local_94 = false;
+                    local_97 = false;
                 }
-                let _e182 = local_94;
+                let _e182 = local_97;
                 if _e182 {
-                    local_95 = (s_16.light_param_a >= 0f);
+                    local_98 = (s_17.light_param_a >= 0f);
                 } else {
-                    local_95 = false;
+                    local_98 = false;
                 }
-                let _e189 = local_95;
+                let _e189 = local_98;
                 ok = _e189;
-                if (s_16.light_shape == AIRLIGHT_SHAPE_DISC) {
+                if (s_17.light_shape == AIRLIGHT_SHAPE_DISC) {
                     let _e193 = ok;
                     if _e193 {
-                        let _e197 = airlight_vec_finite(s_16.light_axis);
-                        local_96 = _e197;
+                        let _e197 = airlight_vec_finite(s_17.light_axis);
+                        local_99 = _e197;
                     } else {
-                        local_96 = false;
+                        local_99 = false;
                     }
-                    let _e199 = local_96;
+                    let _e199 = local_99;
                     if _e199 {
-                        let _e203 = airlight_normalisable(s_16.light_axis);
-                        local_97 = _e203;
+                        let _e203 = airlight_normalisable(s_17.light_axis);
+                        local_100 = _e203;
                     } else {
-                        local_97 = false;
+                        local_100 = false;
                     }
-                    let _e205 = local_97;
+                    let _e205 = local_100;
                     ok = _e205;
                 }
             }
         } else {
-            if (s_16.light_shape != AIRLIGHT_SHAPE_POINT) {
+            if (s_17.light_shape != AIRLIGHT_SHAPE_POINT) {
                 ok = false;
             }
         }
     }
-    if !((s_16.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_98 = (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    if !((s_17.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        local_101 = (s_17.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_98 = true;
+        local_101 = true;
     }
-    let _e220 = local_98;
+    let _e220 = local_101;
     if _e220 {
         let _e221 = ok;
         if _e221 {
-            let _e225 = airlight_is_finite(s_16.brdf_scale);
-            local_99 = _e225;
-        } else {
-            local_99 = false;
-        }
-        let _e227 = local_99;
-        if _e227 {
-            local_100 = (s_16.brdf_scale >= 0f);
-        } else {
-            local_100 = false;
-        }
-        let _e234 = local_100;
-        if _e234 {
-            local_101 = (s_16.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_101 = false;
-        }
-        let _e241 = local_101;
-        if _e241 {
-            local_102 = (s_16.light_shape == AIRLIGHT_SHAPE_POINT);
+            let _e225 = airlight_is_finite(s_17.brdf_scale);
+            local_102 = _e225;
         } else {
             local_102 = false;
         }
-        let _e248 = local_102;
-        if _e248 {
-            let _e254 = airlight_safe_length((s_16.light_position - s_16.origin));
-            let _e255 = airlight_is_finite(_e254);
-            local_103 = _e255;
+        let _e227 = local_102;
+        if _e227 {
+            local_103 = (s_17.brdf_scale >= 0f);
         } else {
             local_103 = false;
         }
-        let _e257 = local_103;
+        let _e234 = local_103;
+        if _e234 {
+            local_104 = (s_17.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_104 = false;
+        }
+        let _e241 = local_104;
+        if _e241 {
+            local_105 = (s_17.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_105 = false;
+        }
+        let _e248 = local_105;
+        if _e248 {
+            let _e254 = airlight_safe_length((s_17.light_position - s_17.origin));
+            let _e255 = airlight_is_finite(_e254);
+            local_106 = _e255;
+        } else {
+            local_106 = false;
+        }
+        let _e257 = local_106;
         ok = _e257;
-        if (s_16.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        if (s_17.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             let _e261 = ok;
             if _e261 {
-                let _e265 = airlight_is_finite(s_16.brdf_exponent);
-                local_104 = _e265;
-            } else {
-                local_104 = false;
-            }
-            let _e267 = local_104;
-            if _e267 {
-                local_105 = (s_16.brdf_exponent >= 0f);
-            } else {
-                local_105 = false;
-            }
-            let _e274 = local_105;
-            if _e274 {
-                let _e278 = airlight_vec_finite(s_16.brdf_view);
-                local_106 = _e278;
-            } else {
-                local_106 = false;
-            }
-            let _e280 = local_106;
-            if _e280 {
-                let _e284 = airlight_normalisable(s_16.brdf_view);
-                local_107 = _e284;
+                let _e265 = airlight_is_finite(s_17.brdf_exponent);
+                local_107 = _e265;
             } else {
                 local_107 = false;
             }
-            let _e286 = local_107;
+            let _e267 = local_107;
+            if _e267 {
+                local_108 = (s_17.brdf_exponent >= 0f);
+            } else {
+                local_108 = false;
+            }
+            let _e274 = local_108;
+            if _e274 {
+                let _e278 = airlight_vec_finite(s_17.brdf_view);
+                local_109 = _e278;
+            } else {
+                local_109 = false;
+            }
+            let _e280 = local_109;
+            if _e280 {
+                let _e284 = airlight_normalisable(s_17.brdf_view);
+                local_110 = _e284;
+            } else {
+                local_110 = false;
+            }
+            let _e286 = local_110;
             ok = _e286;
         }
     } else {
-        if (s_16.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_17.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e294 = ok;
         if _e294 {
-            let _e298 = airlight_vec_finite(s_16.light_axis);
-            local_108 = _e298;
-        } else {
-            local_108 = false;
-        }
-        let _e300 = local_108;
-        if _e300 {
-            let _e304 = airlight_normalisable(s_16.light_axis);
-            local_109 = _e304;
-        } else {
-            local_109 = false;
-        }
-        let _e306 = local_109;
-        if _e306 {
-            local_110 = (s_16.light_param_a >= 0f);
-        } else {
-            local_110 = false;
-        }
-        let _e313 = local_110;
-        if _e313 {
-            local_111 = (s_16.light_param_a <= 1024f);
+            let _e298 = airlight_vec_finite(s_17.light_axis);
+            local_111 = _e298;
         } else {
             local_111 = false;
         }
-        let _e320 = local_111;
-        if _e320 {
-            local_112 = (fract((s_16.light_param_a * 0.5f)) == 0f);
+        let _e300 = local_111;
+        if _e300 {
+            let _e304 = airlight_normalisable(s_17.light_axis);
+            local_112 = _e304;
         } else {
             local_112 = false;
         }
-        let _e330 = local_112;
+        let _e306 = local_112;
+        if _e306 {
+            local_113 = (s_17.light_param_a >= 0f);
+        } else {
+            local_113 = false;
+        }
+        let _e313 = local_113;
+        if _e313 {
+            local_114 = (s_17.light_param_a <= 1024f);
+        } else {
+            local_114 = false;
+        }
+        let _e320 = local_114;
+        if _e320 {
+            local_115 = (fract((s_17.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_115 = false;
+        }
+        let _e330 = local_115;
         ok = _e330;
     } else {
-        if (s_16.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_17.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e334 = ok;
             if _e334 {
-                let _e338 = airlight_vec_finite(s_16.light_axis);
-                local_113 = _e338;
-            } else {
-                local_113 = false;
-            }
-            let _e340 = local_113;
-            if _e340 {
-                let _e344 = airlight_normalisable(s_16.light_axis);
-                local_114 = _e344;
-            } else {
-                local_114 = false;
-            }
-            let _e346 = local_114;
-            if _e346 {
-                local_115 = (s_16.light_param_b < s_16.light_param_a);
-            } else {
-                local_115 = false;
-            }
-            let _e353 = local_115;
-            if _e353 {
-                local_116 = (s_16.light_param_b >= -1f);
+                let _e338 = airlight_vec_finite(s_17.light_axis);
+                local_116 = _e338;
             } else {
                 local_116 = false;
             }
-            let _e360 = local_116;
-            if _e360 {
-                local_117 = (s_16.light_param_a <= 1f);
+            let _e340 = local_116;
+            if _e340 {
+                let _e344 = airlight_normalisable(s_17.light_axis);
+                local_117 = _e344;
             } else {
                 local_117 = false;
             }
-            let _e367 = local_117;
+            let _e346 = local_117;
+            if _e346 {
+                local_118 = (s_17.light_param_b < s_17.light_param_a);
+            } else {
+                local_118 = false;
+            }
+            let _e353 = local_118;
+            if _e353 {
+                local_119 = (s_17.light_param_b >= -1f);
+            } else {
+                local_119 = false;
+            }
+            let _e360 = local_119;
+            if _e360 {
+                local_120 = (s_17.light_param_a <= 1f);
+            } else {
+                local_120 = false;
+            }
+            let _e367 = local_120;
             ok = _e367;
         } else {
-            if (s_16.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_16.phase_param_a) < 1f);
-    switch s_16.phase_kind {
+    let g_ok = (abs(s_17.phase_param_a) < 1f);
+    switch s_17.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
             let _e377 = ok;
             if _e377 {
-                local_118 = g_ok;
+                local_121 = g_ok;
             } else {
-                local_118 = false;
+                local_121 = false;
             }
-            let _e381 = local_118;
+            let _e381 = local_121;
             ok = _e381;
         }
         case 5u: {
             let _e382 = ok;
             if _e382 {
-                local_119 = g_ok;
-            } else {
-                local_119 = false;
-            }
-            let _e386 = local_119;
-            if _e386 {
-                local_120 = (abs(s_16.phase_param_b) < 1f);
-            } else {
-                local_120 = false;
-            }
-            let _e394 = local_120;
-            if _e394 {
-                local_121 = (s_16.phase_param_c >= 0f);
-            } else {
-                local_121 = false;
-            }
-            let _e401 = local_121;
-            if _e401 {
-                local_122 = (s_16.phase_param_c <= 1f);
+                local_122 = g_ok;
             } else {
                 local_122 = false;
             }
-            let _e408 = local_122;
+            let _e386 = local_122;
+            if _e386 {
+                local_123 = (abs(s_17.phase_param_b) < 1f);
+            } else {
+                local_123 = false;
+            }
+            let _e394 = local_123;
+            if _e394 {
+                local_124 = (s_17.phase_param_c >= 0f);
+            } else {
+                local_124 = false;
+            }
+            let _e401 = local_124;
+            if _e401 {
+                local_125 = (s_17.phase_param_c <= 1f);
+            } else {
+                local_125 = false;
+            }
+            let _e408 = local_125;
             ok = _e408;
         }
         default: {
@@ -4138,16 +4165,16 @@ fn airlight_valid(s_16: AirlightScene) -> bool {
     return _e410;
 }
 
-fn airlight_canonical(s_17: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_18: AirlightScene) -> AirlightCanonical {
     var a_12: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_17.dir);
-    if (s_17.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_17.light_axis);
+    let _e2 = airlight_normalize(s_18.dir);
+    if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_18.light_axis);
         a_12 = _e12;
     }
-    let to_light = (s_17.light_position - s_17.origin);
+    let to_light = (s_18.light_position - s_18.origin);
     let x_h_2 = dot(to_light, _e2);
     let perp = ((x_h_2 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -4155,10 +4182,10 @@ fn airlight_canonical(s_17: AirlightScene) -> AirlightCanonical {
         let _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_3 = ((s_17.flags & 1u) != 0u);
+    let infinite_3 = ((s_18.flags & 1u) != 0u);
     let _e32 = a_12;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_17.t_min, select(s_17.t_max, 0f, infinite_3), infinite_3);
+    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_18.t_min, select(s_18.t_max, 0f, infinite_3), infinite_3);
 }
 
 fn airlight_opaque(x_13: f32, key: u32) -> f32 {
@@ -4198,46 +4225,46 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_123: bool;
-    var local_124: bool;
+    var local_126: bool;
+    var local_127: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_124 = false;
+            local_127 = false;
         }
-        let _e21 = local_124;
-        local_123 = _e21;
+        let _e21 = local_127;
+        local_126 = _e21;
     } else {
-        local_123 = true;
+        local_126 = true;
     }
-    let _e23 = local_123;
+    let _e23 = local_126;
     return _e23;
 }
 
-fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_125: bool;
+fn airlight_refined(s_19: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    var local_128: bool;
     var out_2: AirlightCanonical;
-    var local_126: bool;
+    var local_129: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_18.flags > 1u));
-    let _e11 = airlight_two_sum(s_18.light_position.x, -(s_18.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_18.light_position.y, -(s_18.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_18.light_position.z, -(s_18.origin.z), key_4);
+    let key_4 = u32((s_19.flags > 1u));
+    let _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
     let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_18.dir;
+    let dir = s_19.dir;
     let _e33 = airlight_in_exact_range(hi_6);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir);
-        local_125 = !(_e38);
+        local_128 = !(_e38);
     } else {
-        local_125 = true;
+        local_128 = true;
     }
-    let _e41 = local_125;
+    let _e41 = local_128;
     if _e41 {
         return plain;
     }
@@ -4261,16 +4288,16 @@ fn airlight_refined(s_18: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_126 = (h_7 > 0f);
+        local_129 = (h_7 > 0f);
     } else {
-        local_126 = false;
+        local_129 = false;
     }
-    let _e101 = local_126;
+    let _e101 = local_129;
     if !(_e101) {
         return plain;
     }
-    if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_18.light_axis);
+    if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_19.light_axis);
         a_16 = _e112;
     }
     let _e113 = airlight_normalize(dir);
@@ -4601,7 +4628,7 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_127: bool;
+    var local_130: bool;
 
     cuts_1 = unsorted;
     let _e5 = cuts_1[1];
@@ -4643,11 +4670,11 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
             if (_e50 > _e54) {
                 let _e58 = i_18;
                 let _e60 = cuts_1[_e58];
-                local_127 = (_e60 < hi_3);
+                local_130 = (_e60 < hi_3);
             } else {
-                local_127 = false;
+                local_130 = false;
             }
-            let _e63 = local_127;
+            let _e63 = local_130;
             if _e63 {
                 let _e64 = n_1;
                 n_1 = (_e64 + 1u);
@@ -4672,9 +4699,9 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
-    var local_128: bool;
-    var local_129: bool;
-    var local_130: bool;
+    var local_131: bool;
+    var local_132: bool;
+    var local_133: bool;
 
     loop {
         let _e6 = tries;
@@ -4686,18 +4713,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_128 = (count_2 == max_panels);
+                local_131 = (count_2 == max_panels);
             } else {
-                local_128 = true;
+                local_131 = true;
             }
-            let _e21 = local_128;
+            let _e21 = local_131;
             if !(_e21) {
                 let _e26 = airlight_is_finite(_e9.total);
-                local_129 = !(_e26);
+                local_132 = !(_e26);
             } else {
-                local_129 = true;
+                local_132 = true;
             }
-            let _e29 = local_129;
+            let _e29 = local_132;
             if _e29 {
                 break;
             }
@@ -4705,11 +4732,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_1 = (0.5f * (_e32.x + _e32.y));
             if (mid_1 > _e32.x) {
-                local_130 = (mid_1 < _e32.y);
+                local_133 = (mid_1 < _e32.y);
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            let _e45 = local_130;
+            let _e45 = local_133;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -4790,12 +4817,12 @@ fn airlight_asinh(x_15: f32) -> f32 {
     return select(_e18, -(_e19), (x_15 < 0f));
 }
 
-fn airlight_to_w(g_19: AirlightOuter, s_19: f32) -> f32 {
+fn airlight_to_w(g_19: AirlightOuter, s_20: f32) -> f32 {
     if (g_19.scale > 0f) {
-        let _e9 = airlight_asinh(((s_19 - g_19.s_star) / g_19.scale));
+        let _e9 = airlight_asinh(((s_20 - g_19.s_star) / g_19.scale));
         return _e9;
     }
-    return s_19;
+    return s_20;
 }
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
@@ -4812,8 +4839,8 @@ fn airlight_acos(x_17: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_20: f32) -> f32 {
-    let _e2 = airlight_atan2_upper(s_20, c_6);
+fn airlight_angle(c_6: f32, s_21: f32) -> f32 {
+    let _e2 = airlight_atan2_upper(s_21, c_6);
     return _e2;
 }
 
@@ -4827,40 +4854,40 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_21: AirlightScene, max_panels_2: u32) -> AirlightOuter {
+fn airlight_outer_point(s_22: AirlightScene, max_panels_2: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_21.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_22.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
-fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
+fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
     var g_20: AirlightOuter;
-    var local_131: bool;
+    var local_134: bool;
     var u_1: vec3<f32>;
     var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_19: u32 = 1u;
     var j_4: u32;
-    var local_132: bool;
+    var local_135: bool;
     var k_4: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_133: bool;
+    var local_136: bool;
     var i_21: u32 = 0u;
     var i_22: u32 = 1u;
-    var local_134: bool;
-    var local_135: bool;
-    var local_136: bool;
     var local_137: bool;
     var local_138: bool;
+    var local_139: bool;
+    var local_140: bool;
+    var local_141: bool;
 
-    let _e2 = airlight_outer_point(s_22, AIRLIGHT_SURFACE_PANELS);
+    let _e2 = airlight_outer_point(s_23, AIRLIGHT_SURFACE_PANELS);
     g_20 = _e2;
-    let to_light_1 = (s_22.light_position - s_22.origin);
+    let to_light_1 = (s_23.light_position - s_23.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_22.intensity == 0f)) {
-        local_131 = (s_22.sigma_s == 0f);
+    if !((s_23.intensity == 0f)) {
+        local_134 = (s_23.sigma_s == 0f);
     } else {
-        local_131 = true;
+        local_134 = true;
     }
-    let _e18 = local_131;
+    let _e18 = local_134;
     if _e18 {
         g_20.outcome = 1u;
         let _e21 = g_20;
@@ -4871,13 +4898,13 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         let _e27 = g_20;
         return _e27;
     }
-    if (s_22.brdf_scale == 0f) {
+    if (s_23.brdf_scale == 0f) {
         g_20.outcome = 1u;
         let _e33 = g_20;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_22.dir);
+    let _e37 = airlight_normalize(s_23.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -4891,7 +4918,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     let _e67 = u_1;
     g_20.u = _e67;
     g_20.d = _e7;
-    let _e70 = airlight_normalize(s_22.light_axis);
+    let _e70 = airlight_normalize(s_23.light_axis);
     g_20.axis_l = dot(_e70, l_3);
     let _e74 = u_1;
     g_20.axis_u = dot(_e70, _e74);
@@ -4901,9 +4928,9 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
     let first = abs((1.5707964f - _e92));
     cuts_2[0] = first;
     cuts_2[1] = (AIRLIGHT_PI - first);
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_23.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_20.max_panels = AIRLIGHT_PHONG_PANELS;
-        let _e105 = airlight_normalize(s_22.brdf_view);
+        let _e105 = airlight_normalize(s_23.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
         let x_28 = dot(_e111, _e112);
@@ -4929,8 +4956,8 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
         cuts_2[3] = (AIRLIGHT_PI - first_r);
         let _e163 = g_20.alpha_r;
         cuts_2[4] = _e163;
-        if (s_22.brdf_exponent > 1f) {
-            let width_3 = (1f / sqrt(s_22.brdf_exponent));
+        if (s_23.brdf_exponent > 1f) {
+            let width_3 = (1f / sqrt(s_23.brdf_exponent));
             let _e173 = g_20.alpha_r;
             cuts_2[5] = (_e173 - (1.5f * width_3));
             let _e179 = g_20.alpha_r;
@@ -4971,11 +4998,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_132 = (_e241 > c_13);
+                    local_135 = (_e241 > c_13);
                 } else {
-                    local_132 = false;
+                    local_135 = false;
                 }
-                let _e244 = local_132;
+                let _e244 = local_135;
                 if _e244 {
                 } else {
                     break;
@@ -5013,11 +5040,11 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_133 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_7);
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            let _e294 = local_133;
+            let _e294 = local_136;
             if _e294 {
                 let _e295 = k_4;
                 k_4 = (_e295 + 1u);
@@ -5053,7 +5080,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
             i_21 = (_e328 + 1u);
         }
     }
-    if (s_22.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_23.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         loop {
             let _e335 = i_22;
             let _e336 = k_4;
@@ -5065,35 +5092,35 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
                 let _e339 = i_22;
                 let e_5 = g_20.gamma[_e339];
                 if !((e_5 == kinks[0])) {
-                    local_134 = (e_5 == kinks[1]);
-                } else {
-                    local_134 = true;
-                }
-                let _e350 = local_134;
-                if !(_e350) {
-                    local_135 = (e_5 == kinks[2]);
-                } else {
-                    local_135 = true;
-                }
-                let _e357 = local_135;
-                if !(_e357) {
-                    local_136 = (e_5 == kinks[3]);
-                } else {
-                    local_136 = true;
-                }
-                let _e364 = local_136;
-                if !(_e364) {
-                    local_137 = (e_5 == kinks[4]);
+                    local_137 = (e_5 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
-                let _e371 = local_137;
-                if !(_e371) {
-                    local_138 = (e_5 == kinks[5]);
+                let _e350 = local_137;
+                if !(_e350) {
+                    local_138 = (e_5 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
-                let kink = local_138;
+                let _e357 = local_138;
+                if !(_e357) {
+                    local_139 = (e_5 == kinks[3]);
+                } else {
+                    local_139 = true;
+                }
+                let _e364 = local_139;
+                if !(_e364) {
+                    local_140 = (e_5 == kinks[4]);
+                } else {
+                    local_140 = true;
+                }
+                let _e371 = local_140;
+                if !(_e371) {
+                    local_141 = (e_5 == kinks[5]);
+                } else {
+                    local_141 = true;
+                }
+                let kink = local_141;
                 let _e380 = g_20.smooth_edges;
                 let _e382 = i_22;
                 g_20.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -5109,7 +5136,7 @@ fn airlight_surface(s_22: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_139: bool;
+    var local_142: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5120,11 +5147,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_139 = (clip > 0f);
+        local_142 = (clip > 0f);
     } else {
-        local_139 = false;
+        local_142 = false;
     }
-    let _e43 = local_139;
+    let _e43 = local_142;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5143,7 +5170,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w: f32, u_2: f32, smoothstep
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end: f32;
-    var local_140: bool;
+    var local_143: bool;
 
     end = x_19;
     let _e3 = end;
@@ -5160,11 +5187,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end;
     if (_e16 > -(cut)) {
         let _e21 = end;
-        local_140 = (_e21 < cut);
+        local_143 = (_e21 < cut);
     } else {
-        local_140 = false;
+        local_143 = false;
     }
-    let _e24 = local_140;
+    let _e24 = local_143;
     return select(0f, _e15, _e24);
 }
 
@@ -5173,18 +5200,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
-    var local_141: bool;
+    var local_144: bool;
     var sum_5: f32 = 0f;
     var k_5: u32 = 0u;
 
     let w_6 = (hi_5 - lo_6);
     if !(!((w_6 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_6)));
-        local_141 = !((_e14 > 0f));
+        local_144 = !((_e14 > 0f));
     } else {
-        local_141 = true;
+        local_144 = true;
     }
-    let _e19 = local_141;
+    let _e19 = local_144;
     if _e19 {
         return 0f;
     }
@@ -5275,70 +5302,70 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     return _e114;
 }
 
-fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_24: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_142: bool;
-    var local_143: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_144: bool;
     var local_145: bool;
     var local_146: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_147: bool;
     var local_148: bool;
     var local_149: bool;
-    var scale: f32 = 0f;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
+    var scale: f32 = 0f;
     var local_153: bool;
     var local_154: bool;
-    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
     var local_155: bool;
-    var i_24: u32 = 0u;
     var local_156: bool;
     var local_157: bool;
+    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_158: bool;
+    var i_24: u32 = 0u;
     var local_159: bool;
+    var local_160: bool;
+    var local_161: bool;
+    var local_162: bool;
 
-    if (s_23.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let _e4 = airlight_surface(s_23);
+    if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        let _e4 = airlight_surface(s_24);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_23, AIRLIGHT_SEGMENT_PANELS);
+    let _e6 = airlight_outer_point(s_24, AIRLIGHT_SEGMENT_PANELS);
     g_22 = _e6;
-    if (s_23.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_24.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         let _e11 = g_22;
         return _e11;
     }
-    let ab_1 = (s_23.light_end - s_23.light_position);
+    let ab_1 = (s_24.light_end - s_24.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_142 = (s_23.intensity == 0f);
+        local_145 = (s_24.intensity == 0f);
     } else {
-        local_142 = true;
+        local_145 = true;
     }
-    let _e26 = local_142;
+    let _e26 = local_145;
     if !(_e26) {
-        local_143 = (s_23.sigma_s == 0f);
+        local_146 = (s_24.sigma_s == 0f);
     } else {
-        local_143 = true;
+        local_146 = true;
     }
-    let _e34 = local_143;
+    let _e34 = local_146;
     if _e34 {
         g_22.outcome = 1u;
         let _e37 = g_22;
         return _e37;
     }
     let e_6 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_23.dir);
-    let w0_ = (s_23.light_position - s_23.origin);
+    let _e41 = airlight_normalize(s_24.dir);
+    let w0_ = (s_24.light_position - s_24.origin);
     let cos_a_2 = dot(e_6, _e41);
     let along_e = dot(e_6, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_4 = ((s_23.flags & 1u) != 0u);
+    let infinite_4 = ((s_24.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -5349,94 +5376,94 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_6 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_144 = (sin_a_1 > 0f);
-    } else {
-        local_144 = false;
-    }
-    let _e84 = local_144;
-    if _e84 {
-        let _e87 = s_star;
-        local_145 = (_e87 >= 0f);
-    } else {
-        local_145 = false;
-    }
-    let _e91 = local_145;
-    if _e91 {
-        let _e94 = s_star;
-        local_146 = (_e94 <= _e15);
-    } else {
-        local_146 = false;
-    }
-    let _e97 = local_146;
-    if _e97 {
-        let _e101 = t_star;
-        local_147 = (s_23.t_min <= _e101);
+        local_147 = (sin_a_1 > 0f);
     } else {
         local_147 = false;
     }
-    let _e104 = local_147;
-    if _e104 {
-        if !(infinite_4) {
-            let _e110 = t_star;
-            local_149 = (_e110 <= s_23.t_max);
-        } else {
-            local_149 = true;
-        }
-        let _e114 = local_149;
-        local_148 = _e114;
+    let _e84 = local_147;
+    if _e84 {
+        let _e87 = s_star;
+        local_148 = (_e87 >= 0f);
     } else {
         local_148 = false;
     }
-    let _e116 = local_148;
+    let _e91 = local_148;
+    if _e91 {
+        let _e94 = s_star;
+        local_149 = (_e94 <= _e15);
+    } else {
+        local_149 = false;
+    }
+    let _e97 = local_149;
+    if _e97 {
+        let _e101 = t_star;
+        local_150 = (s_24.t_min <= _e101);
+    } else {
+        local_150 = false;
+    }
+    let _e104 = local_150;
+    if _e104 {
+        if !(infinite_4) {
+            let _e110 = t_star;
+            local_152 = (_e110 <= s_24.t_max);
+        } else {
+            local_152 = true;
+        }
+        let _e114 = local_152;
+        local_151 = _e114;
+    } else {
+        local_151 = false;
+    }
+    let _e116 = local_151;
     if _e116 {
         g_22.outcome = 2u;
         let _e119 = g_22;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_150 = (_e73 > 0f);
+        local_153 = (_e73 > 0f);
     } else {
-        local_150 = false;
+        local_153 = false;
     }
-    let _e129 = local_150;
+    let _e129 = local_153;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_151 = (_e136 < (_e15 + _e15));
+        local_154 = (_e136 < (_e15 + _e15));
     } else {
-        local_151 = false;
+        local_154 = false;
     }
-    let _e140 = local_151;
+    let _e140 = local_154;
     if _e140 {
         let _e143 = scale;
-        local_152 = (_e143 < _e15);
+        local_155 = (_e143 < _e15);
     } else {
-        local_152 = false;
+        local_155 = false;
     }
-    let near_1 = local_152;
+    let near_1 = local_155;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_153 = _e154;
+        local_156 = _e154;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    let _e156 = local_153;
+    let _e156 = local_156;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_154 = _e163;
+        local_157 = _e163;
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    let _e165 = local_154;
+    let _e165 = local_157;
     if !(_e165) {
         scale = 0f;
     }
@@ -5446,18 +5473,18 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
     let _e172 = scale;
     g_22.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_23.t_min - along_d) / cos_a_2), ((s_23.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
     let _e187 = scale;
     if (_e187 > 0f) {
         let _e192 = g_22;
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_22;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_155 = (min(-(_e194), _e197) < 0.5f);
+        local_158 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    let sliver = local_155;
+    let sliver = local_158;
     loop {
         let _e205 = i_24;
         if (_e205 < 3u) {
@@ -5467,31 +5494,31 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
         {
             let _e208 = i_24;
             if (_e208 == 0u) {
-                local_156 = sliver;
+                local_159 = sliver;
             } else {
-                local_156 = false;
+                local_159 = false;
             }
-            let _e214 = local_156;
+            let _e214 = local_159;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e219 = i_24;
-                local_157 = (_e219 > 0u);
+                local_160 = (_e219 > 0u);
             } else {
-                local_157 = false;
+                local_160 = false;
             }
-            let _e223 = local_157;
+            let _e223 = local_160;
             if _e223 {
                 continue;
             }
             let _e224 = i_24;
             if (_e224 == 2u) {
-                local_158 = infinite_4;
+                local_161 = infinite_4;
             } else {
-                local_158 = false;
+                local_161 = false;
             }
-            let _e230 = local_158;
+            let _e230 = local_161;
             if _e230 {
                 continue;
             }
@@ -5500,11 +5527,11 @@ fn airlight_outer(s_23: AirlightScene) -> AirlightOuter {
             if (_e233 > 0f) {
                 let _e238 = i_24;
                 let _e240 = at[_e238];
-                local_159 = (_e240 < _e15);
+                local_162 = (_e240 < _e15);
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            let _e243 = local_159;
+            let _e243 = local_162;
             if _e243 {
                 let _e244 = i_24;
                 let _e246 = g_22;
@@ -5535,25 +5562,25 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> AirlightNode {
+fn airlight_outer_node(s_25: AirlightScene, g_23: AirlightOuter, x_20: f32) -> AirlightNode {
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_160: bool;
-    var local_161: bool;
-    var local_162: bool;
     var local_163: bool;
     var local_164: bool;
     var local_165: bool;
+    var local_166: bool;
+    var local_167: bool;
+    var local_168: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_24;
+    p = s_25;
     let _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_24.surface_kind != AIRLIGHT_SURFACE_NONE) {
+    if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_25 = min(u32(max(floor(x_20), 0f)), (g_23.panels - 1u));
         let t_7 = (x_20 - f32(i_25));
         let a_28 = g_23.gamma[i_25];
@@ -5566,51 +5593,51 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
         jacobian = (((w_7 * 6f) * t_7) * u_4);
         let _e58 = gamma_1;
         if smooth_b {
-            local_160 = !(smooth_a);
-        } else {
-            local_160 = false;
-        }
-        let _e66 = local_160;
-        gamma_1 = select(_e58, (a_28 + ((w_7 * t_7) * t_7)), _e66);
-        let _e68 = jacobian;
-        if smooth_b {
-            local_161 = !(smooth_a);
-        } else {
-            local_161 = false;
-        }
-        let _e75 = local_161;
-        jacobian = select(_e68, (w_7 * (t_7 + t_7)), _e75);
-        let _e77 = gamma_1;
-        if smooth_a {
-            local_162 = !(smooth_b);
-        } else {
-            local_162 = false;
-        }
-        let _e85 = local_162;
-        gamma_1 = select(_e77, (b_18 - ((w_7 * u_4) * u_4)), _e85);
-        let _e87 = jacobian;
-        if smooth_a {
-            local_163 = !(smooth_b);
+            local_163 = !(smooth_a);
         } else {
             local_163 = false;
         }
-        let _e94 = local_163;
-        jacobian = select(_e87, (w_7 * (u_4 + u_4)), _e94);
-        let _e96 = gamma_1;
-        if smooth_a {
-            local_164 = smooth_b;
+        let _e66 = local_163;
+        gamma_1 = select(_e58, (a_28 + ((w_7 * t_7) * t_7)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
+            local_164 = !(smooth_a);
         } else {
             local_164 = false;
         }
-        let _e102 = local_164;
-        gamma_1 = select(_e96, (a_28 + (w_7 * t_7)), _e102);
-        let _e104 = jacobian;
+        let _e75 = local_164;
+        jacobian = select(_e68, (w_7 * (t_7 + t_7)), _e75);
+        let _e77 = gamma_1;
         if smooth_a {
-            local_165 = smooth_b;
+            local_165 = !(smooth_b);
         } else {
             local_165 = false;
         }
-        let _e108 = local_165;
+        let _e85 = local_165;
+        gamma_1 = select(_e77, (b_18 - ((w_7 * u_4) * u_4)), _e85);
+        let _e87 = jacobian;
+        if smooth_a {
+            local_166 = !(smooth_b);
+        } else {
+            local_166 = false;
+        }
+        let _e94 = local_166;
+        jacobian = select(_e87, (w_7 * (u_4 + u_4)), _e94);
+        let _e96 = gamma_1;
+        if smooth_a {
+            local_167 = smooth_b;
+        } else {
+            local_167 = false;
+        }
+        let _e102 = local_167;
+        gamma_1 = select(_e96, (a_28 + (w_7 * t_7)), _e102);
+        let _e104 = jacobian;
+        if smooth_a {
+            local_168 = smooth_b;
+        } else {
+            local_168 = false;
+        }
+        let _e108 = local_168;
         jacobian = select(_e104, w_7, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -5624,15 +5651,15 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
             let _e128 = p;
             return AirlightNode(_e128, 0f, _e4, false);
         }
-        if (s_24.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        if (s_25.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
             let _e144 = airlight_cos_sin_half_turn(_e124);
             let arc = (2f * (((g_23.cos_a * _e119.x) * _e124) + ((g_23.sin_a * _e119.y) * _e144.y)));
-            weight = ((s_24.brdf_scale * 0.31830987f) * arc);
+            weight = ((s_25.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_4 = s_24.brdf_exponent;
+            let n_4 = s_25.brdf_exponent;
             let _e161 = gamma_1;
             let _e162 = airlight_lobe_arcs(g_23, _e119, _e161, _e124, n_4);
-            weight = (((s_24.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e162);
+            weight = (((s_25.brdf_scale * (n_4 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_23.l) + (_e119.y * g_23.u));
         p.t_min = 0f;
@@ -5647,7 +5674,7 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
         let _e210 = jacobian;
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
-    if (s_24.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_25.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_20;
         if (g_23.scale > 0f) {
             at_1 = (g_23.s_star + (g_23.scale * sinh(x_20)));
@@ -5664,15 +5691,15 @@ fn airlight_outer_node(s_24: AirlightScene, g_23: AirlightOuter, x_20: f32) -> A
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_166: bool;
+    var local_169: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_166 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_169 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_166 = true;
+        local_169 = true;
     }
-    let _e11 = local_166;
+    let _e11 = local_169;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -5681,18 +5708,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_167: bool;
+    var local_170: bool;
     var g_24: AirlightCanonical;
 
     let p_1 = n_2.scene;
     let _e7 = airlight_vec_finite(p_1.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_1.dir);
-        local_167 = _e11;
+        local_170 = _e11;
     } else {
-        local_167 = false;
+        local_170 = false;
     }
-    let _e13 = local_167;
+    let _e13 = local_170;
     if _e13 {
         g_24 = n_2.canonical;
         if !(n_2.exact) {
@@ -5709,24 +5736,24 @@ fn airlight_node_integral(n_2: AirlightNode) -> AirlightResult {
     return _e23;
 }
 
-fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_26: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_6: f32;
     var gauss_1: f32;
     var j_5: u32;
-    var local_168: bool;
+    var local_171: bool;
     var f: f32;
-    var local_169: bool;
+    var local_172: bool;
 
-    let _e1 = airlight_valid(s_25);
+    let _e1 = airlight_valid(s_26);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_25.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_26.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_25);
+    let _e12 = airlight_outer(s_26);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -5765,25 +5792,25 @@ fn airlight_in_scatter(s_25: AirlightScene) -> AirlightResult {
                     let _e74 = j_5;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_5;
-                        local_168 = (_e81 < 6u);
+                        local_171 = (_e81 < 6u);
                     } else {
-                        local_168 = false;
+                        local_171 = false;
                     }
-                    let _e85 = local_168;
+                    let _e85 = local_171;
                     let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e85);
-                    let _e87 = airlight_outer_node(s_25, _e12, w_8);
+                    let _e87 = airlight_outer_node(s_26, _e12, w_8);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_25.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_169 = (s_25.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_26.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_172 = (s_26.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_169 = false;
+                            local_172 = false;
                         }
-                        let _e106 = local_169;
+                        let _e106 = local_172;
                         if _e106 {
                             return _e93;
                         }

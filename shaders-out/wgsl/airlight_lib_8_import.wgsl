@@ -453,8 +453,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_15 = (x * x);
     let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
-    let s_52 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_52 * x));
+    let s_53 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_53 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -511,10 +511,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_53 = (x_2 / (2f + x_2));
-    let z_17 = (s_53 * s_53);
+    let s_54 = (x_2 / (2f + x_2));
+    let z_17 = (s_54 * s_54);
     let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
-    return ((2f * s_53) * sum_14);
+    return ((2f * s_54) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -3546,7 +3546,7 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_isotropic_scene(s_16: AirlightScene) -> bool {
+fn airlight_isotropic_phase(s_16: AirlightScene) -> bool {
     var local_50: bool;
     var local_51: bool;
     var local_52: bool;
@@ -3554,70 +3554,97 @@ fn airlight_isotropic_scene(s_16: AirlightScene) -> bool {
     var local_54: bool;
     var local_55: bool;
 
-    if !((s_16.light_kind == AIRLIGHT_LIGHT_OMNI)) {
-        if (s_16.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
-            local_51 = (s_16.light_param_a == 0f);
+    if !((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
+        if !((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
+            local_51 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
         } else {
-            local_51 = false;
+            local_51 = true;
         }
-        let _e16 = local_51;
-        local_50 = _e16;
+        let _e17 = local_51;
+        if _e17 {
+            local_52 = (s_16.phase_param_a == 0f);
+        } else {
+            local_52 = false;
+        }
+        let _e24 = local_52;
+        local_50 = _e24;
     } else {
         local_50 = true;
     }
-    let _e18 = local_50;
-    if _e18 {
-        if !((s_16.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-            if !((s_16.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-                local_54 = (s_16.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-            } else {
-                local_54 = true;
-            }
-            let _e37 = local_54;
-            if _e37 {
-                local_55 = (s_16.phase_param_a == 0f);
-            } else {
-                local_55 = false;
-            }
-            let _e44 = local_55;
-            local_53 = _e44;
+    let _e26 = local_50;
+    if !(_e26) {
+        if (s_16.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
+            local_54 = (s_16.phase_param_a == 0f);
         } else {
-            local_53 = true;
+            local_54 = false;
         }
-        let _e46 = local_53;
-        local_52 = _e46;
+        let _e39 = local_54;
+        if _e39 {
+            local_55 = (s_16.phase_param_b == 0f);
+        } else {
+            local_55 = false;
+        }
+        let _e46 = local_55;
+        local_53 = _e46;
     } else {
-        local_52 = false;
+        local_53 = true;
     }
-    let _e48 = local_52;
+    let _e48 = local_53;
     return _e48;
 }
 
-fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -> AirlightResult {
+fn airlight_isotropic_scene(s_17: AirlightScene) -> bool {
     var local_56: bool;
     var local_57: bool;
     var local_58: bool;
+
+    if !((s_17.light_kind == AIRLIGHT_LIGHT_OMNI)) {
+        if (s_17.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+            local_57 = (s_17.light_param_a == 0f);
+        } else {
+            local_57 = false;
+        }
+        let _e16 = local_57;
+        local_56 = _e16;
+    } else {
+        local_56 = true;
+    }
+    let _e18 = local_56;
+    if _e18 {
+        let _e21 = airlight_isotropic_phase(s_17);
+        local_58 = _e21;
+    } else {
+        local_58 = false;
+    }
+    let _e23 = local_58;
+    return _e23;
+}
+
+fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -> AirlightResult {
+    var local_59: bool;
+    var local_60: bool;
+    var local_61: bool;
     var total_3: f32 = 0f;
     var f_max_7: f32 = 0f;
     var behind_cut: bool = false;
     var t_end: f32;
-    var local_59: bool;
-    var half_13: AirlightHalf;
-    var local_60: bool;
-    var local_61: bool;
     var local_62: bool;
+    var half_13: AirlightHalf;
+    var local_63: bool;
+    var local_64: bool;
+    var local_65: bool;
     var y_lo: f32 = 0f;
     var dv_3: f32 = 0f;
     var dy: f32;
     var infinite_2: bool = true;
-    var local_63: bool;
-    var local_64: bool;
-    var half_14: AirlightHalf;
-    var local_65: bool;
     var local_66: bool;
     var local_67: bool;
+    var half_14: AirlightHalf;
+    var local_68: bool;
+    var local_69: bool;
+    var local_70: bool;
 
-    let _e2 = airlight_limits(s_17, g_20);
+    let _e2 = airlight_limits(s_18, g_20);
     if (_e2.status != AIRLIGHT_STATUS_DEFERRED) {
         return _e2;
     }
@@ -3625,32 +3652,32 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
     let t1_1 = g_20.t_hi;
     let h_6 = g_20.h;
     let x_h_1 = g_20.x_h;
-    let big_h_8 = (s_17.sigma_t * h_6);
-    let _e12 = airlight_isotropic_scene(s_17);
+    let big_h_8 = (s_18.sigma_t * h_6);
+    let _e12 = airlight_isotropic_scene(s_18);
     if _e12 {
-        local_56 = (t0_1 < x_h_1);
+        local_59 = (t0_1 < x_h_1);
     } else {
-        local_56 = false;
+        local_59 = false;
     }
-    let _e17 = local_56;
+    let _e17 = local_59;
     if _e17 {
         if !(g_20.t_hi_infinite) {
-            local_58 = (x_h_1 < t1_1);
+            local_61 = (x_h_1 < t1_1);
         } else {
-            local_58 = true;
+            local_61 = true;
         }
-        let _e26 = local_58;
-        local_57 = _e26;
+        let _e26 = local_61;
+        local_60 = _e26;
     } else {
-        local_57 = false;
+        local_60 = false;
     }
-    let _e28 = local_57;
+    let _e28 = local_60;
     if _e28 {
-        let _e29 = airlight_whole_line(s_17, g_20, big_h_8);
+        let _e29 = airlight_whole_line(s_18, g_20, big_h_8);
         return AirlightResult(max(_e29, 0f), AIRLIGHT_STATUS_OK);
     }
     if !(_e12) {
-        let _e35 = airlight_angle_route(s_17, g_20);
+        let _e35 = airlight_angle_route(s_18, g_20);
         if (_e35.x > 0.5f) {
             return AirlightResult(max(_e35.y, 0f), AIRLIGHT_STATUS_OK);
         }
@@ -3660,11 +3687,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_20.t_hi_infinite) {
-            local_59 = (t1_1 < x_h_1);
+            local_62 = (t1_1 < x_h_1);
         } else {
-            local_59 = false;
+            local_62 = false;
         }
-        let _e61 = local_59;
+        let _e61 = local_62;
         if _e61 {
             t_end = t1_1;
         }
@@ -3680,11 +3707,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
             let _e89 = half_13.big_h;
-            local_60 = (_e89 > 0f);
+            local_63 = (_e89 > 0f);
         } else {
-            local_60 = false;
+            local_63 = false;
         }
-        let _e93 = local_60;
+        let _e93 = local_63;
         if _e93 {
             let _e95 = half_13.big_h;
             let _e96 = airlight_cut_length(_e95, _e67, dy_1);
@@ -3695,24 +3722,24 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
             }
         }
         let _e106 = half_13;
-        let _e107 = airlight_half(s_17, g_20, -1f, _e106, _e12, (&f_max_7));
+        let _e107 = airlight_half(s_18, g_20, -1f, _e106, _e12, (&f_max_7));
         let _e108 = total_3;
-        let _e112 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, (big_h_8 * _e65), _e107);
+        let _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if !(g_20.t_hi_infinite) {
-        local_61 = (t1_1 > x_h_1);
+        local_64 = (t1_1 > x_h_1);
     } else {
-        local_61 = true;
+        local_64 = true;
     }
-    let _e120 = local_61;
+    let _e120 = local_64;
     if _e120 {
         let _e123 = behind_cut;
-        local_62 = !(_e123);
+        local_65 = !(_e123);
     } else {
-        local_62 = false;
+        local_65 = false;
     }
-    let _e126 = local_62;
+    let _e126 = local_65;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
         let a_s_2 = ((t_start - x_h_1) / h_6);
@@ -3722,22 +3749,22 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_20.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
-            local_63 = _e145;
+            local_66 = _e145;
         } else {
-            local_63 = false;
+            local_66 = false;
         }
-        let _e147 = local_63;
+        let _e147 = local_66;
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
             let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
-                local_64 = _e162;
+                local_67 = _e162;
             } else {
-                local_64 = false;
+                local_67 = false;
             }
-            let _e164 = local_64;
+            let _e164 = local_67;
             if _e164 {
                 y_lo = _e148;
                 dv_3 = dv_end_1;
@@ -3757,11 +3784,11 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
         half_14 = AirlightHalf(true, _e173, _e174, _e131, _e175, _e176, _e177);
         if cut_1 {
             let _e183 = half_14.big_h;
-            local_65 = (_e183 > 0f);
+            local_68 = (_e183 > 0f);
         } else {
-            local_65 = false;
+            local_68 = false;
         }
-        let _e187 = local_65;
+        let _e187 = local_68;
         if _e187 {
             let _e189 = half_14.big_h;
             let _e192 = dv_3;
@@ -3770,20 +3797,20 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
             let _e197 = infinite_2;
             if !(_e197) {
                 let _e201 = dv_3;
-                local_66 = (_e196 < _e201);
+                local_69 = (_e196 < _e201);
             } else {
-                local_66 = true;
+                local_69 = true;
             }
-            let _e204 = local_66;
+            let _e204 = local_69;
             if _e204 {
                 let cut_y_lo = (_e131 / (1f + (_e131 * _e196)));
                 if (cut_y_lo > 0f) {
                     let _e213 = airlight_is_finite(_e196);
-                    local_67 = _e213;
+                    local_70 = _e213;
                 } else {
-                    local_67 = false;
+                    local_70 = false;
                 }
-                let _e215 = local_67;
+                let _e215 = local_70;
                 if _e215 {
                     let _e218 = half_14.big_h;
                     half_14 = AirlightHalf(true, _e218, cut_y_lo, _e131, ((_e196 * cut_y_lo) * _e131), _e196, false);
@@ -3791,9 +3818,9 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
             }
         }
         let _e224 = half_14;
-        let _e225 = airlight_half(s_17, g_20, 1f, _e224, _e12, (&f_max_7));
+        let _e225 = airlight_half(s_18, g_20, 1f, _e224, _e12, (&f_max_7));
         let _e226 = total_3;
-        let _e234 = airlight_weighted(s_17.sigma_s, s_17.intensity, h_6, ((s_17.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        let _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     let _e236 = total_3;
@@ -3801,24 +3828,24 @@ fn airlight_in_scatter_canonical(s_17: AirlightScene, g_20: AirlightCanonical) -
 }
 
 fn airlight_vec_finite(v: vec3<f32>) -> bool {
-    var local_68: bool;
-    var local_69: bool;
+    var local_71: bool;
+    var local_72: bool;
 
     let _e2 = airlight_is_finite(v.x);
     if _e2 {
         let _e6 = airlight_is_finite(v.y);
-        local_68 = _e6;
+        local_71 = _e6;
     } else {
-        local_68 = false;
+        local_71 = false;
     }
-    let _e8 = local_68;
+    let _e8 = local_71;
     if _e8 {
         let _e12 = airlight_is_finite(v.z);
-        local_69 = _e12;
+        local_72 = _e12;
     } else {
-        local_69 = false;
+        local_72 = false;
     }
-    let _e14 = local_69;
+    let _e14 = local_72;
     return _e14;
 }
 
@@ -3831,16 +3858,16 @@ fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
-    var local_70: bool;
+    var local_73: bool;
 
     let _e1 = airlight_safe_length(v_2);
     if (_e1 > 0f) {
         let _e6 = airlight_is_finite(_e1);
-        local_70 = _e6;
+        local_73 = _e6;
     } else {
-        local_70 = false;
+        local_73 = false;
     }
-    let _e8 = local_70;
+    let _e8 = local_73;
     return _e8;
 }
 
@@ -3850,10 +3877,7 @@ fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     return (u_7 / vec3(length(u_7)));
 }
 
-fn airlight_valid(s_18: AirlightScene) -> bool {
-    var local_71: bool;
-    var local_72: bool;
-    var local_73: bool;
+fn airlight_valid(s_19: AirlightScene) -> bool {
     var local_74: bool;
     var local_75: bool;
     var local_76: bool;
@@ -3861,10 +3885,10 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     var local_78: bool;
     var local_79: bool;
     var local_80: bool;
-    var ok: bool;
     var local_81: bool;
     var local_82: bool;
     var local_83: bool;
+    var ok: bool;
     var local_84: bool;
     var local_85: bool;
     var local_86: bool;
@@ -3904,413 +3928,416 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     var local_120: bool;
     var local_121: bool;
     var local_122: bool;
+    var local_123: bool;
+    var local_124: bool;
+    var local_125: bool;
 
-    let _e2 = airlight_vec_finite(s_18.origin);
+    let _e2 = airlight_vec_finite(s_19.origin);
     if _e2 {
-        let _e6 = airlight_vec_finite(s_18.dir);
-        local_71 = _e6;
-    } else {
-        local_71 = false;
-    }
-    let _e8 = local_71;
-    if _e8 {
-        let _e12 = airlight_normalisable(s_18.dir);
-        local_72 = _e12;
-    } else {
-        local_72 = false;
-    }
-    let _e14 = local_72;
-    if _e14 {
-        let _e18 = airlight_is_finite(s_18.t_min);
-        local_73 = _e18;
-    } else {
-        local_73 = false;
-    }
-    let _e20 = local_73;
-    if _e20 {
-        let _e24 = airlight_vec_finite(s_18.light_position);
-        local_74 = _e24;
+        let _e6 = airlight_vec_finite(s_19.dir);
+        local_74 = _e6;
     } else {
         local_74 = false;
     }
-    let _e26 = local_74;
-    if _e26 {
-        let _e30 = airlight_is_finite(s_18.intensity);
-        local_75 = _e30;
+    let _e8 = local_74;
+    if _e8 {
+        let _e12 = airlight_normalisable(s_19.dir);
+        local_75 = _e12;
     } else {
         local_75 = false;
     }
-    let _e32 = local_75;
-    if _e32 {
-        local_76 = (s_18.intensity >= 0f);
+    let _e14 = local_75;
+    if _e14 {
+        let _e18 = airlight_is_finite(s_19.t_min);
+        local_76 = _e18;
     } else {
         local_76 = false;
     }
-    let _e39 = local_76;
-    if _e39 {
-        let _e43 = airlight_is_finite(s_18.sigma_s);
-        local_77 = _e43;
+    let _e20 = local_76;
+    if _e20 {
+        let _e24 = airlight_vec_finite(s_19.light_position);
+        local_77 = _e24;
     } else {
         local_77 = false;
     }
-    let _e45 = local_77;
-    if _e45 {
-        local_78 = (s_18.sigma_s >= 0f);
+    let _e26 = local_77;
+    if _e26 {
+        let _e30 = airlight_is_finite(s_19.intensity);
+        local_78 = _e30;
     } else {
         local_78 = false;
     }
-    let _e52 = local_78;
-    if _e52 {
-        let _e56 = airlight_is_finite(s_18.sigma_t);
-        local_79 = _e56;
+    let _e32 = local_78;
+    if _e32 {
+        local_79 = (s_19.intensity >= 0f);
     } else {
         local_79 = false;
     }
-    let _e58 = local_79;
-    if _e58 {
-        local_80 = (s_18.sigma_t >= 0f);
+    let _e39 = local_79;
+    if _e39 {
+        let _e43 = airlight_is_finite(s_19.sigma_s);
+        local_80 = _e43;
     } else {
         local_80 = false;
     }
-    let _e65 = local_80;
+    let _e45 = local_80;
+    if _e45 {
+        local_81 = (s_19.sigma_s >= 0f);
+    } else {
+        local_81 = false;
+    }
+    let _e52 = local_81;
+    if _e52 {
+        let _e56 = airlight_is_finite(s_19.sigma_t);
+        local_82 = _e56;
+    } else {
+        local_82 = false;
+    }
+    let _e58 = local_82;
+    if _e58 {
+        local_83 = (s_19.sigma_t >= 0f);
+    } else {
+        local_83 = false;
+    }
+    let _e65 = local_83;
     ok = _e65;
-    if ((s_18.flags & 1u) == 0u) {
+    if ((s_19.flags & 1u) == 0u) {
         let _e72 = ok;
         if _e72 {
-            let _e76 = airlight_is_finite(s_18.t_max);
-            local_81 = _e76;
-        } else {
-            local_81 = false;
-        }
-        let _e78 = local_81;
-        if _e78 {
-            local_82 = (s_18.t_min <= s_18.t_max);
-        } else {
-            local_82 = false;
-        }
-        let _e85 = local_82;
-        ok = _e85;
-    }
-    if (s_18.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        let _e89 = ok;
-        if _e89 {
-            let _e93 = airlight_vec_finite(s_18.light_end);
-            local_83 = _e93;
-        } else {
-            local_83 = false;
-        }
-        let _e95 = local_83;
-        ok = _e95;
-    } else {
-        if (s_18.light_shape >= AIRLIGHT_SHAPE_DISC) {
-            local_84 = (s_18.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+            let _e76 = airlight_is_finite(s_19.t_max);
+            local_84 = _e76;
         } else {
             local_84 = false;
         }
-        let _e105 = local_84;
+        let _e78 = local_84;
+        if _e78 {
+            local_85 = (s_19.t_min <= s_19.t_max);
+        } else {
+            local_85 = false;
+        }
+        let _e85 = local_85;
+        ok = _e85;
+    }
+    if (s_19.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+        let _e89 = ok;
+        if _e89 {
+            let _e93 = airlight_vec_finite(s_19.light_end);
+            local_86 = _e93;
+        } else {
+            local_86 = false;
+        }
+        let _e95 = local_86;
+        ok = _e95;
+    } else {
+        if (s_19.light_shape >= AIRLIGHT_SHAPE_DISC) {
+            local_87 = (s_19.light_shape <= AIRLIGHT_SHAPE_SPHERE);
+        } else {
+            local_87 = false;
+        }
+        let _e105 = local_87;
         if _e105 {
             let _e106 = ok;
             if _e106 {
-                local_85 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
-            } else {
-                local_85 = false;
-            }
-            let _e113 = local_85;
-            if _e113 {
-                local_86 = (s_18.light_param_b >= 1f);
-            } else {
-                local_86 = false;
-            }
-            let _e120 = local_86;
-            if _e120 {
-                local_87 = (s_18.light_param_b <= 1024f);
-            } else {
-                local_87 = false;
-            }
-            let _e127 = local_87;
-            if _e127 {
-                local_88 = (fract(s_18.light_param_b) == 0f);
+                local_88 = (s_19.light_kind == AIRLIGHT_LIGHT_OMNI);
             } else {
                 local_88 = false;
             }
-            let _e135 = local_88;
+            let _e113 = local_88;
+            if _e113 {
+                local_89 = (s_19.light_param_b >= 1f);
+            } else {
+                local_89 = false;
+            }
+            let _e120 = local_89;
+            if _e120 {
+                local_90 = (s_19.light_param_b <= 1024f);
+            } else {
+                local_90 = false;
+            }
+            let _e127 = local_90;
+            if _e127 {
+                local_91 = (fract(s_19.light_param_b) == 0f);
+            } else {
+                local_91 = false;
+            }
+            let _e135 = local_91;
             ok = _e135;
-            if (s_18.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
+            if (s_19.light_shape == AIRLIGHT_SHAPE_RECTANGLE) {
                 let _e139 = ok;
                 if _e139 {
-                    let _e143 = airlight_vec_finite(s_18.light_axis);
-                    local_89 = _e143;
-                } else {
-                    local_89 = false;
-                }
-                let _e145 = local_89;
-                if _e145 {
-                    let _e149 = airlight_normalisable(s_18.light_axis);
-                    local_90 = _e149;
-                } else {
-                    local_90 = false;
-                }
-                let _e151 = local_90;
-                if _e151 {
-                    let _e155 = airlight_vec_finite(s_18.light_end);
-                    local_91 = _e155;
-                } else {
-                    local_91 = false;
-                }
-                let _e157 = local_91;
-                if _e157 {
-                    let _e161 = airlight_normalisable(s_18.light_end);
-                    local_92 = _e161;
+                    let _e143 = airlight_vec_finite(s_19.light_axis);
+                    local_92 = _e143;
                 } else {
                     local_92 = false;
                 }
-                let _e163 = local_92;
-                if _e163 {
-                    let _e167 = airlight_normalize(s_18.light_axis);
-                    let _e169 = airlight_normalize(s_18.light_end);
-                    let _e171 = airlight_safe_length(cross(_e167, _e169));
-                    local_93 = (_e171 > AIRLIGHT_FLT_EPS);
+                let _e145 = local_92;
+                if _e145 {
+                    let _e149 = airlight_normalisable(s_19.light_axis);
+                    local_93 = _e149;
                 } else {
                     local_93 = false;
                 }
-                let _e175 = local_93;
+                let _e151 = local_93;
+                if _e151 {
+                    let _e155 = airlight_vec_finite(s_19.light_end);
+                    local_94 = _e155;
+                } else {
+                    local_94 = false;
+                }
+                let _e157 = local_94;
+                if _e157 {
+                    let _e161 = airlight_normalisable(s_19.light_end);
+                    local_95 = _e161;
+                } else {
+                    local_95 = false;
+                }
+                let _e163 = local_95;
+                if _e163 {
+                    let _e167 = airlight_normalize(s_19.light_axis);
+                    let _e169 = airlight_normalize(s_19.light_end);
+                    let _e171 = airlight_safe_length(cross(_e167, _e169));
+                    local_96 = (_e171 > AIRLIGHT_FLT_EPS);
+                } else {
+                    local_96 = false;
+                }
+                let _e175 = local_96;
                 ok = _e175;
             } else {
                 let _e176 = ok;
                 if _e176 {
-                    let _e180 = airlight_is_finite(s_18.light_param_a);
-                    local_94 = _e180;
+                    let _e180 = airlight_is_finite(s_19.light_param_a);
+                    local_97 = _e180;
                 } else {
-                    local_94 = false;
+                    local_97 = false;
                 }
-                let _e182 = local_94;
+                let _e182 = local_97;
                 if _e182 {
-                    local_95 = (s_18.light_param_a >= 0f);
+                    local_98 = (s_19.light_param_a >= 0f);
                 } else {
-                    local_95 = false;
+                    local_98 = false;
                 }
-                let _e189 = local_95;
+                let _e189 = local_98;
                 ok = _e189;
-                if (s_18.light_shape == AIRLIGHT_SHAPE_DISC) {
+                if (s_19.light_shape == AIRLIGHT_SHAPE_DISC) {
                     let _e193 = ok;
                     if _e193 {
-                        let _e197 = airlight_vec_finite(s_18.light_axis);
-                        local_96 = _e197;
+                        let _e197 = airlight_vec_finite(s_19.light_axis);
+                        local_99 = _e197;
                     } else {
-                        local_96 = false;
+                        local_99 = false;
                     }
-                    let _e199 = local_96;
+                    let _e199 = local_99;
                     if _e199 {
-                        let _e203 = airlight_normalisable(s_18.light_axis);
-                        local_97 = _e203;
+                        let _e203 = airlight_normalisable(s_19.light_axis);
+                        local_100 = _e203;
                     } else {
-                        local_97 = false;
+                        local_100 = false;
                     }
-                    let _e205 = local_97;
+                    let _e205 = local_100;
                     ok = _e205;
                 }
             }
         } else {
-            if (s_18.light_shape != AIRLIGHT_SHAPE_POINT) {
+            if (s_19.light_shape != AIRLIGHT_SHAPE_POINT) {
                 ok = false;
             }
         }
     }
-    if !((s_18.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
-        local_98 = (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG);
+    if !((s_19.surface_kind == AIRLIGHT_SURFACE_LAMBERT)) {
+        local_101 = (s_19.surface_kind == AIRLIGHT_SURFACE_PHONG);
     } else {
-        local_98 = true;
+        local_101 = true;
     }
-    let _e220 = local_98;
+    let _e220 = local_101;
     if _e220 {
         let _e221 = ok;
         if _e221 {
-            let _e225 = airlight_is_finite(s_18.brdf_scale);
-            local_99 = _e225;
-        } else {
-            local_99 = false;
-        }
-        let _e227 = local_99;
-        if _e227 {
-            local_100 = (s_18.brdf_scale >= 0f);
-        } else {
-            local_100 = false;
-        }
-        let _e234 = local_100;
-        if _e234 {
-            local_101 = (s_18.light_kind == AIRLIGHT_LIGHT_OMNI);
-        } else {
-            local_101 = false;
-        }
-        let _e241 = local_101;
-        if _e241 {
-            local_102 = (s_18.light_shape == AIRLIGHT_SHAPE_POINT);
+            let _e225 = airlight_is_finite(s_19.brdf_scale);
+            local_102 = _e225;
         } else {
             local_102 = false;
         }
-        let _e248 = local_102;
-        if _e248 {
-            let _e254 = airlight_safe_length((s_18.light_position - s_18.origin));
-            let _e255 = airlight_is_finite(_e254);
-            local_103 = _e255;
+        let _e227 = local_102;
+        if _e227 {
+            local_103 = (s_19.brdf_scale >= 0f);
         } else {
             local_103 = false;
         }
-        let _e257 = local_103;
+        let _e234 = local_103;
+        if _e234 {
+            local_104 = (s_19.light_kind == AIRLIGHT_LIGHT_OMNI);
+        } else {
+            local_104 = false;
+        }
+        let _e241 = local_104;
+        if _e241 {
+            local_105 = (s_19.light_shape == AIRLIGHT_SHAPE_POINT);
+        } else {
+            local_105 = false;
+        }
+        let _e248 = local_105;
+        if _e248 {
+            let _e254 = airlight_safe_length((s_19.light_position - s_19.origin));
+            let _e255 = airlight_is_finite(_e254);
+            local_106 = _e255;
+        } else {
+            local_106 = false;
+        }
+        let _e257 = local_106;
         ok = _e257;
-        if (s_18.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+        if (s_19.surface_kind == AIRLIGHT_SURFACE_PHONG) {
             let _e261 = ok;
             if _e261 {
-                let _e265 = airlight_is_finite(s_18.brdf_exponent);
-                local_104 = _e265;
-            } else {
-                local_104 = false;
-            }
-            let _e267 = local_104;
-            if _e267 {
-                local_105 = (s_18.brdf_exponent >= 0f);
-            } else {
-                local_105 = false;
-            }
-            let _e274 = local_105;
-            if _e274 {
-                let _e278 = airlight_vec_finite(s_18.brdf_view);
-                local_106 = _e278;
-            } else {
-                local_106 = false;
-            }
-            let _e280 = local_106;
-            if _e280 {
-                let _e284 = airlight_normalisable(s_18.brdf_view);
-                local_107 = _e284;
+                let _e265 = airlight_is_finite(s_19.brdf_exponent);
+                local_107 = _e265;
             } else {
                 local_107 = false;
             }
-            let _e286 = local_107;
+            let _e267 = local_107;
+            if _e267 {
+                local_108 = (s_19.brdf_exponent >= 0f);
+            } else {
+                local_108 = false;
+            }
+            let _e274 = local_108;
+            if _e274 {
+                let _e278 = airlight_vec_finite(s_19.brdf_view);
+                local_109 = _e278;
+            } else {
+                local_109 = false;
+            }
+            let _e280 = local_109;
+            if _e280 {
+                let _e284 = airlight_normalisable(s_19.brdf_view);
+                local_110 = _e284;
+            } else {
+                local_110 = false;
+            }
+            let _e286 = local_110;
             ok = _e286;
         }
     } else {
-        if (s_18.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        if (s_19.surface_kind != AIRLIGHT_SURFACE_NONE) {
             ok = false;
         }
     }
-    if (s_18.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
+    if (s_19.light_kind == AIRLIGHT_LIGHT_TWO_LOBED) {
         let _e294 = ok;
         if _e294 {
-            let _e298 = airlight_vec_finite(s_18.light_axis);
-            local_108 = _e298;
-        } else {
-            local_108 = false;
-        }
-        let _e300 = local_108;
-        if _e300 {
-            let _e304 = airlight_normalisable(s_18.light_axis);
-            local_109 = _e304;
-        } else {
-            local_109 = false;
-        }
-        let _e306 = local_109;
-        if _e306 {
-            local_110 = (s_18.light_param_a >= 0f);
-        } else {
-            local_110 = false;
-        }
-        let _e313 = local_110;
-        if _e313 {
-            local_111 = (s_18.light_param_a <= 1024f);
+            let _e298 = airlight_vec_finite(s_19.light_axis);
+            local_111 = _e298;
         } else {
             local_111 = false;
         }
-        let _e320 = local_111;
-        if _e320 {
-            local_112 = (fract((s_18.light_param_a * 0.5f)) == 0f);
+        let _e300 = local_111;
+        if _e300 {
+            let _e304 = airlight_normalisable(s_19.light_axis);
+            local_112 = _e304;
         } else {
             local_112 = false;
         }
-        let _e330 = local_112;
+        let _e306 = local_112;
+        if _e306 {
+            local_113 = (s_19.light_param_a >= 0f);
+        } else {
+            local_113 = false;
+        }
+        let _e313 = local_113;
+        if _e313 {
+            local_114 = (s_19.light_param_a <= 1024f);
+        } else {
+            local_114 = false;
+        }
+        let _e320 = local_114;
+        if _e320 {
+            local_115 = (fract((s_19.light_param_a * 0.5f)) == 0f);
+        } else {
+            local_115 = false;
+        }
+        let _e330 = local_115;
         ok = _e330;
     } else {
-        if (s_18.light_kind == AIRLIGHT_LIGHT_SPOT) {
+        if (s_19.light_kind == AIRLIGHT_LIGHT_SPOT) {
             let _e334 = ok;
             if _e334 {
-                let _e338 = airlight_vec_finite(s_18.light_axis);
-                local_113 = _e338;
-            } else {
-                local_113 = false;
-            }
-            let _e340 = local_113;
-            if _e340 {
-                let _e344 = airlight_normalisable(s_18.light_axis);
-                local_114 = _e344;
-            } else {
-                local_114 = false;
-            }
-            let _e346 = local_114;
-            if _e346 {
-                local_115 = (s_18.light_param_b < s_18.light_param_a);
-            } else {
-                local_115 = false;
-            }
-            let _e353 = local_115;
-            if _e353 {
-                local_116 = (s_18.light_param_b >= -1f);
+                let _e338 = airlight_vec_finite(s_19.light_axis);
+                local_116 = _e338;
             } else {
                 local_116 = false;
             }
-            let _e360 = local_116;
-            if _e360 {
-                local_117 = (s_18.light_param_a <= 1f);
+            let _e340 = local_116;
+            if _e340 {
+                let _e344 = airlight_normalisable(s_19.light_axis);
+                local_117 = _e344;
             } else {
                 local_117 = false;
             }
-            let _e367 = local_117;
+            let _e346 = local_117;
+            if _e346 {
+                local_118 = (s_19.light_param_b < s_19.light_param_a);
+            } else {
+                local_118 = false;
+            }
+            let _e353 = local_118;
+            if _e353 {
+                local_119 = (s_19.light_param_b >= -1f);
+            } else {
+                local_119 = false;
+            }
+            let _e360 = local_119;
+            if _e360 {
+                local_120 = (s_19.light_param_a <= 1f);
+            } else {
+                local_120 = false;
+            }
+            let _e367 = local_120;
             ok = _e367;
         } else {
-            if (s_18.light_kind != AIRLIGHT_LIGHT_OMNI) {
+            if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
                 ok = false;
             }
         }
     }
-    let g_ok = (abs(s_18.phase_param_a) < 1f);
-    switch s_18.phase_kind {
+    let g_ok = (abs(s_19.phase_param_a) < 1f);
+    switch s_19.phase_kind {
         case 0u, 1u: {
         }
         case 2u, 3u, 4u: {
             let _e377 = ok;
             if _e377 {
-                local_118 = g_ok;
+                local_121 = g_ok;
             } else {
-                local_118 = false;
+                local_121 = false;
             }
-            let _e381 = local_118;
+            let _e381 = local_121;
             ok = _e381;
         }
         case 5u: {
             let _e382 = ok;
             if _e382 {
-                local_119 = g_ok;
-            } else {
-                local_119 = false;
-            }
-            let _e386 = local_119;
-            if _e386 {
-                local_120 = (abs(s_18.phase_param_b) < 1f);
-            } else {
-                local_120 = false;
-            }
-            let _e394 = local_120;
-            if _e394 {
-                local_121 = (s_18.phase_param_c >= 0f);
-            } else {
-                local_121 = false;
-            }
-            let _e401 = local_121;
-            if _e401 {
-                local_122 = (s_18.phase_param_c <= 1f);
+                local_122 = g_ok;
             } else {
                 local_122 = false;
             }
-            let _e408 = local_122;
+            let _e386 = local_122;
+            if _e386 {
+                local_123 = (abs(s_19.phase_param_b) < 1f);
+            } else {
+                local_123 = false;
+            }
+            let _e394 = local_123;
+            if _e394 {
+                local_124 = (s_19.phase_param_c >= 0f);
+            } else {
+                local_124 = false;
+            }
+            let _e401 = local_124;
+            if _e401 {
+                local_125 = (s_19.phase_param_c <= 1f);
+            } else {
+                local_125 = false;
+            }
+            let _e408 = local_125;
             ok = _e408;
         }
         default: {
@@ -4321,16 +4348,16 @@ fn airlight_valid(s_18: AirlightScene) -> bool {
     return _e410;
 }
 
-fn airlight_canonical(s_19: AirlightScene) -> AirlightCanonical {
+fn airlight_canonical(s_20: AirlightScene) -> AirlightCanonical {
     var a_12: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var d_c_1: f32 = 0f;
 
-    let _e2 = airlight_normalize(s_19.dir);
-    if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e12 = airlight_normalize(s_19.light_axis);
+    let _e2 = airlight_normalize(s_20.dir);
+    if (s_20.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e12 = airlight_normalize(s_20.light_axis);
         a_12 = _e12;
     }
-    let to_light = (s_19.light_position - s_19.origin);
+    let to_light = (s_20.light_position - s_20.origin);
     let x_h_2 = dot(to_light, _e2);
     let perp = ((x_h_2 * _e2) - to_light);
     let _e19 = airlight_safe_length(perp);
@@ -4338,10 +4365,10 @@ fn airlight_canonical(s_19: AirlightScene) -> AirlightCanonical {
         let _e24 = a_12;
         d_c_1 = (dot(perp, _e24) / _e19);
     }
-    let infinite_4 = ((s_19.flags & 1u) != 0u);
+    let infinite_4 = ((s_20.flags & 1u) != 0u);
     let _e32 = a_12;
     let _e34 = d_c_1;
-    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_19.t_min, select(s_19.t_max, 0f, infinite_4), infinite_4);
+    return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_20.t_min, select(s_20.t_max, 0f, infinite_4), infinite_4);
 }
 
 fn airlight_opaque(x_13: f32, key: u32) -> f32 {
@@ -4381,46 +4408,46 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
 }
 
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
-    var local_123: bool;
-    var local_124: bool;
+    var local_126: bool;
+    var local_127: bool;
 
     let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
     if !((m_9 == 0f)) {
         if (m_9 >= 0.0000000009313226f) {
-            local_124 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
         } else {
-            local_124 = false;
+            local_127 = false;
         }
-        let _e21 = local_124;
-        local_123 = _e21;
+        let _e21 = local_127;
+        local_126 = _e21;
     } else {
-        local_123 = true;
+        local_126 = true;
     }
-    let _e23 = local_123;
+    let _e23 = local_126;
     return _e23;
 }
 
-fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
-    var local_125: bool;
+fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+    var local_128: bool;
     var out_2: AirlightCanonical;
-    var local_126: bool;
+    var local_129: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_20.flags > 1u));
-    let _e11 = airlight_two_sum(s_20.light_position.x, -(s_20.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_20.light_position.y, -(s_20.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_20.light_position.z, -(s_20.origin.z), key_4);
+    let key_4 = u32((s_21.flags > 1u));
+    let _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_4);
+    let _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_4);
+    let _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_4);
     let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_20.dir;
+    let dir_2 = s_21.dir;
     let _e33 = airlight_in_exact_range(hi_6);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
-        local_125 = !(_e38);
+        local_128 = !(_e38);
     } else {
-        local_125 = true;
+        local_128 = true;
     }
-    let _e41 = local_125;
+    let _e41 = local_128;
     if _e41 {
         return plain;
     }
@@ -4444,16 +4471,16 @@ fn airlight_refined(s_20: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_126 = (h_7 > 0f);
+        local_129 = (h_7 > 0f);
     } else {
-        local_126 = false;
+        local_129 = false;
     }
-    let _e101 = local_126;
+    let _e101 = local_129;
     if !(_e101) {
         return plain;
     }
-    if (s_20.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_20.light_axis);
+    if (s_21.light_kind != AIRLIGHT_LIGHT_OMNI) {
+        let _e112 = airlight_normalize(s_21.light_axis);
         a_16 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
@@ -4784,7 +4811,7 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_127: bool;
+    var local_130: bool;
 
     cuts_1 = unsorted;
     let _e5 = cuts_1[1];
@@ -4826,11 +4853,11 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
             if (_e50 > _e54) {
                 let _e58 = i_18;
                 let _e60 = cuts_1[_e58];
-                local_127 = (_e60 < hi_3);
+                local_130 = (_e60 < hi_3);
             } else {
-                local_127 = false;
+                local_130 = false;
             }
-            let _e63 = local_127;
+            let _e63 = local_130;
             if _e63 {
                 let _e64 = n_1;
                 n_1 = (_e64 + 1u);
@@ -4855,9 +4882,9 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
-    var local_128: bool;
-    var local_129: bool;
-    var local_130: bool;
+    var local_131: bool;
+    var local_132: bool;
+    var local_133: bool;
 
     loop {
         let _e6 = tries;
@@ -4869,18 +4896,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_128 = (count_2 == max_panels);
+                local_131 = (count_2 == max_panels);
             } else {
-                local_128 = true;
+                local_131 = true;
             }
-            let _e21 = local_128;
+            let _e21 = local_131;
             if !(_e21) {
                 let _e26 = airlight_is_finite(_e9.total);
-                local_129 = !(_e26);
+                local_132 = !(_e26);
             } else {
-                local_129 = true;
+                local_132 = true;
             }
-            let _e29 = local_129;
+            let _e29 = local_132;
             if _e29 {
                 break;
             }
@@ -4888,11 +4915,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_2 = (0.5f * (_e32.x + _e32.y));
             if (mid_2 > _e32.x) {
-                local_130 = (mid_2 < _e32.y);
+                local_133 = (mid_2 < _e32.y);
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            let _e45 = local_130;
+            let _e45 = local_133;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -4973,12 +5000,12 @@ fn airlight_asinh(x_15: f32) -> f32 {
     return select(_e18, -(_e19), (x_15 < 0f));
 }
 
-fn airlight_to_w(g_21: AirlightOuter, s_21: f32) -> f32 {
+fn airlight_to_w(g_21: AirlightOuter, s_22: f32) -> f32 {
     if (g_21.scale > 0f) {
-        let _e9 = airlight_asinh(((s_21 - g_21.s_star) / g_21.scale));
+        let _e9 = airlight_asinh(((s_22 - g_21.s_star) / g_21.scale));
         return _e9;
     }
-    return s_21;
+    return s_22;
 }
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
@@ -4995,8 +5022,8 @@ fn airlight_acos(x_17: f32) -> f32 {
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_22: f32) -> f32 {
-    let _e2 = airlight_atan2_upper(s_22, c_6);
+fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
+    let _e2 = airlight_atan2_upper(s_23, c_6);
     return _e2;
 }
 
@@ -5010,40 +5037,40 @@ fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
     return _e18;
 }
 
-fn airlight_outer_point(s_23: AirlightScene, max_panels_2: u32) -> AirlightOuter {
+fn airlight_outer_point(s_24: AirlightScene, max_panels_2: u32) -> AirlightOuter {
     let zeros = array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
-    return AirlightOuter(s_23.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
+    return AirlightOuter(s_24.light_position, vec3(0f), 0f, 0f, zeros, 1u, 0u, max_panels_2, vec3(0f), vec3(0f), 0f, 0f, zeros, 0f, 0f, 0f, vec3<f32>(0f, 1f, 0f), 0f, 0f, 0f, 0u);
 }
 
-fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
+fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_131: bool;
+    var local_134: bool;
     var u_1: vec3<f32>;
     var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_19: u32 = 1u;
     var j_4: u32;
-    var local_132: bool;
+    var local_135: bool;
     var k_5: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_133: bool;
+    var local_136: bool;
     var i_21: u32 = 0u;
     var i_22: u32 = 1u;
-    var local_134: bool;
-    var local_135: bool;
-    var local_136: bool;
     var local_137: bool;
     var local_138: bool;
+    var local_139: bool;
+    var local_140: bool;
+    var local_141: bool;
 
-    let _e2 = airlight_outer_point(s_24, AIRLIGHT_SURFACE_PANELS);
+    let _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
-    let to_light_1 = (s_24.light_position - s_24.origin);
+    let to_light_1 = (s_25.light_position - s_25.origin);
     let _e7 = airlight_safe_length(to_light_1);
-    if !((s_24.intensity == 0f)) {
-        local_131 = (s_24.sigma_s == 0f);
+    if !((s_25.intensity == 0f)) {
+        local_134 = (s_25.sigma_s == 0f);
     } else {
-        local_131 = true;
+        local_134 = true;
     }
-    let _e18 = local_131;
+    let _e18 = local_134;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -5054,13 +5081,13 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         let _e27 = g_22;
         return _e27;
     }
-    if (s_24.brdf_scale == 0f) {
+    if (s_25.brdf_scale == 0f) {
         g_22.outcome = 1u;
         let _e33 = g_22;
         return _e33;
     }
     let l_3 = (to_light_1 / vec3(_e7));
-    let _e37 = airlight_normalize(s_24.dir);
+    let _e37 = airlight_normalize(s_25.dir);
     let cos_a_1 = dot(_e37, l_3);
     let across = (_e37 - (cos_a_1 * l_3));
     let _e41 = airlight_safe_length(across);
@@ -5074,7 +5101,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     let _e67 = u_1;
     g_22.u = _e67;
     g_22.d = _e7;
-    let _e70 = airlight_normalize(s_24.light_axis);
+    let _e70 = airlight_normalize(s_25.light_axis);
     g_22.axis_l = dot(_e70, l_3);
     let _e74 = u_1;
     g_22.axis_u = dot(_e70, _e74);
@@ -5084,9 +5111,9 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
     let first_1 = abs((1.5707964f - _e92));
     cuts_2[0] = first_1;
     cuts_2[1] = (AIRLIGHT_PI - first_1);
-    if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_25.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
-        let _e105 = airlight_normalize(s_24.brdf_view);
+        let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
         let x_35 = dot(_e111, _e112);
@@ -5112,8 +5139,8 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
         cuts_2[3] = (AIRLIGHT_PI - first_r);
         let _e163 = g_22.alpha_r;
         cuts_2[4] = _e163;
-        if (s_24.brdf_exponent > 1f) {
-            let width_3 = (1f / sqrt(s_24.brdf_exponent));
+        if (s_25.brdf_exponent > 1f) {
+            let width_3 = (1f / sqrt(s_25.brdf_exponent));
             let _e173 = g_22.alpha_r;
             cuts_2[5] = (_e173 - (1.5f * width_3));
             let _e179 = g_22.alpha_r;
@@ -5154,11 +5181,11 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_132 = (_e241 > c_14);
+                    local_135 = (_e241 > c_14);
                 } else {
-                    local_132 = false;
+                    local_135 = false;
                 }
-                let _e244 = local_132;
+                let _e244 = local_135;
                 if _e244 {
                 } else {
                     break;
@@ -5196,11 +5223,11 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_133 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_7);
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            let _e294 = local_133;
+            let _e294 = local_136;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5236,7 +5263,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
             i_21 = (_e328 + 1u);
         }
     }
-    if (s_24.surface_kind == AIRLIGHT_SURFACE_PHONG) {
+    if (s_25.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         loop {
             let _e335 = i_22;
             let _e336 = k_5;
@@ -5248,35 +5275,35 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
                 let _e339 = i_22;
                 let e_12 = g_22.gamma[_e339];
                 if !((e_12 == kinks[0])) {
-                    local_134 = (e_12 == kinks[1]);
-                } else {
-                    local_134 = true;
-                }
-                let _e350 = local_134;
-                if !(_e350) {
-                    local_135 = (e_12 == kinks[2]);
-                } else {
-                    local_135 = true;
-                }
-                let _e357 = local_135;
-                if !(_e357) {
-                    local_136 = (e_12 == kinks[3]);
-                } else {
-                    local_136 = true;
-                }
-                let _e364 = local_136;
-                if !(_e364) {
-                    local_137 = (e_12 == kinks[4]);
+                    local_137 = (e_12 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
-                let _e371 = local_137;
-                if !(_e371) {
-                    local_138 = (e_12 == kinks[5]);
+                let _e350 = local_137;
+                if !(_e350) {
+                    local_138 = (e_12 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
-                let kink = local_138;
+                let _e357 = local_138;
+                if !(_e357) {
+                    local_139 = (e_12 == kinks[3]);
+                } else {
+                    local_139 = true;
+                }
+                let _e364 = local_139;
+                if !(_e364) {
+                    local_140 = (e_12 == kinks[4]);
+                } else {
+                    local_140 = true;
+                }
+                let _e371 = local_140;
+                if !(_e371) {
+                    local_141 = (e_12 == kinks[5]);
+                } else {
+                    local_141 = true;
+                }
+                let kink = local_141;
                 let _e380 = g_22.smooth_edges;
                 let _e382 = i_22;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -5292,7 +5319,7 @@ fn airlight_surface(s_24: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
-    var local_139: bool;
+    var local_142: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_18));
     let s2_ = (_e4.y * _e4.y);
@@ -5303,11 +5330,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_139 = (clip > 0f);
+        local_142 = (clip > 0f);
     } else {
-        local_139 = false;
+        local_142 = false;
     }
-    let _e43 = local_139;
+    let _e43 = local_142;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5326,7 +5353,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_140: bool;
+    var local_143: bool;
 
     end_1 = x_19;
     let _e3 = end_1;
@@ -5343,11 +5370,11 @@ fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_140 = (_e21 < cut);
+        local_143 = (_e21 < cut);
     } else {
-        local_140 = false;
+        local_143 = false;
     }
-    let _e24 = local_140;
+    let _e24 = local_143;
     return select(0f, _e15, _e24);
 }
 
@@ -5356,18 +5383,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
-    var local_141: bool;
+    var local_144: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
     let w_8 = (hi_5 - lo_6);
     if !(!((w_8 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_8)));
-        local_141 = !((_e14 > 0f));
+        local_144 = !((_e14 > 0f));
     } else {
-        local_141 = true;
+        local_144 = true;
     }
-    let _e19 = local_141;
+    let _e19 = local_144;
     if _e19 {
         return 0f;
     }
@@ -5458,70 +5485,70 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     return _e114;
 }
 
-fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
+fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_142: bool;
-    var local_143: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_144: bool;
     var local_145: bool;
     var local_146: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_147: bool;
     var local_148: bool;
     var local_149: bool;
-    var scale: f32 = 0f;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
+    var scale: f32 = 0f;
     var local_153: bool;
     var local_154: bool;
-    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
     var local_155: bool;
-    var i_24: u32 = 0u;
     var local_156: bool;
     var local_157: bool;
+    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_158: bool;
+    var i_24: u32 = 0u;
     var local_159: bool;
+    var local_160: bool;
+    var local_161: bool;
+    var local_162: bool;
 
-    if (s_25.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let _e4 = airlight_surface(s_25);
+    if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
+        let _e4 = airlight_surface(s_26);
         return _e4;
     }
-    let _e6 = airlight_outer_point(s_25, AIRLIGHT_SEGMENT_PANELS);
+    let _e6 = airlight_outer_point(s_26, AIRLIGHT_SEGMENT_PANELS);
     g_24 = _e6;
-    if (s_25.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_26.light_shape != AIRLIGHT_SHAPE_SEGMENT) {
         let _e11 = g_24;
         return _e11;
     }
-    let ab_1 = (s_25.light_end - s_25.light_position);
+    let ab_1 = (s_26.light_end - s_26.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_142 = (s_25.intensity == 0f);
+        local_145 = (s_26.intensity == 0f);
     } else {
-        local_142 = true;
+        local_145 = true;
     }
-    let _e26 = local_142;
+    let _e26 = local_145;
     if !(_e26) {
-        local_143 = (s_25.sigma_s == 0f);
+        local_146 = (s_26.sigma_s == 0f);
     } else {
-        local_143 = true;
+        local_146 = true;
     }
-    let _e34 = local_143;
+    let _e34 = local_146;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
         return _e37;
     }
     let e_13 = (ab_1 / vec3(_e15));
-    let _e41 = airlight_normalize(s_25.dir);
-    let w0_ = (s_25.light_position - s_25.origin);
+    let _e41 = airlight_normalize(s_26.dir);
+    let w0_ = (s_26.light_position - s_26.origin);
     let cos_a_2 = dot(e_13, _e41);
     let along_e = dot(e_13, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
-    let infinite_5 = ((s_25.flags & 1u) != 0u);
+    let infinite_5 = ((s_26.flags & 1u) != 0u);
     t_star = along_d;
     if (sin2_ > AIRLIGHT_FLT_EPS) {
         s_star = (((cos_a_2 * along_d) - along_e) / sin2_);
@@ -5532,94 +5559,94 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_144 = (sin_a_1 > 0f);
-    } else {
-        local_144 = false;
-    }
-    let _e84 = local_144;
-    if _e84 {
-        let _e87 = s_star;
-        local_145 = (_e87 >= 0f);
-    } else {
-        local_145 = false;
-    }
-    let _e91 = local_145;
-    if _e91 {
-        let _e94 = s_star;
-        local_146 = (_e94 <= _e15);
-    } else {
-        local_146 = false;
-    }
-    let _e97 = local_146;
-    if _e97 {
-        let _e101 = t_star;
-        local_147 = (s_25.t_min <= _e101);
+        local_147 = (sin_a_1 > 0f);
     } else {
         local_147 = false;
     }
-    let _e104 = local_147;
-    if _e104 {
-        if !(infinite_5) {
-            let _e110 = t_star;
-            local_149 = (_e110 <= s_25.t_max);
-        } else {
-            local_149 = true;
-        }
-        let _e114 = local_149;
-        local_148 = _e114;
+    let _e84 = local_147;
+    if _e84 {
+        let _e87 = s_star;
+        local_148 = (_e87 >= 0f);
     } else {
         local_148 = false;
     }
-    let _e116 = local_148;
+    let _e91 = local_148;
+    if _e91 {
+        let _e94 = s_star;
+        local_149 = (_e94 <= _e15);
+    } else {
+        local_149 = false;
+    }
+    let _e97 = local_149;
+    if _e97 {
+        let _e101 = t_star;
+        local_150 = (s_26.t_min <= _e101);
+    } else {
+        local_150 = false;
+    }
+    let _e104 = local_150;
+    if _e104 {
+        if !(infinite_5) {
+            let _e110 = t_star;
+            local_152 = (_e110 <= s_26.t_max);
+        } else {
+            local_152 = true;
+        }
+        let _e114 = local_152;
+        local_151 = _e114;
+    } else {
+        local_151 = false;
+    }
+    let _e116 = local_151;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_150 = (_e73 > 0f);
+        local_153 = (_e73 > 0f);
     } else {
-        local_150 = false;
+        local_153 = false;
     }
-    let _e129 = local_150;
+    let _e129 = local_153;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_151 = (_e136 < (_e15 + _e15));
+        local_154 = (_e136 < (_e15 + _e15));
     } else {
-        local_151 = false;
+        local_154 = false;
     }
-    let _e140 = local_151;
+    let _e140 = local_154;
     if _e140 {
         let _e143 = scale;
-        local_152 = (_e143 < _e15);
+        local_155 = (_e143 < _e15);
     } else {
-        local_152 = false;
+        local_155 = false;
     }
-    let near_1 = local_152;
+    let near_1 = local_155;
     if near_1 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_153 = _e154;
+        local_156 = _e154;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    let _e156 = local_153;
+    let _e156 = local_156;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_154 = _e163;
+        local_157 = _e163;
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    let _e165 = local_154;
+    let _e165 = local_157;
     if !(_e165) {
         scale = 0f;
     }
@@ -5629,18 +5656,18 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
     let _e172 = scale;
     g_24.scale = _e172;
     let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_25.t_min - along_d) / cos_a_2), ((s_25.t_max - along_d) / cos_a_2));
+    at = array<f32, 3>(_e178, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
     let _e187 = scale;
     if (_e187 > 0f) {
         let _e192 = g_24;
         let _e194 = airlight_to_w(_e192, 0f);
         let _e196 = g_24;
         let _e197 = airlight_to_w(_e196, _e15);
-        local_155 = (min(-(_e194), _e197) < 0.5f);
+        local_158 = (min(-(_e194), _e197) < 0.5f);
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    let sliver = local_155;
+    let sliver = local_158;
     loop {
         let _e205 = i_24;
         if (_e205 < 3u) {
@@ -5650,31 +5677,31 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
         {
             let _e208 = i_24;
             if (_e208 == 0u) {
-                local_156 = sliver;
+                local_159 = sliver;
             } else {
-                local_156 = false;
+                local_159 = false;
             }
-            let _e214 = local_156;
+            let _e214 = local_159;
             if _e214 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e219 = i_24;
-                local_157 = (_e219 > 0u);
+                local_160 = (_e219 > 0u);
             } else {
-                local_157 = false;
+                local_160 = false;
             }
-            let _e223 = local_157;
+            let _e223 = local_160;
             if _e223 {
                 continue;
             }
             let _e224 = i_24;
             if (_e224 == 2u) {
-                local_158 = infinite_5;
+                local_161 = infinite_5;
             } else {
-                local_158 = false;
+                local_161 = false;
             }
-            let _e230 = local_158;
+            let _e230 = local_161;
             if _e230 {
                 continue;
             }
@@ -5683,11 +5710,11 @@ fn airlight_outer(s_25: AirlightScene) -> AirlightOuter {
             if (_e233 > 0f) {
                 let _e238 = i_24;
                 let _e240 = at[_e238];
-                local_159 = (_e240 < _e15);
+                local_162 = (_e240 < _e15);
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            let _e243 = local_159;
+            let _e243 = local_162;
             if _e243 {
                 let _e244 = i_24;
                 let _e246 = g_24;
@@ -5718,25 +5745,25 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> AirlightNode {
+fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> AirlightNode {
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_160: bool;
-    var local_161: bool;
-    var local_162: bool;
     var local_163: bool;
     var local_164: bool;
     var local_165: bool;
+    var local_166: bool;
+    var local_167: bool;
+    var local_168: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
 
-    p = s_26;
+    p = s_27;
     let _e4 = airlight_no_canonical();
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
-    if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
+    if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_36 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
         let t_8 = (x_20 - f32(i_36));
         let a_41 = g_25.gamma[i_36];
@@ -5749,51 +5776,51 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
         jacobian = (((w_9 * 6f) * t_8) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
-            local_160 = !(smooth_a);
-        } else {
-            local_160 = false;
-        }
-        let _e66 = local_160;
-        gamma_1 = select(_e58, (a_41 + ((w_9 * t_8) * t_8)), _e66);
-        let _e68 = jacobian;
-        if smooth_b {
-            local_161 = !(smooth_a);
-        } else {
-            local_161 = false;
-        }
-        let _e75 = local_161;
-        jacobian = select(_e68, (w_9 * (t_8 + t_8)), _e75);
-        let _e77 = gamma_1;
-        if smooth_a {
-            local_162 = !(smooth_b);
-        } else {
-            local_162 = false;
-        }
-        let _e85 = local_162;
-        gamma_1 = select(_e77, (b_19 - ((w_9 * u_8) * u_8)), _e85);
-        let _e87 = jacobian;
-        if smooth_a {
-            local_163 = !(smooth_b);
+            local_163 = !(smooth_a);
         } else {
             local_163 = false;
         }
-        let _e94 = local_163;
-        jacobian = select(_e87, (w_9 * (u_8 + u_8)), _e94);
-        let _e96 = gamma_1;
-        if smooth_a {
-            local_164 = smooth_b;
+        let _e66 = local_163;
+        gamma_1 = select(_e58, (a_41 + ((w_9 * t_8) * t_8)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
+            local_164 = !(smooth_a);
         } else {
             local_164 = false;
         }
-        let _e102 = local_164;
-        gamma_1 = select(_e96, (a_41 + (w_9 * t_8)), _e102);
-        let _e104 = jacobian;
+        let _e75 = local_164;
+        jacobian = select(_e68, (w_9 * (t_8 + t_8)), _e75);
+        let _e77 = gamma_1;
         if smooth_a {
-            local_165 = smooth_b;
+            local_165 = !(smooth_b);
         } else {
             local_165 = false;
         }
-        let _e108 = local_165;
+        let _e85 = local_165;
+        gamma_1 = select(_e77, (b_19 - ((w_9 * u_8) * u_8)), _e85);
+        let _e87 = jacobian;
+        if smooth_a {
+            local_166 = !(smooth_b);
+        } else {
+            local_166 = false;
+        }
+        let _e94 = local_166;
+        jacobian = select(_e87, (w_9 * (u_8 + u_8)), _e94);
+        let _e96 = gamma_1;
+        if smooth_a {
+            local_167 = smooth_b;
+        } else {
+            local_167 = false;
+        }
+        let _e102 = local_167;
+        gamma_1 = select(_e96, (a_41 + (w_9 * t_8)), _e102);
+        let _e104 = jacobian;
+        if smooth_a {
+            local_168 = smooth_b;
+        } else {
+            local_168 = false;
+        }
+        let _e108 = local_168;
         jacobian = select(_e104, w_9, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -5807,15 +5834,15 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             let _e128 = p;
             return AirlightNode(_e128, 0f, _e4, false);
         }
-        if (s_26.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
+        if (s_27.surface_kind == AIRLIGHT_SURFACE_LAMBERT) {
             let _e144 = airlight_cos_sin_half_turn(_e124);
             let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
-            weight = ((s_26.brdf_scale * 0.31830987f) * arc);
+            weight = ((s_27.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_5 = s_26.brdf_exponent;
+            let n_5 = s_27.brdf_exponent;
             let _e161 = gamma_1;
             let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
-            weight = (((s_26.brdf_scale * (n_5 + 2f)) * 0.15915494f) * _e162);
+            weight = (((s_27.brdf_scale * (n_5 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
@@ -5830,7 +5857,7 @@ fn airlight_outer_node(s_26: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
         let _e210 = jacobian;
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
-    if (s_26.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
+    if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
         at_1 = x_20;
         if (g_25.scale > 0f) {
             at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
@@ -5861,19 +5888,19 @@ fn airlight_triangle_rule(i_26: u32) -> vec2<f32> {
     return rule_1[i_26];
 }
 
-fn airlight_area_phase(s_27: AirlightScene, mu_2: f32) -> f32 {
-    let _e6 = airlight_phase_mu(s_27.phase_kind, s_27.phase_param_a, s_27.phase_param_b, s_27.phase_param_c, mu_2);
+fn airlight_area_phase(s_28: AirlightScene, mu_2: f32) -> f32 {
+    let _e6 = airlight_phase_mu(s_28.phase_kind, s_28.phase_param_a, s_28.phase_param_b, s_28.phase_param_c, mu_2);
     return _e6;
 }
 
-fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
+fn airlight_emitted(s_29: AirlightScene, c_7: f32) -> f32 {
     var e_2: u32;
     var base_1: f32;
     var acc_1: f32 = 1f;
 
-    let p_2 = u32(s_28.light_param_b);
+    let p_2 = u32(s_29.light_param_b);
     if (p_2 <= 1u) {
-        return s_28.intensity;
+        return s_29.intensity;
     }
     e_2 = (p_2 - 1u);
     base_1 = c_7;
@@ -5988,43 +6015,43 @@ fn airlight_emitted(s_28: AirlightScene, c_7: f32) -> f32 {
     let _e151 = base_1;
     base_1 = (_e150 * _e151);
     let _e154 = acc_1;
-    return (s_28.intensity * _e154);
+    return (s_29.intensity * _e154);
 }
 
-fn airlight_emission_scale(s_29: AirlightScene) -> f32 {
-    let p_3 = u32(s_29.light_param_b);
+fn airlight_emission_scale(s_30: AirlightScene) -> f32 {
+    let p_3 = u32(s_30.light_param_b);
     if (p_3 <= 1u) {
         return 0f;
     }
     return (2f / sqrt(f32((p_3 - 1u))));
 }
 
-fn airlight_far_from_edge(s_30: AirlightScene, depth: f32, z_9: f32) -> bool {
-    let _e3 = airlight_emission_scale(s_30);
+fn airlight_far_from_edge(s_31: AirlightScene, depth: f32, z_9: f32) -> bool {
+    let _e3 = airlight_emission_scale(s_31);
     return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * select(1f, min(_e3, 1f), (_e3 > 0f))));
 }
 
 fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
-    var local_166: bool;
+    var local_169: bool;
 
     if !(!((gap_3 > 0f))) {
-        local_166 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_169 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_166 = true;
+        local_169 = true;
     }
-    let _e12 = local_166;
+    let _e12 = local_169;
     if _e12 {
         return vec2<f32>(1f, 0f);
     }
     return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
 }
 
-fn airlight_phase_lobes(s_31: AirlightScene) -> vec4<f32> {
+fn airlight_phase_lobes(s_32: AirlightScene) -> vec4<f32> {
     var first: vec2<f32> = vec2<f32>(1f, 0f);
     var second: vec2<f32> = vec2<f32>(1f, 0f);
 
-    let p0_5 = s_31.phase_param_a;
-    switch s_31.phase_kind {
+    let p0_5 = s_32.phase_param_a;
+    switch s_32.phase_kind {
         case 2u, 4u: {
             let _e11 = airlight_hg_gap(p0_5);
             let _e12 = airlight_lobe(p0_5, _e11);
@@ -6039,8 +6066,8 @@ fn airlight_phase_lobes(s_31: AirlightScene) -> vec4<f32> {
             let _e22 = airlight_hg_gap(p0_5);
             let _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            let _e26 = airlight_hg_gap(s_31.phase_param_b);
-            let _e27 = airlight_lobe(s_31.phase_param_b, _e26);
+            let _e26 = airlight_hg_gap(s_32.phase_param_b);
+            let _e27 = airlight_lobe(s_32.phase_param_b, _e26);
             second = _e27;
         }
         default: {
@@ -6053,15 +6080,15 @@ fn airlight_phase_lobes(s_31: AirlightScene) -> vec4<f32> {
 
 fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
-    var local_167: bool;
+    var local_170: bool;
 
     let m_10 = abs(n_2);
     if (m_10.x <= m_10.y) {
-        local_167 = (m_10.x <= m_10.z);
+        local_170 = (m_10.x <= m_10.z);
     } else {
-        local_167 = false;
+        local_170 = false;
     }
-    let _e16 = local_167;
+    let _e16 = local_170;
     if _e16 {
         u_3 = vec3<f32>(1f, 0f, 0f);
     } else {
@@ -6083,15 +6110,9 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     return (select(-1f, 1f, (u_9 >= 0f)) * _e13);
 }
 
-fn airlight_area(s_32: AirlightScene) -> AirlightArea {
+fn airlight_area(s_33: AirlightScene) -> AirlightArea {
     var a_18: AirlightArea;
-    var local_168: bool;
-    var local_169: bool;
-    var local_170: bool;
     var local_171: bool;
-    var local_172: bool;
-    var local_173: bool;
-    var local_174: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
     var cut1_: f32 = 0f;
@@ -6099,78 +6120,43 @@ fn airlight_area(s_32: AirlightScene) -> AirlightArea {
     var size: f32;
     var t_end_1: f32;
     var end_infinite: bool;
-    var local_175: bool;
+    var local_172: bool;
     var cuts_4: array<f32, 3>;
     var i_27: u32 = 0u;
-    var local_176: bool;
-    var local_177: bool;
-    var local_178: bool;
+    var local_173: bool;
+    var local_174: bool;
+    var local_175: bool;
 
     let zero = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_32);
-    a_18 = AirlightArea(zero, s_32.light_position, zero, zero, zero, zero, zero, zero, s_32.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    if !((s_32.phase_kind == AIRLIGHT_PHASE_ISOTROPIC)) {
-        if !((s_32.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN)) {
-            local_169 = (s_32.phase_kind == AIRLIGHT_PHASE_SCHLICK);
-        } else {
-            local_169 = true;
-        }
-        let _e44 = local_169;
-        if _e44 {
-            local_170 = (s_32.phase_param_a == 0f);
-        } else {
-            local_170 = false;
-        }
-        let _e51 = local_170;
-        local_168 = _e51;
-    } else {
-        local_168 = true;
-    }
-    let _e53 = local_168;
-    if !(_e53) {
-        if (s_32.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG) {
-            local_172 = (s_32.phase_param_a == 0f);
-        } else {
-            local_172 = false;
-        }
-        let _e66 = local_172;
-        if _e66 {
-            local_173 = (s_32.phase_param_b == 0f);
-        } else {
-            local_173 = false;
-        }
-        let _e73 = local_173;
-        local_171 = _e73;
+    let _e21 = airlight_phase_lobes(s_33);
+    a_18 = AirlightArea(zero, s_33.light_position, zero, zero, zero, zero, zero, zero, s_33.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    let _e28 = airlight_isotropic_phase(s_33);
+    a_18.isotropic = _e28;
+    if !((s_33.intensity == 0f)) {
+        local_171 = (s_33.sigma_s == 0f);
     } else {
         local_171 = true;
     }
-    let _e75 = local_171;
-    a_18.isotropic = _e75;
-    if !((s_32.intensity == 0f)) {
-        local_174 = (s_32.sigma_s == 0f);
-    } else {
-        local_174 = true;
-    }
-    let _e86 = local_174;
-    if _e86 {
+    let _e39 = local_171;
+    if _e39 {
         a_18.outcome = 1u;
-        let _e89 = a_18;
-        return _e89;
+        let _e42 = a_18;
+        return _e42;
     }
-    let o_6 = s_32.origin;
-    let _e92 = airlight_normalize(s_32.dir);
-    a_18.d = _e92;
-    let infinite_6 = ((s_32.flags & 1u) != 0u);
-    let t0_2 = s_32.t_min;
-    centre = s_32.light_position;
-    size = s_32.light_param_a;
-    if (s_32.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        let _e114 = a_18.c;
-        let oc = (o_6 - _e114);
-        let b_20 = dot(oc, _e92);
-        let _e119 = a_18.radius;
-        let _e121 = a_18.radius;
-        let k_10 = (dot(oc, oc) - (_e119 * _e121));
+    let o_6 = s_33.origin;
+    let _e45 = airlight_normalize(s_33.dir);
+    a_18.d = _e45;
+    let infinite_6 = ((s_33.flags & 1u) != 0u);
+    let t0_2 = s_33.t_min;
+    centre = s_33.light_position;
+    size = s_33.light_param_a;
+    if (s_33.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+        let _e67 = a_18.c;
+        let oc = (o_6 - _e67);
+        let b_20 = dot(oc, _e45);
+        let _e72 = a_18.radius;
+        let _e74 = a_18.radius;
+        let k_10 = (dot(oc, oc) - (_e72 * _e74));
         let disc_2 = ((b_20 * b_20) - k_10);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
@@ -6180,150 +6166,150 @@ fn airlight_area(s_32: AirlightScene) -> AirlightArea {
             cut_count = 2u;
         }
     } else {
-        if (s_32.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e145 = airlight_normalize(s_32.light_axis);
-            a_18.n = _e145;
-            let _e148 = a_18.n;
-            let _e149 = airlight_basis_e1_(_e148);
-            a_18.a1_ = _e149;
+        if (s_33.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e98 = airlight_normalize(s_33.light_axis);
+            a_18.n = _e98;
+            let _e101 = a_18.n;
+            let _e102 = airlight_basis_e1_(_e101);
+            a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_32.light_axis;
-            a_18.ev = s_32.light_end;
-            let _e156 = a_18.eu;
-            let _e158 = a_18.ev;
-            let _e160 = airlight_normalize(cross(_e156, _e158));
-            a_18.n = _e160;
-            let _e163 = a_18.eu;
-            let _e164 = airlight_normalize(_e163);
-            a_18.a1_ = _e164;
-            let _e166 = a_18.eu;
-            let _e168 = a_18.ev;
-            let diagonal = (_e166 + _e168);
-            let _e171 = a_18.c;
-            centre = (_e171 + (0.5f * diagonal));
-            let _e175 = airlight_safe_length(diagonal);
-            let _e177 = a_18.eu;
-            let _e179 = a_18.ev;
-            let _e181 = airlight_safe_length((_e177 - _e179));
-            size = (0.5f * max(_e175, _e181));
+            a_18.eu = s_33.light_axis;
+            a_18.ev = s_33.light_end;
+            let _e109 = a_18.eu;
+            let _e111 = a_18.ev;
+            let _e113 = airlight_normalize(cross(_e109, _e111));
+            a_18.n = _e113;
+            let _e116 = a_18.eu;
+            let _e117 = airlight_normalize(_e116);
+            a_18.a1_ = _e117;
+            let _e119 = a_18.eu;
+            let _e121 = a_18.ev;
+            let diagonal = (_e119 + _e121);
+            let _e124 = a_18.c;
+            centre = (_e124 + (0.5f * diagonal));
+            let _e128 = airlight_safe_length(diagonal);
+            let _e130 = a_18.eu;
+            let _e132 = a_18.ev;
+            let _e134 = airlight_safe_length((_e130 - _e132));
+            size = (0.5f * max(_e128, _e134));
         }
-        let _e187 = a_18.n;
-        let _e189 = a_18.a1_;
-        a_18.a2_ = cross(_e187, _e189);
-        let _e193 = a_18.a1_;
-        let _e196 = a_18.a2_;
-        let _e199 = a_18.n;
-        a_18.dirs = vec3<f32>(dot(_e193, _e92), dot(_e196, _e92), dot(_e199, _e92));
-        let _e203 = a_18.c;
-        let _e206 = a_18.n;
-        let _e209 = a_18.n;
-        cut0_ = (dot((_e203 - o_6), _e206) / dot(_e92, _e209));
+        let _e140 = a_18.n;
+        let _e142 = a_18.a1_;
+        a_18.a2_ = cross(_e140, _e142);
+        let _e146 = a_18.a1_;
+        let _e149 = a_18.a2_;
+        let _e152 = a_18.n;
+        a_18.dirs = vec3<f32>(dot(_e146, _e45), dot(_e149, _e45), dot(_e152, _e45));
+        let _e156 = a_18.c;
+        let _e159 = a_18.n;
+        let _e162 = a_18.n;
+        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
         cut_count = 1u;
     }
-    let _e213 = size;
-    if !((_e213 > 0f)) {
+    let _e166 = size;
+    if !((_e166 > 0f)) {
         a_18.outcome = 1u;
-        let _e219 = a_18;
-        return _e219;
+        let _e172 = a_18;
+        return _e172;
     }
-    let _e220 = centre;
-    let to_centre = (_e220 - o_6);
-    a_18.x_h = dot(to_centre, _e92);
-    let _e225 = a_18.x_h;
-    let _e228 = airlight_safe_length((to_centre - (_e225 * _e92)));
-    let _e231 = size;
-    let _e232 = size;
-    a_18.h_eff = sqrt(((_e228 * _e228) + (_e231 * _e232)));
-    t_end_1 = s_32.t_max;
+    let _e173 = centre;
+    let to_centre = (_e173 - o_6);
+    a_18.x_h = dot(to_centre, _e45);
+    let _e178 = a_18.x_h;
+    let _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
+    let _e184 = size;
+    let _e185 = size;
+    a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
+    t_end_1 = s_33.t_max;
     end_infinite = infinite_6;
-    if (s_32.sigma_t > 0f) {
-        let _e242 = centre;
-        let _e246 = airlight_safe_length((_e242 - (o_6 + (t0_2 * _e92))));
-        let _e248 = size;
-        let reach_1 = (((t0_2 + _e246) + _e248) - (-15.942385f / s_32.sigma_t));
+    if (s_33.sigma_t > 0f) {
+        let _e195 = centre;
+        let _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
+        let _e201 = size;
+        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_33.sigma_t));
         if !(infinite_6) {
-            let _e257 = t_end_1;
-            local_175 = (reach_1 < _e257);
+            let _e210 = t_end_1;
+            local_172 = (reach_1 < _e210);
         } else {
-            local_175 = true;
+            local_172 = true;
         }
-        let _e260 = local_175;
-        if _e260 {
+        let _e213 = local_172;
+        if _e213 {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    let _e262 = a_18;
-    let _e264 = airlight_area_theta(_e262, t0_2, false);
-    let _e265 = a_18;
-    let _e266 = t_end_1;
-    let _e267 = end_infinite;
-    let _e268 = airlight_area_theta(_e265, _e266, _e267);
-    let _e270 = a_18.x_h;
-    let _e272 = a_18.x_h;
-    let _e273 = cut0_;
-    let _e274 = cut_count;
-    let _e279 = a_18.x_h;
-    let _e280 = cut1_;
-    let _e281 = cut_count;
-    cuts_4 = array<f32, 3>(_e270, select(_e272, _e273, (_e274 > 0u)), select(_e279, _e280, (_e281 > 1u)));
+    let _e215 = a_18;
+    let _e217 = airlight_area_theta(_e215, t0_2, false);
+    let _e218 = a_18;
+    let _e219 = t_end_1;
+    let _e220 = end_infinite;
+    let _e221 = airlight_area_theta(_e218, _e219, _e220);
+    let _e223 = a_18.x_h;
+    let _e225 = a_18.x_h;
+    let _e226 = cut0_;
+    let _e227 = cut_count;
+    let _e232 = a_18.x_h;
+    let _e233 = cut1_;
+    let _e234 = cut_count;
+    cuts_4 = array<f32, 3>(_e223, select(_e225, _e226, (_e227 > 0u)), select(_e232, _e233, (_e234 > 1u)));
     loop {
-        let _e289 = i_27;
-        if (_e289 < 3u) {
+        let _e242 = i_27;
+        if (_e242 < 3u) {
         } else {
             break;
         }
         {
-            let _e292 = i_27;
-            let t_9 = cuts_4[_e292];
-            let _e295 = i_27;
-            cuts_4[_e295] = _e264;
-            let _e297 = airlight_is_finite(t_9);
-            if _e297 {
-                local_176 = (t_9 >= t0_2);
+            let _e245 = i_27;
+            let t_9 = cuts_4[_e245];
+            let _e248 = i_27;
+            cuts_4[_e248] = _e217;
+            let _e250 = airlight_is_finite(t_9);
+            if _e250 {
+                local_173 = (t_9 >= t0_2);
             } else {
-                local_176 = false;
+                local_173 = false;
             }
-            let _e302 = local_176;
-            if _e302 {
-                let _e305 = end_infinite;
-                if !(_e305) {
-                    let _e309 = t_end_1;
-                    local_178 = (t_9 <= _e309);
+            let _e255 = local_173;
+            if _e255 {
+                let _e258 = end_infinite;
+                if !(_e258) {
+                    let _e262 = t_end_1;
+                    local_175 = (t_9 <= _e262);
                 } else {
-                    local_178 = true;
+                    local_175 = true;
                 }
-                let _e312 = local_178;
-                local_177 = _e312;
+                let _e265 = local_175;
+                local_174 = _e265;
             } else {
-                local_177 = false;
+                local_174 = false;
             }
-            let _e314 = local_177;
-            if _e314 {
-                let _e315 = i_27;
-                let _e317 = a_18;
-                let _e319 = airlight_area_theta(_e317, t_9, false);
-                cuts_4[_e315] = _e319;
+            let _e267 = local_174;
+            if _e267 {
+                let _e268 = i_27;
+                let _e270 = a_18;
+                let _e272 = airlight_area_theta(_e270, t_9, false);
+                cuts_4[_e268] = _e272;
             }
         }
         continuing {
-            let _e321 = i_27;
-            i_27 = (_e321 + 1u);
+            let _e274 = i_27;
+            i_27 = (_e274 + 1u);
         }
     }
-    let _e323 = cuts_4;
-    let _e324 = airlight_edges_between(_e264, _e268, _e323);
-    a_18.edges = _e324.at;
-    a_18.panels = _e324.panels;
-    let _e329 = a_18;
-    return _e329;
+    let _e276 = cuts_4;
+    let _e277 = airlight_edges_between(_e217, _e221, _e276);
+    a_18.edges = _e277.at;
+    a_18.panels = _e277.panels;
+    let _e282 = a_18;
+    return _e282;
 }
 
 fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_33: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded: f32, node: f32) -> f32 {
+fn airlight_flat_node(s_34: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded: f32, node: f32) -> f32 {
     var g_26: f32;
     var jacobian_1: f32 = 1f;
 
@@ -6342,31 +6328,31 @@ fn airlight_flat_node(s_33: AirlightScene, a_19: AirlightArea, above_1: Airlight
     let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e63 = airlight_area_phase(s_33, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    let _e63 = airlight_area_phase(s_34, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
     let _e64 = jacobian_1;
-    let _e65 = airlight_emitted(s_33, cos_);
-    return ((((((((_e64 * _e65) * exp(min((-(s_33.sigma_t) * dist), 0f))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    let _e65 = airlight_emitted(s_34, cos_);
+    return ((((((((_e64 * _e65) * exp(min((-(s_34.sigma_t) * dist), 0f))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_34: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_35: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var top: f32;
     var graded_1: f32;
-    var local_179: bool;
+    var local_176: bool;
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
     top = _e7;
-    let _e9 = airlight_emission_scale(s_34);
+    let _e9 = airlight_emission_scale(s_35);
     graded_1 = _e9;
     let _e11 = graded_1;
     if (_e11 > 0f) {
         let _e16 = graded_1;
         let _e17 = top;
-        local_179 = (_e16 < _e17);
+        local_176 = (_e16 < _e17);
     } else {
-        local_179 = false;
+        local_176 = false;
     }
-    let _e20 = local_179;
+    let _e20 = local_176;
     if _e20 {
         let _e21 = top;
         let _e22 = graded_1;
@@ -6381,67 +6367,67 @@ fn airlight_flat_radial(s_34: AirlightScene, a_20: AirlightArea, above_2: Airlig
     let hw_2 = (0.5f * _e29);
     let _e34 = sum_7;
     let _e37 = graded_1;
-    let _e41 = airlight_flat_node(s_34, a_20, above_2, e_4, _e37, (c_16 - (0.09501251f * hw_2)));
+    let _e41 = airlight_flat_node(s_35, a_20, above_2, e_4, _e37, (c_16 - (0.09501251f * hw_2)));
     sum_7 = (_e34 + ((0.1894506f * hw_2) * _e41));
     let _e44 = sum_7;
     let _e47 = graded_1;
-    let _e51 = airlight_flat_node(s_34, a_20, above_2, e_4, _e47, (c_16 + (0.09501251f * hw_2)));
+    let _e51 = airlight_flat_node(s_35, a_20, above_2, e_4, _e47, (c_16 + (0.09501251f * hw_2)));
     sum_7 = (_e44 + ((0.1894506f * hw_2) * _e51));
     let _e54 = sum_7;
     let _e57 = graded_1;
-    let _e61 = airlight_flat_node(s_34, a_20, above_2, e_4, _e57, (c_16 - (0.28160354f * hw_2)));
+    let _e61 = airlight_flat_node(s_35, a_20, above_2, e_4, _e57, (c_16 - (0.28160354f * hw_2)));
     sum_7 = (_e54 + ((0.18260342f * hw_2) * _e61));
     let _e64 = sum_7;
     let _e67 = graded_1;
-    let _e71 = airlight_flat_node(s_34, a_20, above_2, e_4, _e67, (c_16 + (0.28160354f * hw_2)));
+    let _e71 = airlight_flat_node(s_35, a_20, above_2, e_4, _e67, (c_16 + (0.28160354f * hw_2)));
     sum_7 = (_e64 + ((0.18260342f * hw_2) * _e71));
     let _e74 = sum_7;
     let _e77 = graded_1;
-    let _e81 = airlight_flat_node(s_34, a_20, above_2, e_4, _e77, (c_16 - (0.45801678f * hw_2)));
+    let _e81 = airlight_flat_node(s_35, a_20, above_2, e_4, _e77, (c_16 - (0.45801678f * hw_2)));
     sum_7 = (_e74 + ((0.16915652f * hw_2) * _e81));
     let _e84 = sum_7;
     let _e87 = graded_1;
-    let _e91 = airlight_flat_node(s_34, a_20, above_2, e_4, _e87, (c_16 + (0.45801678f * hw_2)));
+    let _e91 = airlight_flat_node(s_35, a_20, above_2, e_4, _e87, (c_16 + (0.45801678f * hw_2)));
     sum_7 = (_e84 + ((0.16915652f * hw_2) * _e91));
     let _e94 = sum_7;
     let _e97 = graded_1;
-    let _e101 = airlight_flat_node(s_34, a_20, above_2, e_4, _e97, (c_16 - (0.61787623f * hw_2)));
+    let _e101 = airlight_flat_node(s_35, a_20, above_2, e_4, _e97, (c_16 - (0.61787623f * hw_2)));
     sum_7 = (_e94 + ((0.14959599f * hw_2) * _e101));
     let _e104 = sum_7;
     let _e107 = graded_1;
-    let _e111 = airlight_flat_node(s_34, a_20, above_2, e_4, _e107, (c_16 + (0.61787623f * hw_2)));
+    let _e111 = airlight_flat_node(s_35, a_20, above_2, e_4, _e107, (c_16 + (0.61787623f * hw_2)));
     sum_7 = (_e104 + ((0.14959599f * hw_2) * _e111));
     let _e114 = sum_7;
     let _e117 = graded_1;
-    let _e121 = airlight_flat_node(s_34, a_20, above_2, e_4, _e117, (c_16 - (0.7554044f * hw_2)));
+    let _e121 = airlight_flat_node(s_35, a_20, above_2, e_4, _e117, (c_16 - (0.7554044f * hw_2)));
     sum_7 = (_e114 + ((0.12462897f * hw_2) * _e121));
     let _e124 = sum_7;
     let _e127 = graded_1;
-    let _e131 = airlight_flat_node(s_34, a_20, above_2, e_4, _e127, (c_16 + (0.7554044f * hw_2)));
+    let _e131 = airlight_flat_node(s_35, a_20, above_2, e_4, _e127, (c_16 + (0.7554044f * hw_2)));
     sum_7 = (_e124 + ((0.12462897f * hw_2) * _e131));
     let _e134 = sum_7;
     let _e137 = graded_1;
-    let _e141 = airlight_flat_node(s_34, a_20, above_2, e_4, _e137, (c_16 - (0.8656312f * hw_2)));
+    let _e141 = airlight_flat_node(s_35, a_20, above_2, e_4, _e137, (c_16 - (0.8656312f * hw_2)));
     sum_7 = (_e134 + ((0.09515851f * hw_2) * _e141));
     let _e144 = sum_7;
     let _e147 = graded_1;
-    let _e151 = airlight_flat_node(s_34, a_20, above_2, e_4, _e147, (c_16 + (0.8656312f * hw_2)));
+    let _e151 = airlight_flat_node(s_35, a_20, above_2, e_4, _e147, (c_16 + (0.8656312f * hw_2)));
     sum_7 = (_e144 + ((0.09515851f * hw_2) * _e151));
     let _e154 = sum_7;
     let _e157 = graded_1;
-    let _e161 = airlight_flat_node(s_34, a_20, above_2, e_4, _e157, (c_16 - (0.944575f * hw_2)));
+    let _e161 = airlight_flat_node(s_35, a_20, above_2, e_4, _e157, (c_16 - (0.944575f * hw_2)));
     sum_7 = (_e154 + ((0.062253524f * hw_2) * _e161));
     let _e164 = sum_7;
     let _e167 = graded_1;
-    let _e171 = airlight_flat_node(s_34, a_20, above_2, e_4, _e167, (c_16 + (0.944575f * hw_2)));
+    let _e171 = airlight_flat_node(s_35, a_20, above_2, e_4, _e167, (c_16 + (0.944575f * hw_2)));
     sum_7 = (_e164 + ((0.062253524f * hw_2) * _e171));
     let _e174 = sum_7;
     let _e177 = graded_1;
-    let _e181 = airlight_flat_node(s_34, a_20, above_2, e_4, _e177, (c_16 - (0.9894009f * hw_2)));
+    let _e181 = airlight_flat_node(s_35, a_20, above_2, e_4, _e177, (c_16 - (0.9894009f * hw_2)));
     sum_7 = (_e174 + ((0.02715246f * hw_2) * _e181));
     let _e184 = sum_7;
     let _e187 = graded_1;
-    let _e191 = airlight_flat_node(s_34, a_20, above_2, e_4, _e187, (c_16 + (0.9894009f * hw_2)));
+    let _e191 = airlight_flat_node(s_35, a_20, above_2, e_4, _e187, (c_16 + (0.9894009f * hw_2)));
     sum_7 = (_e184 + ((0.02715246f * hw_2) * _e191));
     let _e194 = sum_7;
     return _e194;
@@ -6452,7 +6438,7 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
     var nearest: vec2<f32>;
     var inside: bool = true;
     var i_28: u32 = 0u;
-    var local_180: bool;
+    var local_177: bool;
 
     if (o.radius > 0f) {
         let qc = (q_4 - o.corners[0]);
@@ -6473,11 +6459,11 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
             let e_14 = (o.corners[((_e43 + 1u) % 4u)] - a_43);
             let _e50 = inside;
             if _e50 {
-                local_180 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0f);
+                local_177 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0f);
             } else {
-                local_180 = false;
+                local_177 = false;
             }
-            let _e67 = local_180;
+            let _e67 = local_177;
             inside = _e67;
             let t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0f, 1f);
             let p_5 = (a_43 + (t_10 * e_14));
@@ -6505,9 +6491,9 @@ fn airlight_outline_nearest(o_1: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
 
 fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_5: u32 = 0u;
-    var local_181: bool;
-    var local_182: bool;
-    var local_183: bool;
+    var local_178: bool;
+    var local_179: bool;
+    var local_180: bool;
 
     let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
@@ -6521,17 +6507,17 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
             let lobe_4 = select(a_21.lobes.xy, a_21.lobes.zw, (_e20 == 1u));
             let p_6 = (lobe_4.x * a_21.dirs);
             if (lobe_4.y > 0f) {
-                local_181 = (p_6.z < 0f);
+                local_178 = (p_6.z < 0f);
             } else {
-                local_181 = false;
+                local_178 = false;
             }
-            let _e36 = local_181;
+            let _e36 = local_178;
             if _e36 {
-                local_182 = (lobe_4.y < (_e10 + _e10));
+                local_179 = (lobe_4.y < (_e10 + _e10));
             } else {
-                local_182 = false;
+                local_179 = false;
             }
-            let _e43 = local_182;
+            let _e43 = local_179;
             if _e43 {
                 let l_4 = (z_11 / -(p_6.z));
                 let q_13 = (l_4 * p_6.xy);
@@ -6540,11 +6526,11 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
                 let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
                 if !(all((_e49 == q_13))) {
                     let _e63 = airlight_acos(cos_1);
-                    local_183 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_183 = true;
+                    local_180 = true;
                 }
-                let _e69 = local_183;
+                let _e69 = local_180;
                 if _e69 {
                     return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13);
                 }
@@ -6611,19 +6597,19 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
     return _e93;
 }
 
-fn airlight_flat_lobe_node(s_35: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
+fn airlight_flat_lobe_node(s_36: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
     let _e7 = airlight_cos_sin_half_turn(g_27);
     let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
     let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
     if !((c_17 > 0f)) {
         return 0f;
     }
-    let _e26 = airlight_emitted(s_35, c_17);
-    let _e38 = airlight_area_phase(s_35, (lobe_1.sign * _e13.x));
-    return (((((_e26 * exp(min(((-(s_35.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    let _e26 = airlight_emitted(s_36, c_17);
+    let _e38 = airlight_area_phase(s_36, (lobe_1.sign * _e13.x));
+    return (((((_e26 * exp(min(((-(s_36.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-fn airlight_flat_lobe_along(s_36: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_37: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
     let w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
@@ -6639,52 +6625,52 @@ fn airlight_flat_lobe_along(s_36: AirlightScene, z_13: f32, o_4: AirlightOutline
     let c_18 = (0.5f * _e45);
     let hw_3 = (0.5f * _e45);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_36, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -6712,7 +6698,7 @@ fn airlight_sort4_(x_23: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_38: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var i_29: u32 = 0u;
     var i_30: u32 = 0u;
@@ -6737,7 +6723,7 @@ fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline
                     let _e33 = i_29;
                     let _e34 = airlight_azimuths(true, _e33);
                     let _e35 = sum_9;
-                    let _e38 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
+                    let _e38 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
                     sum_9 = (_e35 + (_e34.z * _e38));
                 }
                 continuing {
@@ -6768,7 +6754,7 @@ fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline
                 let _e98 = airlight_azimuths(false, _e97);
                 let _e99 = sum_9;
                 let _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
-                let _e108 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e107);
+                let _e108 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e107);
                 sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
             }
             continuing {
@@ -6827,7 +6813,7 @@ fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline
                     let _e198 = airlight_triangle_rule(_e197);
                     let _e199 = sum_9;
                     let _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                    let _e206 = airlight_flat_lobe_along(s_37, z_14, o_5, lobe_3, _e5, v_9, _e205);
+                    let _e206 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e205);
                     sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
                 }
                 continuing {
@@ -6845,9 +6831,9 @@ fn airlight_flat_about_lobe(s_37: AirlightScene, z_14: f32, o_5: AirlightOutline
     return _e215;
 }
 
-fn airlight_disc(s_38: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
-    var local_184: bool;
-    var local_185: bool;
+fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+    var local_181: bool;
+    var local_182: bool;
     var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
@@ -6868,22 +6854,22 @@ fn airlight_disc(s_38: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
     let _e30 = airlight_flat_lobe(a_23, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_38, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_39, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_38, (radius_2 - rf), z_20);
-            local_185 = _e44;
+            let _e44 = airlight_far_from_edge(s_39, (radius_2 - rf), z_20);
+            local_182 = _e44;
         } else {
-            local_185 = true;
+            local_182 = true;
         }
-        let _e46 = local_185;
-        local_184 = _e46;
+        let _e46 = local_182;
+        local_181 = _e46;
     } else {
-        local_184 = false;
+        local_181 = false;
     }
-    let inside_3 = local_184;
+    let inside_3 = local_181;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_3) {
@@ -6918,7 +6904,7 @@ fn airlight_disc(s_38: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
             let _e120 = above_3;
             let _e121 = e_8;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_38, a_23, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_39, a_23, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -6930,9 +6916,9 @@ fn airlight_disc(s_38: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_39: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_40: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
-    var local_186: bool;
+    var local_183: bool;
     var sum_11: f32 = 0f;
     var i_33: u32 = 0u;
     var j_7: u32;
@@ -6951,18 +6937,18 @@ fn airlight_parallelogram(s_39: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
     let _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_39, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_40, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_8 = (_e76.xy + foot);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_39, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_186 = _e89;
+        let _e89 = airlight_far_from_edge(s_40, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_183 = _e89;
     } else {
-        local_186 = false;
+        local_183 = false;
     }
-    let _e91 = local_186;
+    let _e91 = local_183;
     if _e91 {
         q_8 = foot;
     }
@@ -7005,7 +6991,7 @@ fn airlight_parallelogram(s_39: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
                     let _e171 = airlight_cos_sin_half_turn(((0.5f * _e147) * (1f + _e164.x)));
                     let dir_3 = vec2<f32>(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
                     let _e187 = sum_11;
-                    let _e200 = airlight_flat_radial(s_39, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    let _e200 = airlight_flat_radial(s_40, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
                     sum_11 = (_e187 + (((_e164.y * 0.5f) * _e147) * _e200));
                 }
                 continuing {
@@ -7023,7 +7009,7 @@ fn airlight_parallelogram(s_39: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     return _e209;
 }
 
-fn airlight_cap_row(s_40: AirlightScene, cap: AirlightCap, graded_3: f32, node_1: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_41: AirlightScene, cap: AirlightCap, graded_3: f32, node_1: f32, weight_1: f32) -> vec3<f32> {
     var phi: f32;
     var w_2: f32;
 
@@ -7040,15 +7026,15 @@ fn airlight_cap_row(s_40: AirlightScene, cap: AirlightCap, graded_3: f32, node_1
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0f);
     let _e38 = w_2;
-    let _e40 = airlight_emitted(s_40, _e20.x);
-    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_40.sigma_t) * dist_1), 0f)));
+    let _e40 = airlight_emitted(s_41, _e20.x);
+    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_41.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_42: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
     var graded_4: f32;
     var top_1: f32 = 1.5707964f;
-    var local_187: bool;
+    var local_184: bool;
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
     var i_34: u32 = 0u;
@@ -7059,17 +7045,17 @@ fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let ad = dot(cap_1.a, a_25.d);
     let e1d = dot(_e4, a_25.d);
     let e2d = dot(e2_2, a_25.d);
-    let _e14 = airlight_emission_scale(s_41);
+    let _e14 = airlight_emission_scale(s_42);
     graded_4 = _e14;
     let _e18 = graded_4;
     if (_e18 > 0f) {
         let _e23 = graded_4;
         let _e24 = top_1;
-        local_187 = (_e23 < _e24);
+        local_184 = (_e23 < _e24);
     } else {
-        local_187 = false;
+        local_184 = false;
     }
-    let _e27 = local_187;
+    let _e27 = local_184;
     if _e27 {
         let _e28 = top_1;
         let _e29 = graded_4;
@@ -7083,55 +7069,55 @@ fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let _e36 = top_1;
     let hw_5 = (0.5f * _e36);
     let _e74 = graded_4;
-    let _e80 = airlight_cap_row(s_41, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e80 = airlight_cap_row(s_42, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[0] = _e80;
     let _e82 = graded_4;
-    let _e88 = airlight_cap_row(s_41, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e88 = airlight_cap_row(s_42, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[1] = _e88;
     let _e90 = graded_4;
-    let _e96 = airlight_cap_row(s_41, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e96 = airlight_cap_row(s_42, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[2] = _e96;
     let _e98 = graded_4;
-    let _e104 = airlight_cap_row(s_41, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e104 = airlight_cap_row(s_42, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[3] = _e104;
     let _e106 = graded_4;
-    let _e112 = airlight_cap_row(s_41, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e112 = airlight_cap_row(s_42, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[4] = _e112;
     let _e114 = graded_4;
-    let _e120 = airlight_cap_row(s_41, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e120 = airlight_cap_row(s_42, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[5] = _e120;
     let _e122 = graded_4;
-    let _e128 = airlight_cap_row(s_41, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e128 = airlight_cap_row(s_42, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[6] = _e128;
     let _e130 = graded_4;
-    let _e136 = airlight_cap_row(s_41, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e136 = airlight_cap_row(s_42, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[7] = _e136;
     let _e138 = graded_4;
-    let _e144 = airlight_cap_row(s_41, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e144 = airlight_cap_row(s_42, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[8] = _e144;
     let _e146 = graded_4;
-    let _e152 = airlight_cap_row(s_41, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e152 = airlight_cap_row(s_42, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[9] = _e152;
     let _e154 = graded_4;
-    let _e160 = airlight_cap_row(s_41, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e160 = airlight_cap_row(s_42, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[10] = _e160;
     let _e162 = graded_4;
-    let _e168 = airlight_cap_row(s_41, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e168 = airlight_cap_row(s_42, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[11] = _e168;
     let _e170 = graded_4;
-    let _e176 = airlight_cap_row(s_41, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e176 = airlight_cap_row(s_42, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[12] = _e176;
     let _e178 = graded_4;
-    let _e184 = airlight_cap_row(s_41, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e184 = airlight_cap_row(s_42, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[13] = _e184;
     let _e186 = graded_4;
-    let _e192 = airlight_cap_row(s_41, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e192 = airlight_cap_row(s_42, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[14] = _e192;
     let _e194 = graded_4;
-    let _e200 = airlight_cap_row(s_41, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e200 = airlight_cap_row(s_42, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[15] = _e200;
     if a_25.isotropic {
-        let _e206 = airlight_area_phase(s_41, 0f);
+        let _e206 = airlight_area_phase(s_42, 0f);
         let around_1 = (6.2831855f * _e206);
         let _e208 = sum_12;
         let _e211 = rows[0].x;
@@ -7199,97 +7185,97 @@ fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
             let _e323 = rows[0].x;
             let _e326 = rows[0].y;
             let _e330 = rows[0].z;
-            let _e333 = airlight_area_phase(s_41, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_42, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[1].x;
             let _e342 = rows[1].y;
             let _e346 = rows[1].z;
-            let _e349 = airlight_area_phase(s_41, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_42, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[2].x;
             let _e358 = rows[2].y;
             let _e362 = rows[2].z;
-            let _e365 = airlight_area_phase(s_41, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_42, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[3].x;
             let _e374 = rows[3].y;
             let _e378 = rows[3].z;
-            let _e381 = airlight_area_phase(s_41, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_42, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[4].x;
             let _e390 = rows[4].y;
             let _e394 = rows[4].z;
-            let _e397 = airlight_area_phase(s_41, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_42, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[5].x;
             let _e406 = rows[5].y;
             let _e410 = rows[5].z;
-            let _e413 = airlight_area_phase(s_41, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_42, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[6].x;
             let _e422 = rows[6].y;
             let _e426 = rows[6].z;
-            let _e429 = airlight_area_phase(s_41, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_42, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[7].x;
             let _e438 = rows[7].y;
             let _e442 = rows[7].z;
-            let _e445 = airlight_area_phase(s_41, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_42, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[8].x;
             let _e454 = rows[8].y;
             let _e458 = rows[8].z;
-            let _e461 = airlight_area_phase(s_41, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_42, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[9].x;
             let _e470 = rows[9].y;
             let _e474 = rows[9].z;
-            let _e477 = airlight_area_phase(s_41, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_42, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[10].x;
             let _e486 = rows[10].y;
             let _e490 = rows[10].z;
-            let _e493 = airlight_area_phase(s_41, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_42, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[11].x;
             let _e502 = rows[11].y;
             let _e506 = rows[11].z;
-            let _e509 = airlight_area_phase(s_41, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_42, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[12].x;
             let _e518 = rows[12].y;
             let _e522 = rows[12].z;
-            let _e525 = airlight_area_phase(s_41, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_42, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[13].x;
             let _e534 = rows[13].y;
             let _e538 = rows[13].z;
-            let _e541 = airlight_area_phase(s_41, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_42, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = at_2;
             let _e547 = rows[14].x;
             let _e550 = rows[14].y;
             let _e554 = rows[14].z;
-            let _e557 = airlight_area_phase(s_41, ((_e550 * ad) + (_e554 * across_1)));
+            let _e557 = airlight_area_phase(s_42, ((_e550 * ad) + (_e554 * across_1)));
             at_2 = (_e544 + (_e547 * _e557));
             let _e560 = at_2;
             let _e563 = rows[15].x;
             let _e566 = rows[15].y;
             let _e570 = rows[15].z;
-            let _e573 = airlight_area_phase(s_41, ((_e566 * ad) + (_e570 * across_1)));
+            let _e573 = airlight_area_phase(s_42, ((_e566 * ad) + (_e570 * across_1)));
             at_2 = (_e560 + (_e563 * _e573));
             let _e576 = sum_12;
             let _e578 = at_2;
@@ -7304,18 +7290,18 @@ fn airlight_sphere_cap(s_41: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     return _e584;
 }
 
-fn airlight_sphere_lobe_node(s_42: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_5: f32, g_28: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_43: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_5: f32, g_28: f32) -> f32 {
     let _e8 = airlight_cos_sin_half_turn(g_28);
     let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_5 * _e8.y) / _e8.x)));
     let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e43 = airlight_emitted(s_42, (root_5 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_42, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_42.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
+    let _e43 = airlight_emitted(s_43, (root_5 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_43, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_43.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
 }
 
-fn airlight_sphere_about_lobe(s_43: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
@@ -7379,82 +7365,82 @@ fn airlight_sphere_about_lobe(s_43: AirlightScene, a_26: AirlightArea, cap_3: Ai
             let _e117 = around;
             let _e120 = big_b_1;
             let _e121 = start_3;
-            let _e125 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251f * hw_6)));
+            let _e125 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251f * hw_6)));
             around = (_e117 + ((0.1894506f * hw_6) * _e125));
             let _e128 = around;
             let _e131 = big_b_1;
             let _e132 = start_3;
-            let _e136 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251f * hw_6)));
+            let _e136 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251f * hw_6)));
             around = (_e128 + ((0.1894506f * hw_6) * _e136));
             let _e139 = around;
             let _e142 = big_b_1;
             let _e143 = start_3;
-            let _e147 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354f * hw_6)));
+            let _e147 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354f * hw_6)));
             around = (_e139 + ((0.18260342f * hw_6) * _e147));
             let _e150 = around;
             let _e153 = big_b_1;
             let _e154 = start_3;
-            let _e158 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354f * hw_6)));
+            let _e158 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354f * hw_6)));
             around = (_e150 + ((0.18260342f * hw_6) * _e158));
             let _e161 = around;
             let _e164 = big_b_1;
             let _e165 = start_3;
-            let _e169 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678f * hw_6)));
+            let _e169 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678f * hw_6)));
             around = (_e161 + ((0.16915652f * hw_6) * _e169));
             let _e172 = around;
             let _e175 = big_b_1;
             let _e176 = start_3;
-            let _e180 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678f * hw_6)));
+            let _e180 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678f * hw_6)));
             around = (_e172 + ((0.16915652f * hw_6) * _e180));
             let _e183 = around;
             let _e186 = big_b_1;
             let _e187 = start_3;
-            let _e191 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623f * hw_6)));
+            let _e191 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623f * hw_6)));
             around = (_e183 + ((0.14959599f * hw_6) * _e191));
             let _e194 = around;
             let _e197 = big_b_1;
             let _e198 = start_3;
-            let _e202 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623f * hw_6)));
+            let _e202 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623f * hw_6)));
             around = (_e194 + ((0.14959599f * hw_6) * _e202));
             let _e205 = around;
             let _e208 = big_b_1;
             let _e209 = start_3;
-            let _e213 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044f * hw_6)));
+            let _e213 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044f * hw_6)));
             around = (_e205 + ((0.12462897f * hw_6) * _e213));
             let _e216 = around;
             let _e219 = big_b_1;
             let _e220 = start_3;
-            let _e224 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044f * hw_6)));
+            let _e224 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044f * hw_6)));
             around = (_e216 + ((0.12462897f * hw_6) * _e224));
             let _e227 = around;
             let _e230 = big_b_1;
             let _e231 = start_3;
-            let _e235 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312f * hw_6)));
+            let _e235 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312f * hw_6)));
             around = (_e227 + ((0.09515851f * hw_6) * _e235));
             let _e238 = around;
             let _e241 = big_b_1;
             let _e242 = start_3;
-            let _e246 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312f * hw_6)));
+            let _e246 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312f * hw_6)));
             around = (_e238 + ((0.09515851f * hw_6) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
             let _e253 = start_3;
-            let _e257 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575f * hw_6)));
+            let _e257 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575f * hw_6)));
             around = (_e249 + ((0.062253524f * hw_6) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
             let _e264 = start_3;
-            let _e268 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575f * hw_6)));
+            let _e268 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575f * hw_6)));
             around = (_e260 + ((0.062253524f * hw_6) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
             let _e275 = start_3;
-            let _e279 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009f * hw_6)));
+            let _e279 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009f * hw_6)));
             around = (_e271 + ((0.02715246f * hw_6) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
             let _e286 = start_3;
-            let _e290 = airlight_sphere_lobe_node(s_43, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009f * hw_6)));
+            let _e290 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009f * hw_6)));
             around = (_e282 + ((0.02715246f * hw_6) * _e290));
             let _e293 = sum_13;
             let _e294 = wpsi;
@@ -7470,16 +7456,16 @@ fn airlight_sphere_about_lobe(s_43: AirlightScene, a_26: AirlightArea, cap_3: Ai
     return _e301;
 }
 
-fn airlight_sphere(s_44: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_sphere(s_45: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_8: u32 = 0u;
+    var local_185: bool;
+    var local_186: bool;
+    var local_187: bool;
     var local_188: bool;
     var local_189: bool;
-    var local_190: bool;
-    var local_191: bool;
-    var local_192: bool;
 
     let v_11 = (a_27.c - x_26);
     let _e5 = airlight_safe_length(v_11);
@@ -7501,36 +7487,36 @@ fn airlight_sphere(s_44: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
             let c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_188 = (lobe_5.y > 0f);
+                local_185 = (lobe_5.y > 0f);
             } else {
-                local_188 = false;
+                local_185 = false;
             }
-            let _e57 = local_188;
+            let _e57 = local_185;
             if _e57 {
-                local_189 = (lobe_5.y < (_e23 + _e23));
+                local_186 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_189 = false;
+                local_186 = false;
             }
-            let _e64 = local_189;
+            let _e64 = local_186;
             if _e64 {
                 if !((c_22 > cap_4.cos_a)) {
                     if (c_22 > -(cap_4.cos_a)) {
                         let _e77 = airlight_acos(c_22);
-                        local_192 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_192 = false;
+                        local_189 = false;
                     }
-                    let _e84 = local_192;
-                    local_191 = _e84;
+                    let _e84 = local_189;
+                    local_188 = _e84;
                 } else {
-                    local_191 = true;
+                    local_188 = true;
                 }
-                let _e86 = local_191;
-                local_190 = _e86;
+                let _e86 = local_188;
+                local_187 = _e86;
             } else {
-                local_190 = false;
+                local_187 = false;
             }
-            let _e88 = local_190;
+            let _e88 = local_187;
             if _e88 {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -7547,48 +7533,48 @@ fn airlight_sphere(s_44: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_44, a_27, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_45, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_44, a_27, cap_4);
+    let _e101 = airlight_sphere_cap(s_45, a_27, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_45: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
-    switch s_45.light_shape {
+fn airlight_emitter_radiance(s_46: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
+    switch s_46.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_45, a_28, x_27);
+            let _e4 = airlight_disc(s_46, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_45, a_28, x_27);
+            let _e5 = airlight_parallelogram(s_46, a_28, x_27);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_45, a_28, x_27);
+            let _e6 = airlight_sphere(s_46, a_28, x_27);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_46: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_47: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along = ((a_29.h_eff * _e3.y) / _e3.x);
     let t_12 = (a_29.x_h + along);
-    let fade = exp(min((-(s_46.sigma_t) * max(((a_29.x_h - s_46.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_46, a_29, (s_46.origin + (t_12 * a_29.d)));
+    let fade = exp(min((-(s_47.sigma_t) * max(((a_29.x_h - s_47.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_47, a_29, (s_47.origin + (t_12 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_47: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_48: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_8: f32;
     var gauss_1: f32;
     var j_9: u32;
-    var local_193: bool;
+    var local_190: bool;
 
-    let _e1 = airlight_area(s_47);
+    let _e1 = airlight_area(s_48);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7625,13 +7611,13 @@ fn airlight_area_light(s_47: AirlightScene) -> AirlightResult {
                     let _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_9;
-                        local_193 = (_e66 < 14u);
+                        local_190 = (_e66 < 14u);
                     } else {
-                        local_193 = false;
+                        local_190 = false;
                     }
-                    let _e70 = local_193;
+                    let _e70 = local_190;
                     let x_36 = select((c_23 + (hw_7 * node_3.x)), (c_23 - (hw_7 * node_3.x)), _e70);
-                    let _e72 = airlight_area_node(s_47, _e1, x_36);
+                    let _e72 = airlight_area_node(s_48, _e1, x_36);
                     let _e73 = k_8;
                     k_8 = (_e73 + (node_3.y * _e72));
                     let _e77 = gauss_1;
@@ -7665,43 +7651,43 @@ fn airlight_area_light(s_47: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_47.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_48.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_48: AirlightScene) -> AirlightResult {
-    var local_194: bool;
-    var local_195: bool;
+fn airlight_in_scatter_area(s_49: AirlightScene) -> AirlightResult {
+    var local_191: bool;
+    var local_192: bool;
 
-    let _e1 = airlight_valid(s_48);
+    let _e1 = airlight_valid(s_49);
     if !(!(_e1)) {
-        local_194 = (s_48.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_191 = (s_49.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_194 = true;
+        local_191 = true;
     }
-    let _e10 = local_194;
+    let _e10 = local_191;
     if !(_e10) {
-        local_195 = (s_48.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_192 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_195 = true;
+        local_192 = true;
     }
-    let _e18 = local_195;
+    let _e18 = local_192;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_48);
+    let _e22 = airlight_area_light(s_49);
     return _e22;
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_196: bool;
+    var local_193: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_196 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_196 = true;
+        local_193 = true;
     }
-    let _e11 = local_196;
+    let _e11 = local_193;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -7710,18 +7696,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_197: bool;
+    var local_194: bool;
     var g_29: AirlightCanonical;
 
     let p_8 = n_3.scene;
     let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_8.dir);
-        local_197 = _e11;
+        local_194 = _e11;
     } else {
-        local_197 = false;
+        local_194 = false;
     }
-    let _e13 = local_197;
+    let _e13 = local_194;
     if _e13 {
         g_29 = n_3.canonical;
         if !(n_3.exact) {
@@ -7744,60 +7730,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_49: AirlightScene) -> AirlightResult {
-    var local_198: bool;
-    var local_199: bool;
-
-    let _e1 = airlight_valid(s_49);
-    if !(!(_e1)) {
-        local_198 = (s_49.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_198 = true;
-    }
-    let _e10 = local_198;
-    if !(_e10) {
-        local_199 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_199 = true;
-    }
-    let _e18 = local_199;
-    if _e18 {
-        return AirlightResult(0f, 1u);
-    }
-    let _e22 = airlight_point_integral(s_49);
-    return _e22;
-}
-
-fn airlight_in_scatter_route(s_50: AirlightScene) -> AirlightResult {
-    var local_200: bool;
-    var local_201: bool;
+fn airlight_in_scatter_point(s_50: AirlightScene) -> AirlightResult {
+    var local_195: bool;
+    var local_196: bool;
 
     let _e1 = airlight_valid(s_50);
     if !(!(_e1)) {
-        local_200 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_195 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_200 = true;
+        local_195 = true;
     }
-    let _e10 = local_200;
+    let _e10 = local_195;
     if !(_e10) {
-        local_201 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_196 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_201 = true;
+        local_196 = true;
     }
-    let _e18 = local_201;
+    let _e18 = local_196;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_50);
-    let _e23 = airlight_refined(s_50, _e22);
-    let _e24 = airlight_limits(s_50, _e23);
+    let _e22 = airlight_point_integral(s_50);
+    return _e22;
+}
+
+fn airlight_in_scatter_route(s_51: AirlightScene) -> AirlightResult {
+    var local_197: bool;
+    var local_198: bool;
+
+    let _e1 = airlight_valid(s_51);
+    if !(!(_e1)) {
+        local_197 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_197 = true;
+    }
+    let _e10 = local_197;
+    if !(_e10) {
+        local_198 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_198 = true;
+    }
+    let _e18 = local_198;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_51);
+    let _e23 = airlight_refined(s_51, _e22);
+    let _e24 = airlight_limits(s_51, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_50);
+    let _e29 = airlight_isotropic_scene(s_51);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_50, _e23);
+        let _e31 = airlight_angle_route(s_51, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -7806,24 +7792,24 @@ fn airlight_in_scatter_route(s_50: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_51: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_52: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_9: f32;
     var gauss_2: f32;
     var j_10: u32;
-    var local_202: bool;
+    var local_199: bool;
     var f: f32;
-    var local_203: bool;
+    var local_200: bool;
 
-    let _e1 = airlight_valid(s_51);
+    let _e1 = airlight_valid(s_52);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_51.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_52.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_51);
+    let _e12 = airlight_outer(s_52);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7862,25 +7848,25 @@ fn airlight_in_scatter(s_51: AirlightScene) -> AirlightResult {
                     let _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_10;
-                        local_202 = (_e81 < 6u);
+                        local_199 = (_e81 < 6u);
                     } else {
-                        local_202 = false;
+                        local_199 = false;
                     }
-                    let _e85 = local_202;
+                    let _e85 = local_199;
                     let w_11 = select((c_24 + (hw_8 * node_4.x)), (c_24 - (hw_8 * node_4.x)), _e85);
-                    let _e87 = airlight_outer_node(s_51, _e12, w_11);
+                    let _e87 = airlight_outer_node(s_52, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_51.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_203 = (s_51.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_52.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_200 = (s_52.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_203 = false;
+                            local_200 = false;
                         }
-                        let _e106 = local_203;
+                        let _e106 = local_200;
                         if _e106 {
                             return _e93;
                         }

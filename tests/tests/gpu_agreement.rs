@@ -111,6 +111,14 @@ fn case(terms: usize) -> Case {
         expected.push(expect(&rec, terms));
         described.push(Some(rec));
     }
+    // two-lobe Henyey–Greenstein with both asymmetries 0 — a constant phase function, which the
+    // kernel and the shader take by the isotropic path where the light is omni
+    for p in scenes().iter().take(6) {
+        let rec = SceneRecord { phase: airlight::phase::AnyPhase::TwoLobeHenyeyGreenstein(airlight::phase::TwoLobeHenyeyGreenstein { g1: 0.0, g2: 0.0, w: 0.3 }), ..record(p) };
+        records.extend_from_slice(&pack(&rec.ray, &rec.light, &rec.medium, &rec.phase));
+        expected.push(expect(&rec, terms));
+        described.push(Some(rec));
+    }
     // invalid records: the shader must give status INVALID and value 0
     let good = records[..RECORD_SIZE].to_vec();
     for (field, value) in [(16usize, 0.0f32), (20, f32::MAX), (68, -1.0), (72, f32::NAN), (0, f32::INFINITY), (76, 1.5), (60, 3.0)] {

@@ -1667,12 +1667,20 @@ fn airlight_limits(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
     return AirlightResult(0.0, AIRLIGHT_STATUS_DEFERRED);
 }
 
-/// Whether F = D·P is constant: an omni light (or c^0) in an isotropic phase function (HG or
-/// Schlick at 0 too), where the kernel takes the closed forms of the isotropic path.
+/// Whether F = D·P is constant: an omni light (or c^0) in a constant phase function
+/// (airlight_isotropic_phase), where the kernel takes the closed forms of the isotropic path
+/// (combined.rs: `light.is_isotropic() && phase.is_isotropic()`).
 fn airlight_isotropic_scene(s: AirlightScene) -> bool {
     return (s.light_kind == AIRLIGHT_LIGHT_OMNI || (s.light_kind == AIRLIGHT_LIGHT_TWO_LOBED && s.light_param_a == 0.0))
-        && (s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
-            || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0));
+        && airlight_isotropic_phase(s);
+}
+
+/// Whether the phase function is a constant (phase.rs `AnyPhase::is_isotropic`): isotropic, or
+/// Henyey–Greenstein, Schlick or two-lobe Henyey–Greenstein with every asymmetry 0.
+fn airlight_isotropic_phase(s: AirlightScene) -> bool {
+    return s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
+        || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0)
+        || (s.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG && s.phase_param_a == 0.0 && s.phase_param_b == 0.0);
 }
 
 fn airlight_in_scatter_canonical(s: AirlightScene, g: AirlightCanonical) -> AirlightResult {
@@ -2727,9 +2735,7 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     var a = AirlightArea(zero, s.light_position, zero, zero, zero, zero, zero, zero, s.light_param_a, 0.0, 0.0,
         array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, airlight_phase_lobes(s),
         false);
-    a.isotropic = s.phase_kind == AIRLIGHT_PHASE_ISOTROPIC
-        || ((s.phase_kind == AIRLIGHT_PHASE_HENYEY_GREENSTEIN || s.phase_kind == AIRLIGHT_PHASE_SCHLICK) && s.phase_param_a == 0.0)
-        || (s.phase_kind == AIRLIGHT_PHASE_TWO_LOBE_HG && s.phase_param_a == 0.0 && s.phase_param_b == 0.0);
+    a.isotropic = airlight_isotropic_phase(s);
     if (s.intensity == 0.0 || s.sigma_s == 0.0) {
         a.outcome = 1u;
         return a;
