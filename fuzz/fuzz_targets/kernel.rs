@@ -138,7 +138,8 @@ fuzz_target!(|raw: Raw| {
     // on inputs with power 18 and phase kind 5 (about one in 120 of uniform inputs, never the
     // zeros most inputs decode to), at tolerance 1e-3 (hundreds of point lights or rays
     // each): a disc of
-    // radius |w| at the light facing along its axis, a sphere of that radius there (a cosine lobe), and the ray's origin as a Lambertian
+    // radius |w| at the light facing along its axis, a sphere of that radius there (a cosine lobe),
+    // both and a parallelogram by the bounded method, and the ray's origin as a Lambertian
     // surface facing along the ray: never NaN, never negative (+∞ only for the light on the
     // surface point, or a true value beyond the range)
     if !(raw.power == 18 && raw.phase == 5) {
@@ -155,6 +156,20 @@ fuzz_target!(|raw: Raw| {
     if let Ok(s) = AreaScene::new(r, AreaLight { emission: lobe, ..AreaLight::new(sphere, l.intensity) }, m, p) {
         let x = s.in_scatter_counted(1e-3).0;
         assert!(!x.is_nan() && x >= 0.0, "f64/sphere: {x} for {raw:?}");
+    }
+    // the bounded method (the shaders'): the disc, the sphere and a parallelogram with edges
+    // across the axis, each with and without the cosine lobe — its routes about a phase lobe, an
+    // emission lobe and the edge all reachable
+    let axis = DVec3::from_array(raw.axis);
+    let edge_u = axis.cross(DVec3::new(0.3, 1.0, 0.2)) * raw.w;
+    let parallelogram = Emitter::Rectangle { corner: l.position, edge_u, edge_v: axis.cross(edge_u) };
+    for emitter in [disc, sphere, parallelogram] {
+        for emission in [Emission::Lambertian, lobe] {
+            if let Ok(s) = AreaScene::new(r, AreaLight { emission, ..AreaLight::new(emitter, l.intensity) }, m, p) {
+                let x = s.in_scatter_bounded();
+                assert!(!x.is_nan() && x >= 0.0, "f64/{emitter:?} {emission:?} bounded: {x} for {raw:?}");
+            }
+        }
     }
     let surface = Surface { position: r.origin, normal: r.dir };
     if let Ok(s) = SurfaceScene::new(surface, Brdf::Lambert { albedo: 1.0 }, l, m, p) {
