@@ -263,6 +263,8 @@ struct AirlightFlatLobe {
     float scale;
     float l;
     metal::float2 q;
+    bool on_emitter;
+    char _pad6[15];
 };
 struct AirlightCap {
     metal::packed_float3 a;
@@ -588,8 +590,8 @@ metal::float2 airlight_cos_sin(
 ) {
     float z_15 = x * x;
     float c_8 = 1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (0.000024801588 + (z_15 * (-0.0000002755732 + (z_15 * (0.0000000020876756 + (z_15 * (-0.000000000011470745 + (z_15 * 0.000000000000047794773)))))))))))))));
-    float s_53 = 1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (0.0000027557319 + (z_15 * (-0.000000025052108 + (z_15 * (0.00000000016059044 + (z_15 * (-0.00000000000076471636 + (z_15 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_8, s_53 * x);
+    float s_54 = 1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (0.0000027557319 + (z_15 * (-0.000000025052108 + (z_15 * (0.00000000016059044 + (z_15 * (-0.00000000000076471636 + (z_15 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_8, s_54 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -651,10 +653,10 @@ float airlight_log1p(
     if (_e9) {
         return metal::log(1.0 + x_2);
     }
-    float s_54 = x_2 / (2.0 + x_2);
-    float z_17 = s_54 * s_54;
+    float s_55 = x_2 / (2.0 + x_2);
+    float z_17 = s_55 * s_55;
     float sum_14 = (((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0;
-    return (2.0 * s_54) * sum_14;
+    return (2.0 * s_55) * sum_14;
 }
 
 bool airlight_is_finite(
@@ -1754,8 +1756,8 @@ airlight_type_2 airlight_exp_legendre_moments(
                 }
             }
             uint _e55 = steps;
-            uint top_2 = (k0_ + _e55) + 2u;
-            odd = static_cast<float>((2u * top_2) + 1u);
+            uint top_1 = (k0_ + _e55) + 2u;
+            odd = static_cast<float>((2u * top_1) + 1u);
             uint2 loop_bound_7 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
@@ -1773,7 +1775,7 @@ airlight_type_2 airlight_exp_legendre_moments(
                 }
                 {
                     uint _e76 = i_4;
-                    if ((_e76 + AIRLIGHT_TERMS) > top_2) {
+                    if ((_e76 + AIRLIGHT_TERMS) > top_1) {
                         break;
                     }
                     float _e79 = above;
@@ -2305,8 +2307,8 @@ AirlightPanel airlight_v_panel(
     sum_3 = _e119 + (_e77.inner[7] * _e81.inner[7]);
     float _e124 = airlight_factor(half_6, a_5, b_4);
     float _e125 = r_2;
-    float w_3 = _e124 * _e125;
-    float mass_5 = w_3 * _e81.inner[0];
+    float w_2 = _e124 * _e125;
+    float mass_5 = w_2 * _e81.inner[0];
     float _e129 = vc;
     float _e130 = r_2;
     float _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
@@ -2318,7 +2320,7 @@ AirlightPanel airlight_v_panel(
     float _e140 = airlight_transform_noise(mass_5, _e139);
     float _e141 = over_max;
     float _e143 = f_max_1;
-    AirlightPanel _e144 = airlight_panel_result(w_3 * _e137, error_1, _e140, mass_5 * _e141, _e143);
+    AirlightPanel _e144 = airlight_panel_result(w_2 * _e137, error_1, _e140, mass_5 * _e141, _e143);
     return _e144;
 }
 
@@ -2385,7 +2387,7 @@ AirlightPanel airlight_y_panel(
     airlight_type_2 _e81 = samples_1;
     airlight_type_2 _e82 = airlight_legendre(_e81);
     float _e83 = airlight_factor(half_7, a_6, b_5);
-    float w_4 = _e83 * r_9;
+    float w_3 = _e83 * r_9;
     airlight_type_2 _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2.inner[0] = 2.0;
@@ -2393,13 +2395,13 @@ AirlightPanel airlight_y_panel(
     float _e93 = airlight_tail_estimate(_e82);
     airlight_type_2 _e95 = m_2;
     float _e96 = airlight_error_factor(_e82, _e95, _e90);
-    float error_2 = ((w_4 * 2.0) * _e93) * _e96;
+    float error_2 = ((w_3 * 2.0) * _e93) * _e96;
     float _e104 = p_avg;
-    float _e105 = airlight_transform_noise(w_4 * 2.0, _e104);
+    float _e105 = airlight_transform_noise(w_3 * 2.0, _e104);
     float _e106 = mass_1;
     float _e108 = over_max_1;
     float _e110 = f_max_2;
-    AirlightPanel _e111 = airlight_panel_result((w_4 * 2.0) * _e82.inner[0], error_2, _e105, (w_4 * _e106) * _e108, _e110);
+    AirlightPanel _e111 = airlight_panel_result((w_3 * 2.0) * _e82.inner[0], error_2, _e105, (w_3 * _e106) * _e108, _e110);
     return _e111;
 }
 
@@ -3158,8 +3160,8 @@ float airlight_cut_length(
         return AIRLIGHT_FLT_MAX;
     }
     float inv_h = 1.0 / big_h_1;
-    float w_5 = v_s + inv_h;
-    float r_11 = (1.0 + (w_5 * w_5)) / (1.0 + (v_s * v_s));
+    float w_4 = v_s + inv_h;
+    float r_11 = (1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s));
     float e_9 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
     return e_9 * inv_h;
 }
@@ -3386,13 +3388,13 @@ metal::float2 airlight_angle_route(
             uint _e297 = i_11;
             samples_3.inner[metal::min(unsigned(_e297), 7u)] = gw;
             uint _e299 = i_11;
-            float w_6 = _e224.inner[metal::min(unsigned(airlight_naga_div(_e299, 2u)), 3u)].y;
+            float w_5 = _e224.inner[metal::min(unsigned(airlight_naga_div(_e299, 2u)), 3u)].y;
             float _e304 = value_1;
-            value_1 = _e304 + (w_6 * gw);
+            value_1 = _e304 + (w_5 * gw);
             float _e307 = mass_4;
-            mass_4 = _e307 + (w_6 * weight_3);
+            mass_4 = _e307 + (w_5 * weight_3);
             float _e310 = magnitude;
-            magnitude = _e310 + (w_6 * metal::abs(gw));
+            magnitude = _e310 + (w_5 * metal::abs(gw));
             float _e314 = f_max_5;
             f_max_5 = metal::max(_e314, metal::abs(f_2));
         }
@@ -4980,13 +4982,13 @@ AirlightCanonical airlight_refined(
     float _e46 = airlight_diff_of_products(hi_6.y, s_21.dir[2], hi_6.z, s_21.dir[1], key_4);
     float _e59 = airlight_diff_of_products(hi_6.z, s_21.dir[0], hi_6.x, s_21.dir[2], key_4);
     float _e72 = airlight_diff_of_products(hi_6.x, s_21.dir[1], hi_6.y, s_21.dir[0], key_4);
-    metal::float3 w_7 = metal::float3(_e46 + ((lo_7.y * s_21.dir[2]) - (lo_7.z * s_21.dir[1])), _e59 + ((lo_7.z * s_21.dir[0]) - (lo_7.x * s_21.dir[2])), _e72 + ((lo_7.x * s_21.dir[1]) - (lo_7.y * s_21.dir[0])));
-    bool _e82 = airlight_vec_finite(w_7);
+    metal::float3 w_6 = metal::float3(_e46 + ((lo_7.y * s_21.dir[2]) - (lo_7.z * s_21.dir[1])), _e59 + ((lo_7.z * s_21.dir[0]) - (lo_7.x * s_21.dir[2])), _e72 + ((lo_7.x * s_21.dir[1]) - (lo_7.y * s_21.dir[0])));
+    bool _e82 = airlight_vec_finite(w_6);
     if (!(_e82)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_7);
+    float _e85 = airlight_safe_length(w_6);
     if (_e85 == 0.0) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
@@ -5010,7 +5012,7 @@ AirlightCanonical airlight_refined(
         a_16 = _e112;
     }
     metal::float3 _e113 = airlight_normalize(dir_2);
-    metal::float3 _e114 = airlight_normalize(w_7);
+    metal::float3 _e114 = airlight_normalize(w_6);
     metal::float3 n_4 = -(metal::cross(_e113, _e114));
     out_2.h = h_7;
     metal::float3 _e119 = a_16;
@@ -6008,9 +6010,9 @@ float airlight_lobe_piece(
     bool local_144 = {};
     float sum_5 = 0.0;
     uint k_6 = 0u;
-    float w_8 = hi_5 - lo_6;
-    if (!(!((w_8 > 0.0)))) {
-        float _e14 = airlight_lobe_at(q_3, lo_6 + (0.5 * w_8));
+    float w_7 = hi_5 - lo_6;
+    if (!(!((w_7 > 0.0)))) {
+        float _e14 = airlight_lobe_at(q_3, lo_6 + (0.5 * w_7));
         local_144 = !((_e14 > 0.0));
     } else {
         local_144 = true;
@@ -6037,10 +6039,10 @@ float airlight_lobe_piece(
         }
         {
             uint _e29 = k_6;
-            metal::float2 node_2 = _e21.inner[metal::min(unsigned(_e29), 4u)];
+            metal::float2 node_3 = _e21.inner[metal::min(unsigned(_e29), 4u)];
             float _e31 = sum_5;
-            float _e34 = airlight_lobe_node(q_3, lo_6, w_8, _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
-            float _e38 = airlight_lobe_node(q_3, lo_6, w_8, 1.0 - _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
+            float _e34 = airlight_lobe_node(q_3, lo_6, w_7, _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
+            float _e38 = airlight_lobe_node(q_3, lo_6, w_7, 1.0 - _e21.inner[metal::min(unsigned(_e29), 4u)].x, smoothstep_1);
             sum_5 = _e31 + (_e21.inner[metal::min(unsigned(_e29), 4u)].y * (_e34 + _e38));
         }
     }
@@ -6414,12 +6416,12 @@ AirlightNode airlight_outer_node(
         float t_8 = x_20 - static_cast<float>(i_36);
         float a_41 = g_25.gamma.inner[metal::min(unsigned(i_36), 12u)];
         float b_19 = g_25.gamma.inner[metal::min(unsigned(i_36 + 1u), 12u)];
-        float w_9 = b_19 - a_41;
+        float w_8 = b_19 - a_41;
         float u_8 = 1.0 - t_8;
         bool smooth_a = ((g_25.smooth_edges >> i_36) & 1u) != 0u;
         bool smooth_b = ((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u;
-        gamma_1 = a_41 + (((w_9 * t_8) * t_8) * ((3.0 - t_8) - t_8));
-        jacobian = ((w_9 * 6.0) * t_8) * u_8;
+        gamma_1 = a_41 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8));
+        jacobian = ((w_8 * 6.0) * t_8) * u_8;
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -6427,7 +6429,7 @@ AirlightNode airlight_outer_node(
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = _e66 ? (a_41 + ((w_9 * t_8) * t_8)) : _e58;
+        gamma_1 = _e66 ? (a_41 + ((w_8 * t_8) * t_8)) : _e58;
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6435,7 +6437,7 @@ AirlightNode airlight_outer_node(
             local_164 = false;
         }
         bool _e75 = local_164;
-        jacobian = _e75 ? (w_9 * (t_8 + t_8)) : _e68;
+        jacobian = _e75 ? (w_8 * (t_8 + t_8)) : _e68;
         float _e77 = gamma_1;
         if (smooth_a) {
             local_165 = !(smooth_b);
@@ -6443,7 +6445,7 @@ AirlightNode airlight_outer_node(
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = _e85 ? (b_19 - ((w_9 * u_8) * u_8)) : _e77;
+        gamma_1 = _e85 ? (b_19 - ((w_8 * u_8) * u_8)) : _e77;
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -6451,7 +6453,7 @@ AirlightNode airlight_outer_node(
             local_166 = false;
         }
         bool _e94 = local_166;
-        jacobian = _e94 ? (w_9 * (u_8 + u_8)) : _e87;
+        jacobian = _e94 ? (w_8 * (u_8 + u_8)) : _e87;
         float _e96 = gamma_1;
         if (smooth_a) {
             local_167 = smooth_b;
@@ -6459,7 +6461,7 @@ AirlightNode airlight_outer_node(
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = _e102 ? (a_41 + (w_9 * t_8)) : _e96;
+        gamma_1 = _e102 ? (a_41 + (w_8 * t_8)) : _e96;
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -6467,7 +6469,7 @@ AirlightNode airlight_outer_node(
             local_168 = false;
         }
         bool _e108 = local_168;
-        jacobian = _e108 ? w_9 : _e104;
+        jacobian = _e108 ? w_8 : _e104;
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
             AirlightScene _e114 = p;
@@ -6685,12 +6687,42 @@ float airlight_emission_scale(
     return 2.0 / metal::sqrt(static_cast<float>(p_3 - 1u));
 }
 
-bool airlight_far_from_edge(
+metal::float2 airlight_graded_range(
     AirlightScene s_31,
+    float top
+) {
+    bool local_169 = {};
+    float _e2 = airlight_emission_scale(s_31);
+    if (_e2 > 0.0) {
+        local_169 = _e2 < top;
+    } else {
+        local_169 = false;
+    }
+    bool _e9 = local_169;
+    if (_e9) {
+        float _e11 = airlight_atan(top / _e2);
+        return metal::float2(_e11, _e2);
+    }
+    return metal::float2(top, 0.0);
+}
+
+metal::float2 airlight_graded_node(
+    float graded,
+    float node
+) {
+    if (graded > 0.0) {
+        metal::float2 _e4 = airlight_cos_sin_half_turn(node);
+        return metal::float2((graded * _e4.y) / _e4.x, graded / (_e4.x * _e4.x));
+    }
+    return metal::float2(node, 1.0);
+}
+
+bool airlight_far_from_edge(
+    AirlightScene s_32,
     float depth,
     float z_9
 ) {
-    float _e3 = airlight_emission_scale(s_31);
+    float _e3 = airlight_emission_scale(s_32);
     return depth >= ((AIRLIGHT_EDGE_REACH * z_9) * ((_e3 > 0.0) ? metal::min(_e3, 1.0) : 1.0));
 }
 
@@ -6698,13 +6730,13 @@ metal::float2 airlight_lobe(
     float sign,
     float gap_3
 ) {
-    bool local_169 = {};
+    bool local_170 = {};
     if (!(!((gap_3 > 0.0)))) {
-        local_169 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_170 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_169 = true;
+        local_170 = true;
     }
-    bool _e12 = local_169;
+    bool _e12 = local_170;
     if (_e12) {
         return metal::float2(1.0, 0.0);
     }
@@ -6712,12 +6744,12 @@ metal::float2 airlight_lobe(
 }
 
 metal::float4 airlight_phase_lobes(
-    AirlightScene s_32
+    AirlightScene s_33
 ) {
     metal::float2 first = metal::float2(1.0, 0.0);
     metal::float2 second = metal::float2(1.0, 0.0);
-    float p0_5 = s_32.phase_param_a;
-    switch(s_32.phase_kind) {
+    float p0_5 = s_33.phase_param_a;
+    switch(s_33.phase_kind) {
         case 2u:
         case 4u: {
             float _e11 = airlight_hg_gap(p0_5);
@@ -6735,8 +6767,8 @@ metal::float4 airlight_phase_lobes(
             float _e22 = airlight_hg_gap(p0_5);
             metal::float2 _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            float _e26 = airlight_hg_gap(s_32.phase_param_b);
-            metal::float2 _e27 = airlight_lobe(s_32.phase_param_b, _e26);
+            float _e26 = airlight_hg_gap(s_33.phase_param_b);
+            metal::float2 _e27 = airlight_lobe(s_33.phase_param_b, _e26);
             second = _e27;
             break;
         }
@@ -6753,14 +6785,14 @@ metal::float3 airlight_basis_e1_(
     metal::float3 n_2
 ) {
     metal::float3 u_3 = metal::float3(0.0, 0.0, 1.0);
-    bool local_170 = {};
+    bool local_171 = {};
     metal::float3 m_10 = metal::abs(n_2);
     if (m_10.x <= m_10.y) {
-        local_170 = m_10.x <= m_10.z;
+        local_171 = m_10.x <= m_10.z;
     } else {
-        local_170 = false;
+        local_171 = false;
     }
-    bool _e16 = local_170;
+    bool _e16 = local_171;
     if (_e16) {
         u_3 = metal::float3(1.0, 0.0, 0.0);
     } else {
@@ -6787,10 +6819,10 @@ float airlight_area_theta(
 }
 
 AirlightArea airlight_area(
-    AirlightScene s_33
+    AirlightScene s_34
 ) {
     AirlightArea a_18 = {};
-    bool local_171 = {};
+    bool local_172 = {};
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
@@ -6798,36 +6830,36 @@ AirlightArea airlight_area(
     float size = {};
     float t_end_1 = {};
     bool end_infinite = {};
-    bool local_172 = {};
+    bool local_173 = {};
     airlight_type_15 cuts_4 = {};
     uint i_27 = 0u;
-    bool local_173 = {};
     bool local_174 = {};
     bool local_175 = {};
+    bool local_176 = {};
     metal::float3 zero = metal::float3(0.0);
-    metal::float4 _e21 = airlight_phase_lobes(s_33);
-    a_18 = AirlightArea {zero, s_33.light_position, zero, zero, zero, zero, zero, zero, s_33.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false};
-    bool _e28 = airlight_isotropic_phase(s_33);
+    metal::float4 _e21 = airlight_phase_lobes(s_34);
+    a_18 = AirlightArea {zero, s_34.light_position, zero, zero, zero, zero, zero, zero, s_34.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false};
+    bool _e28 = airlight_isotropic_phase(s_34);
     a_18.isotropic = _e28;
-    if (!((s_33.intensity == 0.0))) {
-        local_171 = s_33.sigma_s == 0.0;
+    if (!((s_34.intensity == 0.0))) {
+        local_172 = s_34.sigma_s == 0.0;
     } else {
-        local_171 = true;
+        local_172 = true;
     }
-    bool _e39 = local_171;
+    bool _e39 = local_172;
     if (_e39) {
         a_18.outcome = 1u;
         AirlightArea _e42 = a_18;
         return _e42;
     }
-    metal::float3 o_6 = s_33.origin;
-    metal::float3 _e45 = airlight_normalize(s_33.dir);
+    metal::float3 o_6 = s_34.origin;
+    metal::float3 _e45 = airlight_normalize(s_34.dir);
     a_18.d = _e45;
-    bool infinite_6 = (s_33.flags & 1u) != 0u;
-    float t0_2 = s_33.t_min;
-    centre = s_33.light_position;
-    size = s_33.light_param_a;
-    if (s_33.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+    bool infinite_6 = (s_34.flags & 1u) != 0u;
+    float t0_2 = s_34.t_min;
+    centre = s_34.light_position;
+    size = s_34.light_param_a;
+    if (s_34.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         metal::float3 _e67 = a_18.c;
         metal::float3 oc = o_6 - _e67;
         float b_20 = metal::dot(oc, _e45);
@@ -6843,15 +6875,15 @@ AirlightArea airlight_area(
             cut_count = 2u;
         }
     } else {
-        if (s_33.light_shape == AIRLIGHT_SHAPE_DISC) {
-            metal::float3 _e98 = airlight_normalize(s_33.light_axis);
+        if (s_34.light_shape == AIRLIGHT_SHAPE_DISC) {
+            metal::float3 _e98 = airlight_normalize(s_34.light_axis);
             a_18.n = _e98;
             metal::float3 _e101 = a_18.n;
             metal::float3 _e102 = airlight_basis_e1_(_e101);
             a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_33.light_axis;
-            a_18.ev = s_33.light_end;
+            a_18.eu = s_34.light_axis;
+            a_18.ev = s_34.light_end;
             metal::float3 _e109 = a_18.eu;
             metal::float3 _e111 = a_18.ev;
             metal::float3 _e113 = airlight_normalize(metal::cross(_e109, _e111));
@@ -6897,20 +6929,20 @@ AirlightArea airlight_area(
     float _e184 = size;
     float _e185 = size;
     a_18.h_eff = metal::sqrt((_e181 * _e181) + (_e184 * _e185));
-    t_end_1 = s_33.t_max;
+    t_end_1 = s_34.t_max;
     end_infinite = infinite_6;
-    if (s_33.sigma_t > 0.0) {
+    if (s_34.sigma_t > 0.0) {
         metal::float3 _e195 = centre;
         float _e199 = airlight_safe_length(_e195 - (o_6 + (t0_2 * _e45)));
         float _e201 = size;
-        float reach_1 = ((t0_2 + _e199) + _e201) - (-15.942385 / s_33.sigma_t);
+        float reach_1 = ((t0_2 + _e199) + _e201) - (-15.942385 / s_34.sigma_t);
         if (!(infinite_6)) {
             float _e210 = t_end_1;
-            local_172 = reach_1 < _e210;
+            local_173 = reach_1 < _e210;
         } else {
-            local_172 = true;
+            local_173 = true;
         }
-        bool _e213 = local_172;
+        bool _e213 = local_173;
         if (_e213) {
             t_end_1 = reach_1;
             end_infinite = false;
@@ -6952,25 +6984,25 @@ AirlightArea airlight_area(
             cuts_4.inner[metal::min(unsigned(_e248), 2u)] = _e217;
             bool _e250 = airlight_is_finite(t_9);
             if (_e250) {
-                local_173 = t_9 >= t0_2;
+                local_174 = t_9 >= t0_2;
             } else {
-                local_173 = false;
+                local_174 = false;
             }
-            bool _e255 = local_173;
+            bool _e255 = local_174;
             if (_e255) {
                 bool _e258 = end_infinite;
                 if (!(_e258)) {
                     float _e262 = t_end_1;
-                    local_175 = t_9 <= _e262;
+                    local_176 = t_9 <= _e262;
                 } else {
-                    local_175 = true;
+                    local_176 = true;
                 }
-                bool _e265 = local_175;
-                local_174 = _e265;
+                bool _e265 = local_176;
+                local_175 = _e265;
             } else {
-                local_174 = false;
+                local_175 = false;
             }
-            bool _e267 = local_174;
+            bool _e267 = local_175;
             if (_e267) {
                 uint _e268 = i_27;
                 AirlightArea _e270 = a_18;
@@ -6995,138 +7027,90 @@ AirlightAbove airlight_above(
 }
 
 float airlight_flat_node(
-    AirlightScene s_34,
+    AirlightScene s_35,
     AirlightArea a_19,
     AirlightAbove above_1,
     metal::float2 e_3,
-    float graded,
-    float node
+    float graded_1,
+    float node_1
 ) {
-    float g_26 = {};
-    float jacobian_1 = 1.0;
-    g_26 = node;
-    if (graded > 0.0) {
-        metal::float2 _e11 = airlight_cos_sin_half_turn(node);
-        g_26 = (graded * _e11.y) / _e11.x;
-        jacobian_1 = graded / (_e11.x * _e11.x);
-    }
-    float _e20 = g_26;
-    metal::float2 _e21 = airlight_cos_sin_half_turn(_e20);
-    float r_13 = (above_1.rho0_ * _e21.y) / _e21.x;
-    float dr = above_1.rho0_ / (_e21.x * _e21.x);
+    metal::float2 _e6 = airlight_graded_node(graded_1, node_1);
+    metal::float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
+    float r_13 = (above_1.rho0_ * _e8.y) / _e8.x;
+    float dr = above_1.rho0_ / (_e8.x * _e8.x);
     metal::float2 p_4 = above_1.off + (r_13 * e_3);
     float z_19 = above_1.z;
     float dist = metal::sqrt(((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y));
     float inv_5 = 1.0 / dist;
     float cos = z_19 * inv_5;
-    float _e63 = airlight_area_phase(s_34, (((p_4.x * a_19.dirs[0]) + (p_4.y * a_19.dirs[1])) - (z_19 * a_19.dirs[2])) * inv_5);
-    float _e64 = jacobian_1;
-    float _e65 = airlight_emitted(s_34, cos);
-    return (((((((_e64 * _e65) * metal::exp(metal::min(-(s_34.sigma_t) * dist, 0.0))) * _e63) * cos) * inv_5) * inv_5) * r_13) * dr;
+    float _e50 = airlight_area_phase(s_35, (((p_4.x * a_19.dirs[0]) + (p_4.y * a_19.dirs[1])) - (z_19 * a_19.dirs[2])) * inv_5);
+    float _e52 = airlight_emitted(s_35, cos);
+    return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_35.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_13) * dr;
 }
 
 float airlight_flat_radial(
-    AirlightScene s_35,
+    AirlightScene s_36,
     AirlightArea a_20,
     AirlightAbove above_2,
     metal::float2 e_4,
     float r_max
 ) {
-    float top = {};
-    float graded_1 = {};
-    bool local_176 = {};
     float sum_7 = 0.0;
     float _e7 = airlight_atan(r_max / above_2.rho0_);
-    top = _e7;
-    float _e9 = airlight_emission_scale(s_35);
-    graded_1 = _e9;
-    float _e11 = graded_1;
-    if (_e11 > 0.0) {
-        float _e16 = graded_1;
-        float _e17 = top;
-        local_176 = _e16 < _e17;
-    } else {
-        local_176 = false;
-    }
-    bool _e20 = local_176;
-    if (_e20) {
-        float _e21 = top;
-        float _e22 = graded_1;
-        float _e24 = airlight_atan(_e21 / _e22);
-        top = _e24;
-    } else {
-        graded_1 = 0.0;
-    }
-    float _e26 = top;
-    float c_16 = 0.5 * _e26;
-    float _e29 = top;
-    float hw_2 = 0.5 * _e29;
-    float _e34 = sum_7;
-    float _e37 = graded_1;
-    float _e41 = airlight_flat_node(s_35, a_20, above_2, e_4, _e37, c_16 - (0.09501251 * hw_2));
-    sum_7 = _e34 + ((0.1894506 * hw_2) * _e41);
-    float _e44 = sum_7;
-    float _e47 = graded_1;
-    float _e51 = airlight_flat_node(s_35, a_20, above_2, e_4, _e47, c_16 + (0.09501251 * hw_2));
-    sum_7 = _e44 + ((0.1894506 * hw_2) * _e51);
+    metal::float2 _e8 = airlight_graded_range(s_36, _e7);
+    float graded_5 = _e8.y;
+    float c_16 = 0.5 * _e8.x;
+    float hw_2 = 0.5 * _e8.x;
+    float _e18 = sum_7;
+    float _e24 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.09501251 * hw_2));
+    sum_7 = _e18 + ((0.1894506 * hw_2) * _e24);
+    float _e27 = sum_7;
+    float _e33 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.09501251 * hw_2));
+    sum_7 = _e27 + ((0.1894506 * hw_2) * _e33);
+    float _e36 = sum_7;
+    float _e42 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.28160354 * hw_2));
+    sum_7 = _e36 + ((0.18260342 * hw_2) * _e42);
+    float _e45 = sum_7;
+    float _e51 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.28160354 * hw_2));
+    sum_7 = _e45 + ((0.18260342 * hw_2) * _e51);
     float _e54 = sum_7;
-    float _e57 = graded_1;
-    float _e61 = airlight_flat_node(s_35, a_20, above_2, e_4, _e57, c_16 - (0.28160354 * hw_2));
-    sum_7 = _e54 + ((0.18260342 * hw_2) * _e61);
-    float _e64 = sum_7;
-    float _e67 = graded_1;
-    float _e71 = airlight_flat_node(s_35, a_20, above_2, e_4, _e67, c_16 + (0.28160354 * hw_2));
-    sum_7 = _e64 + ((0.18260342 * hw_2) * _e71);
-    float _e74 = sum_7;
-    float _e77 = graded_1;
-    float _e81 = airlight_flat_node(s_35, a_20, above_2, e_4, _e77, c_16 - (0.45801678 * hw_2));
-    sum_7 = _e74 + ((0.16915652 * hw_2) * _e81);
-    float _e84 = sum_7;
-    float _e87 = graded_1;
-    float _e91 = airlight_flat_node(s_35, a_20, above_2, e_4, _e87, c_16 + (0.45801678 * hw_2));
-    sum_7 = _e84 + ((0.16915652 * hw_2) * _e91);
-    float _e94 = sum_7;
-    float _e97 = graded_1;
-    float _e101 = airlight_flat_node(s_35, a_20, above_2, e_4, _e97, c_16 - (0.61787623 * hw_2));
-    sum_7 = _e94 + ((0.14959599 * hw_2) * _e101);
-    float _e104 = sum_7;
-    float _e107 = graded_1;
-    float _e111 = airlight_flat_node(s_35, a_20, above_2, e_4, _e107, c_16 + (0.61787623 * hw_2));
-    sum_7 = _e104 + ((0.14959599 * hw_2) * _e111);
-    float _e114 = sum_7;
-    float _e117 = graded_1;
-    float _e121 = airlight_flat_node(s_35, a_20, above_2, e_4, _e117, c_16 - (0.7554044 * hw_2));
-    sum_7 = _e114 + ((0.12462897 * hw_2) * _e121);
-    float _e124 = sum_7;
-    float _e127 = graded_1;
-    float _e131 = airlight_flat_node(s_35, a_20, above_2, e_4, _e127, c_16 + (0.7554044 * hw_2));
-    sum_7 = _e124 + ((0.12462897 * hw_2) * _e131);
-    float _e134 = sum_7;
-    float _e137 = graded_1;
-    float _e141 = airlight_flat_node(s_35, a_20, above_2, e_4, _e137, c_16 - (0.8656312 * hw_2));
-    sum_7 = _e134 + ((0.09515851 * hw_2) * _e141);
+    float _e60 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.45801678 * hw_2));
+    sum_7 = _e54 + ((0.16915652 * hw_2) * _e60);
+    float _e63 = sum_7;
+    float _e69 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.45801678 * hw_2));
+    sum_7 = _e63 + ((0.16915652 * hw_2) * _e69);
+    float _e72 = sum_7;
+    float _e78 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.61787623 * hw_2));
+    sum_7 = _e72 + ((0.14959599 * hw_2) * _e78);
+    float _e81 = sum_7;
+    float _e87 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.61787623 * hw_2));
+    sum_7 = _e81 + ((0.14959599 * hw_2) * _e87);
+    float _e90 = sum_7;
+    float _e96 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.7554044 * hw_2));
+    sum_7 = _e90 + ((0.12462897 * hw_2) * _e96);
+    float _e99 = sum_7;
+    float _e105 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.7554044 * hw_2));
+    sum_7 = _e99 + ((0.12462897 * hw_2) * _e105);
+    float _e108 = sum_7;
+    float _e114 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.8656312 * hw_2));
+    sum_7 = _e108 + ((0.09515851 * hw_2) * _e114);
+    float _e117 = sum_7;
+    float _e123 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.8656312 * hw_2));
+    sum_7 = _e117 + ((0.09515851 * hw_2) * _e123);
+    float _e126 = sum_7;
+    float _e132 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.944575 * hw_2));
+    sum_7 = _e126 + ((0.062253524 * hw_2) * _e132);
+    float _e135 = sum_7;
+    float _e141 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.944575 * hw_2));
+    sum_7 = _e135 + ((0.062253524 * hw_2) * _e141);
     float _e144 = sum_7;
-    float _e147 = graded_1;
-    float _e151 = airlight_flat_node(s_35, a_20, above_2, e_4, _e147, c_16 + (0.8656312 * hw_2));
-    sum_7 = _e144 + ((0.09515851 * hw_2) * _e151);
-    float _e154 = sum_7;
-    float _e157 = graded_1;
-    float _e161 = airlight_flat_node(s_35, a_20, above_2, e_4, _e157, c_16 - (0.944575 * hw_2));
-    sum_7 = _e154 + ((0.062253524 * hw_2) * _e161);
-    float _e164 = sum_7;
-    float _e167 = graded_1;
-    float _e171 = airlight_flat_node(s_35, a_20, above_2, e_4, _e167, c_16 + (0.944575 * hw_2));
-    sum_7 = _e164 + ((0.062253524 * hw_2) * _e171);
-    float _e174 = sum_7;
-    float _e177 = graded_1;
-    float _e181 = airlight_flat_node(s_35, a_20, above_2, e_4, _e177, c_16 - (0.9894009 * hw_2));
-    sum_7 = _e174 + ((0.02715246 * hw_2) * _e181);
-    float _e184 = sum_7;
-    float _e187 = graded_1;
-    float _e191 = airlight_flat_node(s_35, a_20, above_2, e_4, _e187, c_16 + (0.9894009 * hw_2));
-    sum_7 = _e184 + ((0.02715246 * hw_2) * _e191);
-    float _e194 = sum_7;
-    return _e194;
+    float _e150 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 - (0.9894009 * hw_2));
+    sum_7 = _e144 + ((0.02715246 * hw_2) * _e150);
+    float _e153 = sum_7;
+    float _e159 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, c_16 + (0.9894009 * hw_2));
+    sum_7 = _e153 + ((0.02715246 * hw_2) * _e159);
+    float _e162 = sum_7;
+    return _e162;
 }
 
 metal::float3 airlight_outline_boundary(
@@ -7244,7 +7228,8 @@ AirlightFlatLobe airlight_flat_lobe(
                 metal::float2 _e49 = airlight_outline_nearest(o_2, q_13);
                 metal::float3 to_near = metal::float3(_e49, -(z_11));
                 float cos_1 = metal::min(metal::dot(p_6, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
-                if (!(metal::all(_e49 == q_13))) {
+                bool on_emitter = metal::all(_e49 == q_13);
+                if (!(on_emitter)) {
                     float _e63 = airlight_acos(cos_1);
                     local_180 = _e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
                 } else {
@@ -7252,12 +7237,12 @@ AirlightFlatLobe airlight_flat_lobe(
                 }
                 bool _e69 = local_180;
                 if (_e69) {
-                    return AirlightFlatLobe {p_6, lobe_4.x, lobe_4.y, l_4, q_13};
+                    return AirlightFlatLobe {p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter};
                 }
             }
         }
     }
-    return AirlightFlatLobe {metal::float3(0.0), 1.0, 0.0, 0.0, metal::float2(0.0)};
+    return AirlightFlatLobe {metal::float3(0.0), 1.0, 0.0, 0.0, metal::float2(0.0), false};
 }
 
 metal::float2 airlight_clip(
@@ -7323,27 +7308,27 @@ metal::float2 airlight_outline_chord(
 }
 
 float airlight_flat_lobe_node(
-    AirlightScene s_36,
+    AirlightScene s_37,
     float z_12,
     AirlightFlatLobe lobe_1,
     float k_7,
     float start_1,
     float graded_2,
-    float g_27
+    float g_26
 ) {
-    metal::float2 _e7 = airlight_cos_sin_half_turn(g_27);
+    metal::float2 _e7 = airlight_cos_sin_half_turn(g_26);
     metal::float2 _e13 = airlight_cos_sin_half_turn(start_1 + ((graded_2 * _e7.y) / _e7.x));
     float c_17 = -(lobe_1.p[2]) * (_e13.x - (k_7 * _e13.y));
     if (!((c_17 > 0.0))) {
         return 0.0;
     }
-    float _e26 = airlight_emitted(s_36, c_17);
-    float _e38 = airlight_area_phase(s_36, lobe_1.sign * _e13.x);
-    return ((((_e26 * metal::exp(metal::min((-(s_36.sigma_t) * z_12) / c_17, 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x);
+    float _e26 = airlight_emitted(s_37, c_17);
+    float _e38 = airlight_area_phase(s_37, lobe_1.sign * _e13.x);
+    return ((((_e26 * metal::exp(metal::min((-(s_37.sigma_t) * z_12) / c_17, 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x);
 }
 
 float airlight_flat_lobe_along(
-    AirlightScene s_37,
+    AirlightScene s_38,
     float z_13,
     AirlightOutline o_4,
     AirlightFlatLobe lobe_2,
@@ -7352,9 +7337,9 @@ float airlight_flat_lobe_along(
     metal::float2 cs_1
 ) {
     float sum_8 = 0.0;
-    metal::float3 w_10 = (cs_1.x * u_4) + (cs_1.y * v_6);
-    float k_12 = w_10.z / -(lobe_2.p[2]);
-    metal::float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, w_10.xy + (k_12 * metal::float3(lobe_2.p).xy));
+    metal::float3 w_9 = (cs_1.x * u_4) + (cs_1.y * v_6);
+    float k_12 = w_9.z / -(lobe_2.p[2]);
+    metal::float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, w_9.xy + (k_12 * metal::float3(lobe_2.p).xy));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
@@ -7365,52 +7350,52 @@ float airlight_flat_lobe_along(
     float c_18 = 0.5 * _e45;
     float hw_3 = 0.5 * _e45;
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.09501251 * hw_3));
+    float _e58 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.09501251 * hw_3));
     sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.09501251 * hw_3));
+    float _e67 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.09501251 * hw_3));
     sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.28160354 * hw_3));
+    float _e76 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.28160354 * hw_3));
     sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.28160354 * hw_3));
+    float _e85 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.28160354 * hw_3));
     sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.45801678 * hw_3));
+    float _e94 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.45801678 * hw_3));
     sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.45801678 * hw_3));
+    float _e103 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.45801678 * hw_3));
     sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.61787623 * hw_3));
+    float _e112 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.61787623 * hw_3));
     sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.61787623 * hw_3));
+    float _e121 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.61787623 * hw_3));
     sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.7554044 * hw_3));
+    float _e130 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.7554044 * hw_3));
     sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.7554044 * hw_3));
+    float _e139 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.7554044 * hw_3));
     sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.8656312 * hw_3));
+    float _e148 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.8656312 * hw_3));
     sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.8656312 * hw_3));
+    float _e157 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.8656312 * hw_3));
     sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.944575 * hw_3));
+    float _e166 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.944575 * hw_3));
     sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.944575 * hw_3));
+    float _e175 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.944575 * hw_3));
     sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.9894009 * hw_3));
+    float _e184 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.9894009 * hw_3));
     sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.9894009 * hw_3));
+    float _e193 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.9894009 * hw_3));
     sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
     float _e196 = sum_8;
     return _e196;
@@ -7449,7 +7434,7 @@ metal::float4 airlight_sort4_(
 }
 
 float airlight_flat_about_lobe(
-    AirlightScene s_38,
+    AirlightScene s_39,
     float z_14,
     AirlightOutline o_5,
     AirlightFlatLobe lobe_3
@@ -7464,114 +7449,112 @@ float airlight_flat_about_lobe(
     metal::float3 v_9 = metal::cross(lobe_3.p, _e5);
     metal::float2 q_14 = lobe_3.q;
     if (o_5.radius > 0.0) {
-        metal::float2 d_5 = o_5.corners.inner[0] - q_14;
-        float dq_2 = metal::sqrt((d_5.x * d_5.x) + (d_5.y * d_5.y));
-        if (dq_2 <= o_5.radius) {
+        if (lobe_3.on_emitter) {
             uint2 loop_bound_35 = uint2(4294967295u);
             bool loop_init_34 = true;
             while(true) {
                 if (metal::all(loop_bound_35 == uint2(0u))) { break; }
                 loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
                 if (!loop_init_34) {
-                    uint _e42 = i_29;
-                    i_29 = _e42 + 1u;
+                    uint _e30 = i_29;
+                    i_29 = _e30 + 1u;
                 }
                 loop_init_34 = false;
-                uint _e29 = i_29;
-                if (_e29 < 32u) {
+                uint _e17 = i_29;
+                if (_e17 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e33 = i_29;
-                    metal::float3 _e34 = airlight_azimuths(true, _e33);
-                    float _e35 = sum_9;
-                    float _e38 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
-                    sum_9 = _e35 + (_e34.z * _e38);
+                    uint _e21 = i_29;
+                    metal::float3 _e22 = airlight_azimuths(true, _e21);
+                    float _e23 = sum_9;
+                    float _e26 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
+                    sum_9 = _e23 + (_e22.z * _e26);
                 }
             }
-            float _e44 = sum_9;
-            return _e44;
+            float _e32 = sum_9;
+            return _e32;
         }
+        metal::float2 d_5 = o_5.corners.inner[0] - q_14;
+        float dq_2 = metal::sqrt((d_5.x * d_5.x) + (d_5.y * d_5.y));
         float sb_1 = o_5.radius / dq_2;
         float cb = metal::sqrt((dq_2 - o_5.radius) * (dq_2 + o_5.radius)) / dq_2;
-        float _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        float _e66 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) - (d_5.y * sb_1), (d_5.y * cb) + (d_5.x * sb_1)));
-        float _e68 = airlight_wrap_turn(_e66 - _e54);
-        float _e80 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) + (d_5.y * sb_1), (d_5.y * cb) - (d_5.x * sb_1)));
-        float _e82 = airlight_wrap_turn(_e80 - _e54);
-        float centre_2 = _e54 + ((_e68 + _e82) * 0.5);
-        float half_19 = metal::abs(_e68 - _e82) * 0.5;
+        float _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        float _e65 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) - (d_5.y * sb_1), (d_5.y * cb) + (d_5.x * sb_1)));
+        float _e67 = airlight_wrap_turn(_e65 - _e53);
+        float _e79 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) + (d_5.y * sb_1), (d_5.y * cb) - (d_5.x * sb_1)));
+        float _e81 = airlight_wrap_turn(_e79 - _e53);
+        float centre_2 = _e53 + ((_e67 + _e81) * 0.5);
+        float half_19 = metal::abs(_e67 - _e81) * 0.5;
         uint2 loop_bound_36 = uint2(4294967295u);
         bool loop_init_35 = true;
         while(true) {
             if (metal::all(loop_bound_36 == uint2(0u))) { break; }
             loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
             if (!loop_init_35) {
-                uint _e112 = i_30;
-                i_30 = _e112 + 1u;
+                uint _e111 = i_30;
+                i_30 = _e111 + 1u;
             }
             loop_init_35 = false;
-            uint _e93 = i_30;
-            if (_e93 < 32u) {
+            uint _e92 = i_30;
+            if (_e92 < 32u) {
             } else {
                 break;
             }
             {
-                uint _e97 = i_30;
-                metal::float3 _e98 = airlight_azimuths(false, _e97);
-                float _e99 = sum_9;
-                metal::float2 _e107 = airlight_cos_sin_turns(centre_2 + (half_19 * _e98.y));
-                float _e108 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e107);
-                sum_9 = _e99 + (((_e98.z * half_19) * _e98.x) * _e108);
+                uint _e96 = i_30;
+                metal::float3 _e97 = airlight_azimuths(false, _e96);
+                float _e98 = sum_9;
+                metal::float2 _e106 = airlight_cos_sin_turns(centre_2 + (half_19 * _e97.y));
+                float _e107 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e106);
+                sum_9 = _e98 + (((_e97.z * half_19) * _e97.x) * _e107);
             }
         }
-        float _e114 = sum_9;
-        return _e114;
+        float _e113 = sum_9;
+        return _e113;
     }
-    metal::float2 _e115 = airlight_outline_nearest(o_5, q_14);
-    bool inside_2 = metal::all(_e115 == q_14);
-    if (!(inside_2)) {
-        float _e129 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_5.corners.inner[0] + o_5.corners.inner[2])) - q_14);
-        mid = _e129;
+    if (!(lobe_3.on_emitter)) {
+        float _e126 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_5.corners.inner[0] + o_5.corners.inner[2])) - q_14);
+        mid = _e126;
     }
-    float _e133 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[0] - q_14);
-    float _e134 = mid;
-    float _e136 = airlight_wrap_turn(_e133 - _e134);
-    float _e140 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[1] - q_14);
-    float _e141 = mid;
-    float _e143 = airlight_wrap_turn(_e140 - _e141);
-    float _e147 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[2] - q_14);
-    float _e148 = mid;
-    float _e150 = airlight_wrap_turn(_e147 - _e148);
-    float _e154 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[3] - q_14);
-    float _e155 = mid;
-    float _e157 = airlight_wrap_turn(_e154 - _e155);
-    metal::float4 _e159 = airlight_sort4_(metal::float4(_e136, _e143, _e150, _e157));
-    uint wedges = inside_2 ? 4u : 3u;
+    float _e130 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[0] - q_14);
+    float _e131 = mid;
+    float _e133 = airlight_wrap_turn(_e130 - _e131);
+    float _e137 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[1] - q_14);
+    float _e138 = mid;
+    float _e140 = airlight_wrap_turn(_e137 - _e138);
+    float _e144 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[2] - q_14);
+    float _e145 = mid;
+    float _e147 = airlight_wrap_turn(_e144 - _e145);
+    float _e151 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[3] - q_14);
+    float _e152 = mid;
+    float _e154 = airlight_wrap_turn(_e151 - _e152);
+    metal::float4 _e156 = airlight_sort4_(metal::float4(_e133, _e140, _e147, _e154));
+    uint wedges = lobe_3.on_emitter ? 4u : 3u;
     uint2 loop_bound_37 = uint2(4294967295u);
     bool loop_init_36 = true;
     while(true) {
         if (metal::all(loop_bound_37 == uint2(0u))) { break; }
         loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
         if (!loop_init_36) {
-            uint _e213 = i_31;
-            i_31 = _e213 + 1u;
+            uint _e211 = i_31;
+            i_31 = _e211 + 1u;
         }
         loop_init_36 = false;
-        uint _e165 = i_31;
-        if (_e165 < wedges) {
+        uint _e163 = i_31;
+        if (_e163 < wedges) {
         } else {
             break;
         }
         {
-            float _e167 = mid;
-            uint _e168 = i_31;
-            float first_2 = _e167 + _e159[metal::min(unsigned(_e168), 3u)];
-            float _e171 = mid;
-            uint _e172 = i_31;
-            uint _e181 = i_31;
-            float last_1 = _e171 + ((_e181 == 3u) ? (_e159.x + 6.2831855) : _e159[metal::min(unsigned(metal::min(_e172 + 1u, 3u)), 3u)]);
+            float _e165 = mid;
+            uint _e166 = i_31;
+            float first_2 = _e165 + _e156[metal::min(unsigned(_e166), 3u)];
+            float _e169 = mid;
+            uint _e170 = i_31;
+            uint _e179 = i_31;
+            float last_1 = _e169 + ((_e179 == 3u) ? (_e156.x + 6.2831855) : _e156[metal::min(unsigned(metal::min(_e170 + 1u, 3u)), 3u)]);
             float c_19 = (first_2 + last_1) * 0.5;
             float hw_4 = (last_1 - first_2) * 0.5;
             j_6 = 0u;
@@ -7581,32 +7564,32 @@ float airlight_flat_about_lobe(
                 if (metal::all(loop_bound_38 == uint2(0u))) { break; }
                 loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
                 if (!loop_init_37) {
-                    uint _e210 = j_6;
-                    j_6 = _e210 + 1u;
+                    uint _e208 = j_6;
+                    j_6 = _e208 + 1u;
                 }
                 loop_init_37 = false;
-                uint _e194 = j_6;
-                if (_e194 < 12u) {
+                uint _e192 = j_6;
+                if (_e192 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e197 = j_6;
-                    metal::float2 _e198 = airlight_triangle_rule(_e197);
-                    float _e199 = sum_9;
-                    metal::float2 _e205 = airlight_cos_sin_turns(c_19 + (hw_4 * _e198.x));
-                    float _e206 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e205);
-                    sum_9 = _e199 + ((_e198.y * hw_4) * _e206);
+                    uint _e195 = j_6;
+                    metal::float2 _e196 = airlight_triangle_rule(_e195);
+                    float _e197 = sum_9;
+                    metal::float2 _e203 = airlight_cos_sin_turns(c_19 + (hw_4 * _e196.x));
+                    float _e204 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e203);
+                    sum_9 = _e197 + ((_e196.y * hw_4) * _e204);
                 }
             }
         }
     }
-    float _e215 = sum_9;
-    return _e215;
+    float _e213 = sum_9;
+    return _e213;
 }
 
 float airlight_disc(
-    AirlightScene s_39,
+    AirlightScene s_40,
     AirlightArea a_23,
     metal::float3 x_24
 ) {
@@ -7631,12 +7614,12 @@ float airlight_disc(
     AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1}}, radius_2};
     AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0.0) {
-        float _e34 = airlight_flat_about_lobe(s_39, z_20, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_40, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_39, radius_2 - rf, z_20);
+            bool _e44 = airlight_far_from_edge(s_40, radius_2 - rf, z_20);
             local_182 = _e44;
         } else {
             local_182 = true;
@@ -7646,10 +7629,10 @@ float airlight_disc(
     } else {
         local_181 = false;
     }
-    bool inside_3 = local_181;
+    bool inside_2 = local_181;
     AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
     above_3 = _e54;
-    if (!(inside_3)) {
+    if (!(inside_2)) {
         u_6 = metal::float2(-(fx) / rf, -(fy_1) / rf);
         metal::float2 _e63 = u_6;
         AirlightAbove _e65 = airlight_above(z_20, (rf - radius_2) * _e63);
@@ -7673,14 +7656,14 @@ float airlight_disc(
         }
         {
             uint _e76 = i_32;
-            metal::float3 _e77 = airlight_azimuths(inside_3, _e76);
+            metal::float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
             float _e89 = u_6.y;
             float _e93 = u_6.x;
             e_8 = metal::float2((_e77.x * _e80) - (_e77.y * _e84), (_e77.x * _e89) + (_e77.y * _e93));
             r_max_1 = (radius_2 + radius_2) * _e77.x;
-            if (inside_3) {
+            if (inside_2) {
                 e_8 = _e77.xy;
                 float b_23 = (fx * _e77.x) + (fy_1 * _e77.y);
                 float root_4 = metal::sqrt((b_23 * b_23) - k_13);
@@ -7690,7 +7673,7 @@ float airlight_disc(
             AirlightAbove _e120 = above_3;
             metal::float2 _e121 = e_8;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_39, a_23, _e120, _e121, _e122);
+            float _e123 = airlight_flat_radial(s_40, a_23, _e120, _e121, _e122);
             sum_10 = _e118 + (_e77.z * _e123);
         }
     }
@@ -7699,7 +7682,7 @@ float airlight_disc(
 }
 
 float airlight_parallelogram(
-    AirlightScene s_40,
+    AirlightScene s_41,
     AirlightArea a_24,
     metal::float3 x_25
 ) {
@@ -7722,13 +7705,13 @@ float airlight_parallelogram(
     float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_ + v2_, u2_ + v2_)), metal::sqrt(metal::dot(u2_ - v2_, u2_ - v2_)));
     AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_21, about_foot, (0.5 * corners.inner[2]) - foot, size_2);
     if (_e69.scale > 0.0) {
-        float _e73 = airlight_flat_about_lobe(s_40, z_21, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_41, z_21, about_foot, _e69);
         return _e73;
     }
     metal::float3 _e76 = airlight_outline_boundary(about_foot, metal::float2(0.0));
     q_8 = _e76.xy + foot;
     if (_e76.z > 0.0) {
-        bool _e89 = airlight_far_from_edge(s_40, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
+        bool _e89 = airlight_far_from_edge(s_41, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
         local_183 = _e89;
     } else {
         local_183 = false;
@@ -7794,7 +7777,7 @@ float airlight_parallelogram(
                     metal::float2 _e171 = airlight_cos_sin_half_turn((0.5 * _e147) * (1.0 + _e164.x));
                     metal::float2 dir_3 = metal::float2((_e171.x * start_4.x) - (_e171.y * start_4.y), (_e171.y * start_4.x) + (_e171.x * start_4.y));
                     float _e187 = sum_11;
-                    float _e200 = airlight_flat_radial(s_40, a_24, _e94, dir_3, h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y)));
+                    float _e200 = airlight_flat_radial(s_41, a_24, _e94, dir_3, h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y)));
                     sum_11 = _e187 + (((_e164.y * 0.5) * _e147) * _e200);
                 }
             }
@@ -7805,40 +7788,28 @@ float airlight_parallelogram(
 }
 
 metal::float3 airlight_cap_row(
-    AirlightScene s_41,
+    AirlightScene s_42,
     AirlightCap cap,
     float graded_3,
-    float node_1,
+    float node_2,
     float weight_1
 ) {
-    float phi = {};
-    float w_2 = {};
-    phi = node_1;
-    w_2 = weight_1;
-    if (graded_3 > 0.0) {
-        metal::float2 _e9 = airlight_cos_sin_half_turn(node_1);
-        phi = (graded_3 * _e9.y) / _e9.x;
-        w_2 = (weight_1 * graded_3) / (_e9.x * _e9.x);
-    }
-    float _e19 = phi;
-    metal::float2 _e20 = airlight_cos_sin_half_turn(_e19);
-    float sb_2 = cap.sin_a * _e20.y;
+    metal::float2 _e5 = airlight_graded_node(graded_3, node_2);
+    float w_10 = weight_1 * _e5.y;
+    metal::float2 _e9 = airlight_cos_sin_half_turn(_e5.x);
+    float sb_2 = cap.sin_a * _e9.y;
     float cb_2 = metal::sqrt((1.0 - sb_2) * (1.0 + sb_2));
-    float dist_1 = metal::max((cap.dc * cb_2) - (cap.radius * _e20.x), 0.0);
-    float _e38 = w_2;
-    float _e40 = airlight_emitted(s_41, _e20.x);
-    float factor = ((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * metal::exp(metal::min(-(s_41.sigma_t) * dist_1, 0.0));
+    float dist_1 = metal::max((cap.dc * cb_2) - (cap.radius * _e9.x), 0.0);
+    float _e28 = airlight_emitted(s_42, _e9.x);
+    float factor = ((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * metal::exp(metal::min(-(s_42.sigma_t) * dist_1, 0.0));
     return metal::float3(factor, cb_2, sb_2);
 }
 
 float airlight_sphere_cap(
-    AirlightScene s_42,
+    AirlightScene s_43,
     AirlightArea a_25,
     AirlightCap cap_1
 ) {
-    float graded_4 = {};
-    float top_1 = 1.5707964;
-    bool local_184 = {};
     airlight_type_22 rows = airlight_type_22 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
     float sum_12 = 0.0;
     uint i_34 = 0u;
@@ -7848,130 +7819,95 @@ float airlight_sphere_cap(
     float ad = metal::dot(cap_1.a, a_25.d);
     float e1d = metal::dot(_e4, a_25.d);
     float e2d = metal::dot(e2_2, a_25.d);
-    float _e14 = airlight_emission_scale(s_42);
-    graded_4 = _e14;
-    float _e18 = graded_4;
-    if (_e18 > 0.0) {
-        float _e23 = graded_4;
-        float _e24 = top_1;
-        local_184 = _e23 < _e24;
-    } else {
-        local_184 = false;
-    }
-    bool _e27 = local_184;
-    if (_e27) {
-        float _e28 = top_1;
-        float _e29 = graded_4;
-        float _e31 = airlight_atan(_e28 / _e29);
-        top_1 = _e31;
-    } else {
-        graded_4 = 0.0;
-    }
-    float _e33 = top_1;
-    float c_20 = 0.5 * _e33;
-    float _e36 = top_1;
-    float hw_5 = 0.5 * _e36;
-    float _e74 = graded_4;
-    metal::float3 _e80 = airlight_cap_row(s_42, cap_1, _e74, c_20 - (0.09501251 * hw_5), 0.1894506 * hw_5);
-    rows.inner[0] = _e80;
-    float _e82 = graded_4;
-    metal::float3 _e88 = airlight_cap_row(s_42, cap_1, _e82, c_20 + (0.09501251 * hw_5), 0.1894506 * hw_5);
-    rows.inner[1] = _e88;
-    float _e90 = graded_4;
-    metal::float3 _e96 = airlight_cap_row(s_42, cap_1, _e90, c_20 - (0.28160354 * hw_5), 0.18260342 * hw_5);
-    rows.inner[2] = _e96;
-    float _e98 = graded_4;
-    metal::float3 _e104 = airlight_cap_row(s_42, cap_1, _e98, c_20 + (0.28160354 * hw_5), 0.18260342 * hw_5);
-    rows.inner[3] = _e104;
-    float _e106 = graded_4;
-    metal::float3 _e112 = airlight_cap_row(s_42, cap_1, _e106, c_20 - (0.45801678 * hw_5), 0.16915652 * hw_5);
-    rows.inner[4] = _e112;
-    float _e114 = graded_4;
-    metal::float3 _e120 = airlight_cap_row(s_42, cap_1, _e114, c_20 + (0.45801678 * hw_5), 0.16915652 * hw_5);
-    rows.inner[5] = _e120;
-    float _e122 = graded_4;
-    metal::float3 _e128 = airlight_cap_row(s_42, cap_1, _e122, c_20 - (0.61787623 * hw_5), 0.14959599 * hw_5);
-    rows.inner[6] = _e128;
-    float _e130 = graded_4;
-    metal::float3 _e136 = airlight_cap_row(s_42, cap_1, _e130, c_20 + (0.61787623 * hw_5), 0.14959599 * hw_5);
-    rows.inner[7] = _e136;
-    float _e138 = graded_4;
-    metal::float3 _e144 = airlight_cap_row(s_42, cap_1, _e138, c_20 - (0.7554044 * hw_5), 0.12462897 * hw_5);
-    rows.inner[8] = _e144;
-    float _e146 = graded_4;
-    metal::float3 _e152 = airlight_cap_row(s_42, cap_1, _e146, c_20 + (0.7554044 * hw_5), 0.12462897 * hw_5);
-    rows.inner[9] = _e152;
-    float _e154 = graded_4;
-    metal::float3 _e160 = airlight_cap_row(s_42, cap_1, _e154, c_20 - (0.8656312 * hw_5), 0.09515851 * hw_5);
-    rows.inner[10] = _e160;
-    float _e162 = graded_4;
-    metal::float3 _e168 = airlight_cap_row(s_42, cap_1, _e162, c_20 + (0.8656312 * hw_5), 0.09515851 * hw_5);
-    rows.inner[11] = _e168;
-    float _e170 = graded_4;
-    metal::float3 _e176 = airlight_cap_row(s_42, cap_1, _e170, c_20 - (0.944575 * hw_5), 0.062253524 * hw_5);
-    rows.inner[12] = _e176;
-    float _e178 = graded_4;
-    metal::float3 _e184 = airlight_cap_row(s_42, cap_1, _e178, c_20 + (0.944575 * hw_5), 0.062253524 * hw_5);
-    rows.inner[13] = _e184;
-    float _e186 = graded_4;
-    metal::float3 _e192 = airlight_cap_row(s_42, cap_1, _e186, c_20 - (0.9894009 * hw_5), 0.02715246 * hw_5);
-    rows.inner[14] = _e192;
-    float _e194 = graded_4;
-    metal::float3 _e200 = airlight_cap_row(s_42, cap_1, _e194, c_20 + (0.9894009 * hw_5), 0.02715246 * hw_5);
-    rows.inner[15] = _e200;
+    metal::float2 _e15 = airlight_graded_range(s_43, 1.5707964);
+    float graded_7 = _e15.y;
+    float c_20 = 0.5 * _e15.x;
+    float hw_5 = 0.5 * _e15.x;
+    metal::float3 _e63 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.09501251 * hw_5), 0.1894506 * hw_5);
+    rows.inner[0] = _e63;
+    metal::float3 _e70 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.09501251 * hw_5), 0.1894506 * hw_5);
+    rows.inner[1] = _e70;
+    metal::float3 _e77 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.28160354 * hw_5), 0.18260342 * hw_5);
+    rows.inner[2] = _e77;
+    metal::float3 _e84 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.28160354 * hw_5), 0.18260342 * hw_5);
+    rows.inner[3] = _e84;
+    metal::float3 _e91 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.45801678 * hw_5), 0.16915652 * hw_5);
+    rows.inner[4] = _e91;
+    metal::float3 _e98 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.45801678 * hw_5), 0.16915652 * hw_5);
+    rows.inner[5] = _e98;
+    metal::float3 _e105 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.61787623 * hw_5), 0.14959599 * hw_5);
+    rows.inner[6] = _e105;
+    metal::float3 _e112 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.61787623 * hw_5), 0.14959599 * hw_5);
+    rows.inner[7] = _e112;
+    metal::float3 _e119 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.7554044 * hw_5), 0.12462897 * hw_5);
+    rows.inner[8] = _e119;
+    metal::float3 _e126 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.7554044 * hw_5), 0.12462897 * hw_5);
+    rows.inner[9] = _e126;
+    metal::float3 _e133 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.8656312 * hw_5), 0.09515851 * hw_5);
+    rows.inner[10] = _e133;
+    metal::float3 _e140 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.8656312 * hw_5), 0.09515851 * hw_5);
+    rows.inner[11] = _e140;
+    metal::float3 _e147 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.944575 * hw_5), 0.062253524 * hw_5);
+    rows.inner[12] = _e147;
+    metal::float3 _e154 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.944575 * hw_5), 0.062253524 * hw_5);
+    rows.inner[13] = _e154;
+    metal::float3 _e161 = airlight_cap_row(s_43, cap_1, graded_7, c_20 - (0.9894009 * hw_5), 0.02715246 * hw_5);
+    rows.inner[14] = _e161;
+    metal::float3 _e168 = airlight_cap_row(s_43, cap_1, graded_7, c_20 + (0.9894009 * hw_5), 0.02715246 * hw_5);
+    rows.inner[15] = _e168;
     if (a_25.isotropic) {
-        float _e206 = airlight_area_phase(s_42, 0.0);
-        float around_1 = 6.2831855 * _e206;
-        float _e208 = sum_12;
-        float _e211 = rows.inner[0].x;
-        sum_12 = _e208 + (_e211 * around_1);
-        float _e214 = sum_12;
-        float _e217 = rows.inner[1].x;
-        sum_12 = _e214 + (_e217 * around_1);
-        float _e220 = sum_12;
-        float _e223 = rows.inner[2].x;
-        sum_12 = _e220 + (_e223 * around_1);
-        float _e226 = sum_12;
-        float _e229 = rows.inner[3].x;
-        sum_12 = _e226 + (_e229 * around_1);
-        float _e232 = sum_12;
-        float _e235 = rows.inner[4].x;
-        sum_12 = _e232 + (_e235 * around_1);
-        float _e238 = sum_12;
-        float _e241 = rows.inner[5].x;
-        sum_12 = _e238 + (_e241 * around_1);
-        float _e244 = sum_12;
-        float _e247 = rows.inner[6].x;
-        sum_12 = _e244 + (_e247 * around_1);
-        float _e250 = sum_12;
-        float _e253 = rows.inner[7].x;
-        sum_12 = _e250 + (_e253 * around_1);
-        float _e256 = sum_12;
-        float _e259 = rows.inner[8].x;
-        sum_12 = _e256 + (_e259 * around_1);
-        float _e262 = sum_12;
-        float _e265 = rows.inner[9].x;
-        sum_12 = _e262 + (_e265 * around_1);
-        float _e268 = sum_12;
-        float _e271 = rows.inner[10].x;
-        sum_12 = _e268 + (_e271 * around_1);
-        float _e274 = sum_12;
-        float _e277 = rows.inner[11].x;
-        sum_12 = _e274 + (_e277 * around_1);
-        float _e280 = sum_12;
-        float _e283 = rows.inner[12].x;
-        sum_12 = _e280 + (_e283 * around_1);
-        float _e286 = sum_12;
-        float _e289 = rows.inner[13].x;
-        sum_12 = _e286 + (_e289 * around_1);
-        float _e292 = sum_12;
-        float _e295 = rows.inner[14].x;
-        sum_12 = _e292 + (_e295 * around_1);
-        float _e298 = sum_12;
-        float _e301 = rows.inner[15].x;
-        sum_12 = _e298 + (_e301 * around_1);
-        float _e304 = sum_12;
-        return _e304;
+        float _e174 = airlight_area_phase(s_43, 0.0);
+        float around_1 = 6.2831855 * _e174;
+        float _e176 = sum_12;
+        float _e179 = rows.inner[0].x;
+        sum_12 = _e176 + (_e179 * around_1);
+        float _e182 = sum_12;
+        float _e185 = rows.inner[1].x;
+        sum_12 = _e182 + (_e185 * around_1);
+        float _e188 = sum_12;
+        float _e191 = rows.inner[2].x;
+        sum_12 = _e188 + (_e191 * around_1);
+        float _e194 = sum_12;
+        float _e197 = rows.inner[3].x;
+        sum_12 = _e194 + (_e197 * around_1);
+        float _e200 = sum_12;
+        float _e203 = rows.inner[4].x;
+        sum_12 = _e200 + (_e203 * around_1);
+        float _e206 = sum_12;
+        float _e209 = rows.inner[5].x;
+        sum_12 = _e206 + (_e209 * around_1);
+        float _e212 = sum_12;
+        float _e215 = rows.inner[6].x;
+        sum_12 = _e212 + (_e215 * around_1);
+        float _e218 = sum_12;
+        float _e221 = rows.inner[7].x;
+        sum_12 = _e218 + (_e221 * around_1);
+        float _e224 = sum_12;
+        float _e227 = rows.inner[8].x;
+        sum_12 = _e224 + (_e227 * around_1);
+        float _e230 = sum_12;
+        float _e233 = rows.inner[9].x;
+        sum_12 = _e230 + (_e233 * around_1);
+        float _e236 = sum_12;
+        float _e239 = rows.inner[10].x;
+        sum_12 = _e236 + (_e239 * around_1);
+        float _e242 = sum_12;
+        float _e245 = rows.inner[11].x;
+        sum_12 = _e242 + (_e245 * around_1);
+        float _e248 = sum_12;
+        float _e251 = rows.inner[12].x;
+        sum_12 = _e248 + (_e251 * around_1);
+        float _e254 = sum_12;
+        float _e257 = rows.inner[13].x;
+        sum_12 = _e254 + (_e257 * around_1);
+        float _e260 = sum_12;
+        float _e263 = rows.inner[14].x;
+        sum_12 = _e260 + (_e263 * around_1);
+        float _e266 = sum_12;
+        float _e269 = rows.inner[15].x;
+        sum_12 = _e266 + (_e269 * around_1);
+        float _e272 = sum_12;
+        return _e272;
     }
     uint2 loop_bound_42 = uint2(4294967295u);
     bool loop_init_41 = true;
@@ -7979,147 +7915,147 @@ float airlight_sphere_cap(
         if (metal::all(loop_bound_42 == uint2(0u))) { break; }
         loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
         if (!loop_init_41) {
-            uint _e582 = i_34;
-            i_34 = _e582 + 1u;
+            uint _e550 = i_34;
+            i_34 = _e550 + 1u;
         }
         loop_init_41 = false;
-        uint _e307 = i_34;
-        if (_e307 < 32u) {
+        uint _e275 = i_34;
+        if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            uint _e311 = i_34;
-            metal::float3 _e312 = airlight_azimuths(true, _e311);
-            float across_1 = (_e312.x * e1d) + (_e312.y * e2d);
+            uint _e279 = i_34;
+            metal::float3 _e280 = airlight_azimuths(true, _e279);
+            float across_1 = (_e280.x * e1d) + (_e280.y * e2d);
             at_2 = 0.0;
+            float _e288 = at_2;
+            float _e291 = rows.inner[0].x;
+            float _e294 = rows.inner[0].y;
+            float _e298 = rows.inner[0].z;
+            float _e301 = airlight_area_phase(s_43, (_e294 * ad) + (_e298 * across_1));
+            at_2 = _e288 + (_e291 * _e301);
+            float _e304 = at_2;
+            float _e307 = rows.inner[1].x;
+            float _e310 = rows.inner[1].y;
+            float _e314 = rows.inner[1].z;
+            float _e317 = airlight_area_phase(s_43, (_e310 * ad) + (_e314 * across_1));
+            at_2 = _e304 + (_e307 * _e317);
             float _e320 = at_2;
-            float _e323 = rows.inner[0].x;
-            float _e326 = rows.inner[0].y;
-            float _e330 = rows.inner[0].z;
-            float _e333 = airlight_area_phase(s_42, (_e326 * ad) + (_e330 * across_1));
+            float _e323 = rows.inner[2].x;
+            float _e326 = rows.inner[2].y;
+            float _e330 = rows.inner[2].z;
+            float _e333 = airlight_area_phase(s_43, (_e326 * ad) + (_e330 * across_1));
             at_2 = _e320 + (_e323 * _e333);
             float _e336 = at_2;
-            float _e339 = rows.inner[1].x;
-            float _e342 = rows.inner[1].y;
-            float _e346 = rows.inner[1].z;
-            float _e349 = airlight_area_phase(s_42, (_e342 * ad) + (_e346 * across_1));
+            float _e339 = rows.inner[3].x;
+            float _e342 = rows.inner[3].y;
+            float _e346 = rows.inner[3].z;
+            float _e349 = airlight_area_phase(s_43, (_e342 * ad) + (_e346 * across_1));
             at_2 = _e336 + (_e339 * _e349);
             float _e352 = at_2;
-            float _e355 = rows.inner[2].x;
-            float _e358 = rows.inner[2].y;
-            float _e362 = rows.inner[2].z;
-            float _e365 = airlight_area_phase(s_42, (_e358 * ad) + (_e362 * across_1));
+            float _e355 = rows.inner[4].x;
+            float _e358 = rows.inner[4].y;
+            float _e362 = rows.inner[4].z;
+            float _e365 = airlight_area_phase(s_43, (_e358 * ad) + (_e362 * across_1));
             at_2 = _e352 + (_e355 * _e365);
             float _e368 = at_2;
-            float _e371 = rows.inner[3].x;
-            float _e374 = rows.inner[3].y;
-            float _e378 = rows.inner[3].z;
-            float _e381 = airlight_area_phase(s_42, (_e374 * ad) + (_e378 * across_1));
+            float _e371 = rows.inner[5].x;
+            float _e374 = rows.inner[5].y;
+            float _e378 = rows.inner[5].z;
+            float _e381 = airlight_area_phase(s_43, (_e374 * ad) + (_e378 * across_1));
             at_2 = _e368 + (_e371 * _e381);
             float _e384 = at_2;
-            float _e387 = rows.inner[4].x;
-            float _e390 = rows.inner[4].y;
-            float _e394 = rows.inner[4].z;
-            float _e397 = airlight_area_phase(s_42, (_e390 * ad) + (_e394 * across_1));
+            float _e387 = rows.inner[6].x;
+            float _e390 = rows.inner[6].y;
+            float _e394 = rows.inner[6].z;
+            float _e397 = airlight_area_phase(s_43, (_e390 * ad) + (_e394 * across_1));
             at_2 = _e384 + (_e387 * _e397);
             float _e400 = at_2;
-            float _e403 = rows.inner[5].x;
-            float _e406 = rows.inner[5].y;
-            float _e410 = rows.inner[5].z;
-            float _e413 = airlight_area_phase(s_42, (_e406 * ad) + (_e410 * across_1));
+            float _e403 = rows.inner[7].x;
+            float _e406 = rows.inner[7].y;
+            float _e410 = rows.inner[7].z;
+            float _e413 = airlight_area_phase(s_43, (_e406 * ad) + (_e410 * across_1));
             at_2 = _e400 + (_e403 * _e413);
             float _e416 = at_2;
-            float _e419 = rows.inner[6].x;
-            float _e422 = rows.inner[6].y;
-            float _e426 = rows.inner[6].z;
-            float _e429 = airlight_area_phase(s_42, (_e422 * ad) + (_e426 * across_1));
+            float _e419 = rows.inner[8].x;
+            float _e422 = rows.inner[8].y;
+            float _e426 = rows.inner[8].z;
+            float _e429 = airlight_area_phase(s_43, (_e422 * ad) + (_e426 * across_1));
             at_2 = _e416 + (_e419 * _e429);
             float _e432 = at_2;
-            float _e435 = rows.inner[7].x;
-            float _e438 = rows.inner[7].y;
-            float _e442 = rows.inner[7].z;
-            float _e445 = airlight_area_phase(s_42, (_e438 * ad) + (_e442 * across_1));
+            float _e435 = rows.inner[9].x;
+            float _e438 = rows.inner[9].y;
+            float _e442 = rows.inner[9].z;
+            float _e445 = airlight_area_phase(s_43, (_e438 * ad) + (_e442 * across_1));
             at_2 = _e432 + (_e435 * _e445);
             float _e448 = at_2;
-            float _e451 = rows.inner[8].x;
-            float _e454 = rows.inner[8].y;
-            float _e458 = rows.inner[8].z;
-            float _e461 = airlight_area_phase(s_42, (_e454 * ad) + (_e458 * across_1));
+            float _e451 = rows.inner[10].x;
+            float _e454 = rows.inner[10].y;
+            float _e458 = rows.inner[10].z;
+            float _e461 = airlight_area_phase(s_43, (_e454 * ad) + (_e458 * across_1));
             at_2 = _e448 + (_e451 * _e461);
             float _e464 = at_2;
-            float _e467 = rows.inner[9].x;
-            float _e470 = rows.inner[9].y;
-            float _e474 = rows.inner[9].z;
-            float _e477 = airlight_area_phase(s_42, (_e470 * ad) + (_e474 * across_1));
+            float _e467 = rows.inner[11].x;
+            float _e470 = rows.inner[11].y;
+            float _e474 = rows.inner[11].z;
+            float _e477 = airlight_area_phase(s_43, (_e470 * ad) + (_e474 * across_1));
             at_2 = _e464 + (_e467 * _e477);
             float _e480 = at_2;
-            float _e483 = rows.inner[10].x;
-            float _e486 = rows.inner[10].y;
-            float _e490 = rows.inner[10].z;
-            float _e493 = airlight_area_phase(s_42, (_e486 * ad) + (_e490 * across_1));
+            float _e483 = rows.inner[12].x;
+            float _e486 = rows.inner[12].y;
+            float _e490 = rows.inner[12].z;
+            float _e493 = airlight_area_phase(s_43, (_e486 * ad) + (_e490 * across_1));
             at_2 = _e480 + (_e483 * _e493);
             float _e496 = at_2;
-            float _e499 = rows.inner[11].x;
-            float _e502 = rows.inner[11].y;
-            float _e506 = rows.inner[11].z;
-            float _e509 = airlight_area_phase(s_42, (_e502 * ad) + (_e506 * across_1));
+            float _e499 = rows.inner[13].x;
+            float _e502 = rows.inner[13].y;
+            float _e506 = rows.inner[13].z;
+            float _e509 = airlight_area_phase(s_43, (_e502 * ad) + (_e506 * across_1));
             at_2 = _e496 + (_e499 * _e509);
             float _e512 = at_2;
-            float _e515 = rows.inner[12].x;
-            float _e518 = rows.inner[12].y;
-            float _e522 = rows.inner[12].z;
-            float _e525 = airlight_area_phase(s_42, (_e518 * ad) + (_e522 * across_1));
+            float _e515 = rows.inner[14].x;
+            float _e518 = rows.inner[14].y;
+            float _e522 = rows.inner[14].z;
+            float _e525 = airlight_area_phase(s_43, (_e518 * ad) + (_e522 * across_1));
             at_2 = _e512 + (_e515 * _e525);
             float _e528 = at_2;
-            float _e531 = rows.inner[13].x;
-            float _e534 = rows.inner[13].y;
-            float _e538 = rows.inner[13].z;
-            float _e541 = airlight_area_phase(s_42, (_e534 * ad) + (_e538 * across_1));
+            float _e531 = rows.inner[15].x;
+            float _e534 = rows.inner[15].y;
+            float _e538 = rows.inner[15].z;
+            float _e541 = airlight_area_phase(s_43, (_e534 * ad) + (_e538 * across_1));
             at_2 = _e528 + (_e531 * _e541);
-            float _e544 = at_2;
-            float _e547 = rows.inner[14].x;
-            float _e550 = rows.inner[14].y;
-            float _e554 = rows.inner[14].z;
-            float _e557 = airlight_area_phase(s_42, (_e550 * ad) + (_e554 * across_1));
-            at_2 = _e544 + (_e547 * _e557);
-            float _e560 = at_2;
-            float _e563 = rows.inner[15].x;
-            float _e566 = rows.inner[15].y;
-            float _e570 = rows.inner[15].z;
-            float _e573 = airlight_area_phase(s_42, (_e566 * ad) + (_e570 * across_1));
-            at_2 = _e560 + (_e563 * _e573);
-            float _e576 = sum_12;
-            float _e578 = at_2;
-            sum_12 = _e576 + (_e312.z * _e578);
+            float _e544 = sum_12;
+            float _e546 = at_2;
+            sum_12 = _e544 + (_e280.z * _e546);
         }
     }
-    float _e584 = sum_12;
-    return _e584;
+    float _e552 = sum_12;
+    return _e552;
 }
 
 float airlight_sphere_lobe_node(
-    AirlightScene s_43,
+    AirlightScene s_44,
     AirlightCap cap_2,
     float sign_1,
     float cos_p,
     float big_b,
     float start_2,
-    float graded_5,
-    float g_28
+    float graded_4,
+    float g_27
 ) {
-    metal::float2 _e8 = airlight_cos_sin_half_turn(g_28);
-    metal::float2 _e14 = airlight_cos_sin_half_turn(start_2 + ((graded_5 * _e8.y) / _e8.x));
+    metal::float2 _e8 = airlight_cos_sin_half_turn(g_27);
+    metal::float2 _e14 = airlight_cos_sin_half_turn(start_2 + ((graded_4 * _e8.y) / _e8.x));
     float toward_a = (_e14.x * cos_p) + (_e14.y * big_b);
     float root_5 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
     float dist_2 = metal::max((cap_2.dc * toward_a) - root_5, 0.0);
-    float _e43 = airlight_emitted(s_43, root_5 / cap_2.radius);
-    float _e53 = airlight_area_phase(s_43, sign_1 * _e14.x);
-    return ((((_e43 * metal::exp(metal::min(-(s_43.sigma_t) * dist_2, 0.0))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x);
+    float _e43 = airlight_emitted(s_44, root_5 / cap_2.radius);
+    float _e53 = airlight_area_phase(s_44, sign_1 * _e14.x);
+    return ((((_e43 * metal::exp(metal::min(-(s_44.sigma_t) * dist_2, 0.0))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x);
 }
 
 float airlight_sphere_about_lobe(
-    AirlightScene s_44,
+    AirlightScene s_45,
     AirlightArea a_26,
     AirlightCap cap_3,
     float sign_2,
@@ -8139,7 +8075,7 @@ float airlight_sphere_about_lobe(
     metal::float3 v_10 = metal::cross(p_7, _e8);
     float au = metal::dot(cap_3.a, _e8);
     float av = metal::dot(cap_3.a, v_10);
-    bool inside_4 = cos_p_1 > cap_3.cos_a;
+    bool inside_3 = cos_p_1 > cap_3.cos_a;
     float sin_p = metal::sqrt((au * au) + (av * av));
     if (sin_p > 0.0) {
         axis_2 = metal::float2(au / sin_p, av / sin_p);
@@ -8163,12 +8099,12 @@ float airlight_sphere_about_lobe(
         }
         {
             uint _e50 = i_35;
-            metal::float3 _e51 = airlight_azimuths(inside_4, _e50);
+            metal::float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
             big_b_1 = sin_p * ((_e51.x * _e54) + (_e51.y * _e58));
             wpsi = _e51.z;
-            if (!(inside_4)) {
+            if (!(inside_3)) {
                 float _e66 = half_15;
                 metal::float2 _e69 = airlight_cos_sin(_e66 * _e51.y);
                 big_b_1 = sin_p * _e69.x;
@@ -8183,96 +8119,96 @@ float airlight_sphere_about_lobe(
             float _e90 = big_b_1;
             float _e97 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e89 * _e90)), 1.0));
             start_3 = 0.0;
-            if (!(inside_4)) {
+            if (!(inside_3)) {
                 start_3 = metal::max(mid_3 - _e97, 0.0);
             }
             float to = mid_3 + _e97;
             float _e105 = start_3;
-            float graded_7 = metal::max(scale_1, _e105);
+            float graded_8 = metal::max(scale_1, _e105);
             float _e107 = start_3;
-            float _e110 = airlight_atan((to - _e107) / graded_7);
+            float _e110 = airlight_atan((to - _e107) / graded_8);
             float c_21 = 0.5 * _e110;
             float hw_6 = 0.5 * _e110;
             around = 0.0;
             float _e117 = around;
             float _e120 = big_b_1;
             float _e121 = start_3;
-            float _e125 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, c_21 - (0.09501251 * hw_6));
+            float _e125 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e120, _e121, graded_8, c_21 - (0.09501251 * hw_6));
             around = _e117 + ((0.1894506 * hw_6) * _e125);
             float _e128 = around;
             float _e131 = big_b_1;
             float _e132 = start_3;
-            float _e136 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, c_21 + (0.09501251 * hw_6));
+            float _e136 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e131, _e132, graded_8, c_21 + (0.09501251 * hw_6));
             around = _e128 + ((0.1894506 * hw_6) * _e136);
             float _e139 = around;
             float _e142 = big_b_1;
             float _e143 = start_3;
-            float _e147 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, c_21 - (0.28160354 * hw_6));
+            float _e147 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e142, _e143, graded_8, c_21 - (0.28160354 * hw_6));
             around = _e139 + ((0.18260342 * hw_6) * _e147);
             float _e150 = around;
             float _e153 = big_b_1;
             float _e154 = start_3;
-            float _e158 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, c_21 + (0.28160354 * hw_6));
+            float _e158 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e153, _e154, graded_8, c_21 + (0.28160354 * hw_6));
             around = _e150 + ((0.18260342 * hw_6) * _e158);
             float _e161 = around;
             float _e164 = big_b_1;
             float _e165 = start_3;
-            float _e169 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, c_21 - (0.45801678 * hw_6));
+            float _e169 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e164, _e165, graded_8, c_21 - (0.45801678 * hw_6));
             around = _e161 + ((0.16915652 * hw_6) * _e169);
             float _e172 = around;
             float _e175 = big_b_1;
             float _e176 = start_3;
-            float _e180 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, c_21 + (0.45801678 * hw_6));
+            float _e180 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e175, _e176, graded_8, c_21 + (0.45801678 * hw_6));
             around = _e172 + ((0.16915652 * hw_6) * _e180);
             float _e183 = around;
             float _e186 = big_b_1;
             float _e187 = start_3;
-            float _e191 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, c_21 - (0.61787623 * hw_6));
+            float _e191 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e186, _e187, graded_8, c_21 - (0.61787623 * hw_6));
             around = _e183 + ((0.14959599 * hw_6) * _e191);
             float _e194 = around;
             float _e197 = big_b_1;
             float _e198 = start_3;
-            float _e202 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, c_21 + (0.61787623 * hw_6));
+            float _e202 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e197, _e198, graded_8, c_21 + (0.61787623 * hw_6));
             around = _e194 + ((0.14959599 * hw_6) * _e202);
             float _e205 = around;
             float _e208 = big_b_1;
             float _e209 = start_3;
-            float _e213 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, c_21 - (0.7554044 * hw_6));
+            float _e213 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e208, _e209, graded_8, c_21 - (0.7554044 * hw_6));
             around = _e205 + ((0.12462897 * hw_6) * _e213);
             float _e216 = around;
             float _e219 = big_b_1;
             float _e220 = start_3;
-            float _e224 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, c_21 + (0.7554044 * hw_6));
+            float _e224 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e219, _e220, graded_8, c_21 + (0.7554044 * hw_6));
             around = _e216 + ((0.12462897 * hw_6) * _e224);
             float _e227 = around;
             float _e230 = big_b_1;
             float _e231 = start_3;
-            float _e235 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, c_21 - (0.8656312 * hw_6));
+            float _e235 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e230, _e231, graded_8, c_21 - (0.8656312 * hw_6));
             around = _e227 + ((0.09515851 * hw_6) * _e235);
             float _e238 = around;
             float _e241 = big_b_1;
             float _e242 = start_3;
-            float _e246 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, c_21 + (0.8656312 * hw_6));
+            float _e246 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e241, _e242, graded_8, c_21 + (0.8656312 * hw_6));
             around = _e238 + ((0.09515851 * hw_6) * _e246);
             float _e249 = around;
             float _e252 = big_b_1;
             float _e253 = start_3;
-            float _e257 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, c_21 - (0.944575 * hw_6));
+            float _e257 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e252, _e253, graded_8, c_21 - (0.944575 * hw_6));
             around = _e249 + ((0.062253524 * hw_6) * _e257);
             float _e260 = around;
             float _e263 = big_b_1;
             float _e264 = start_3;
-            float _e268 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, c_21 + (0.944575 * hw_6));
+            float _e268 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e263, _e264, graded_8, c_21 + (0.944575 * hw_6));
             around = _e260 + ((0.062253524 * hw_6) * _e268);
             float _e271 = around;
             float _e274 = big_b_1;
             float _e275 = start_3;
-            float _e279 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, c_21 - (0.9894009 * hw_6));
+            float _e279 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e274, _e275, graded_8, c_21 - (0.9894009 * hw_6));
             around = _e271 + ((0.02715246 * hw_6) * _e279);
             float _e282 = around;
             float _e285 = big_b_1;
             float _e286 = start_3;
-            float _e290 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, c_21 + (0.9894009 * hw_6));
+            float _e290 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e285, _e286, graded_8, c_21 + (0.9894009 * hw_6));
             around = _e282 + ((0.02715246 * hw_6) * _e290);
             float _e293 = sum_13;
             float _e294 = wpsi;
@@ -8285,7 +8221,7 @@ float airlight_sphere_about_lobe(
 }
 
 float airlight_sphere(
-    AirlightScene s_45,
+    AirlightScene s_46,
     AirlightArea a_27,
     metal::float3 x_26
 ) {
@@ -8293,11 +8229,11 @@ float airlight_sphere(
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_8 = 0u;
+    bool local_184 = {};
     bool local_185 = {};
     bool local_186 = {};
     bool local_187 = {};
     bool local_188 = {};
-    bool local_189 = {};
     metal::float3 v_11 = a_27.c - x_26;
     float _e5 = airlight_safe_length(v_11);
     if (!((_e5 > a_27.radius))) {
@@ -8327,36 +8263,36 @@ float airlight_sphere(
             float c_22 = metal::dot(cap_4.a, lobe_5.x * a_27.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_185 = lobe_5.y > 0.0;
+                local_184 = lobe_5.y > 0.0;
+            } else {
+                local_184 = false;
+            }
+            bool _e57 = local_184;
+            if (_e57) {
+                local_185 = lobe_5.y < (_e23 + _e23);
             } else {
                 local_185 = false;
             }
-            bool _e57 = local_185;
-            if (_e57) {
-                local_186 = lobe_5.y < (_e23 + _e23);
-            } else {
-                local_186 = false;
-            }
-            bool _e64 = local_186;
+            bool _e64 = local_185;
             if (_e64) {
                 if (!((c_22 > cap_4.cos_a))) {
                     if (c_22 > -(cap_4.cos_a)) {
                         float _e77 = airlight_acos(c_22);
-                        local_189 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
+                        local_188 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
                     } else {
-                        local_189 = false;
+                        local_188 = false;
                     }
-                    bool _e84 = local_189;
-                    local_188 = _e84;
+                    bool _e84 = local_188;
+                    local_187 = _e84;
                 } else {
-                    local_188 = true;
+                    local_187 = true;
                 }
-                bool _e86 = local_188;
-                local_187 = _e86;
+                bool _e86 = local_187;
+                local_186 = _e86;
             } else {
-                local_187 = false;
+                local_186 = false;
             }
-            bool _e88 = local_187;
+            bool _e88 = local_186;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -8369,57 +8305,57 @@ float airlight_sphere(
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_45, a_27, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_46, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_45, a_27, cap_4);
+    float _e101 = airlight_sphere_cap(s_46, a_27, cap_4);
     return _e101;
 }
 
 float airlight_emitter_radiance(
-    AirlightScene s_46,
+    AirlightScene s_47,
     AirlightArea a_28,
     metal::float3 x_27
 ) {
-    switch(s_46.light_shape) {
+    switch(s_47.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_46, a_28, x_27);
+            float _e4 = airlight_disc(s_47, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_46, a_28, x_27);
+            float _e5 = airlight_parallelogram(s_47, a_28, x_27);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_46, a_28, x_27);
+            float _e6 = airlight_sphere(s_47, a_28, x_27);
             return _e6;
         }
     }
 }
 
 float airlight_area_node(
-    AirlightScene s_47,
+    AirlightScene s_48,
     AirlightArea a_29,
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
     float along = (a_29.h_eff * _e3.y) / _e3.x;
     float t_12 = a_29.x_h + along;
-    float fade = metal::exp(metal::min(-(s_47.sigma_t) * metal::max((a_29.x_h - s_47.t_min) + along, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_47, a_29, s_47.origin + (t_12 * a_29.d));
+    float fade = metal::exp(metal::min(-(s_48.sigma_t) * metal::max((a_29.x_h - s_48.t_min) + along, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_48, a_29, s_48.origin + (t_12 * a_29.d));
     return ((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
 AirlightResult airlight_area_light(
-    AirlightScene s_48
+    AirlightScene s_49
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
     float k_8 = {};
     float gauss_1 = {};
     uint j_9 = {};
-    bool local_190 = {};
-    AirlightArea _e1 = airlight_area(s_48);
+    bool local_189 = {};
+    AirlightArea _e1 = airlight_area(s_49);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -8470,17 +8406,17 @@ AirlightResult airlight_area_light(
                 }
                 {
                     uint _e49 = j_9;
-                    metal::float3 node_3 = _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)];
+                    metal::float3 node_4 = _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)];
                     uint _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
                         uint _e66 = j_9;
-                        local_190 = _e66 < 14u;
+                        local_189 = _e66 < 14u;
                     } else {
-                        local_190 = false;
+                        local_189 = false;
                     }
-                    bool _e70 = local_190;
+                    bool _e70 = local_189;
                     float x_36 = _e70 ? (c_23 - (hw_7 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_23 + (hw_7 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_48, _e1, x_36);
+                    float _e72 = airlight_area_node(s_49, _e1, x_36);
                     float _e73 = k_8;
                     k_8 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -8506,45 +8442,45 @@ AirlightResult airlight_area_light(
     if (!(_e105)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    return AirlightResult {s_48.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
+    return AirlightResult {s_49.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
 }
 
 AirlightResult airlight_in_scatter_area(
-    AirlightScene s_49
+    AirlightScene s_50
 ) {
+    bool local_190 = {};
     bool local_191 = {};
-    bool local_192 = {};
-    bool _e1 = airlight_valid(s_49);
+    bool _e1 = airlight_valid(s_50);
     if (!(!(_e1))) {
-        local_191 = s_49.light_shape < AIRLIGHT_SHAPE_DISC;
+        local_190 = s_50.light_shape < AIRLIGHT_SHAPE_DISC;
+    } else {
+        local_190 = true;
+    }
+    bool _e10 = local_190;
+    if (!(_e10)) {
+        local_191 = s_50.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
         local_191 = true;
     }
-    bool _e10 = local_191;
-    if (!(_e10)) {
-        local_192 = s_49.surface_kind != AIRLIGHT_SURFACE_NONE;
-    } else {
-        local_192 = true;
-    }
-    bool _e18 = local_192;
+    bool _e18 = local_191;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_area_light(s_49);
+    AirlightResult _e22 = airlight_area_light(s_50);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_193 = {};
+    bool local_192 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_193 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_192 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_193 = true;
+        local_192 = true;
     }
-    bool _e11 = local_193;
+    bool _e11 = local_192;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -8555,25 +8491,25 @@ AirlightResult airlight_node_integral(
     AirlightNode n_3
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_194 = {};
-    AirlightCanonical g_29 = {};
+    bool local_193 = {};
+    AirlightCanonical g_28 = {};
     AirlightScene p_8 = n_3.scene;
     bool _e7 = airlight_vec_finite(n_3.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_3.scene.dir);
-        local_194 = _e11;
+        local_193 = _e11;
     } else {
-        local_194 = false;
+        local_193 = false;
     }
-    bool _e13 = local_194;
+    bool _e13 = local_193;
     if (_e13) {
-        g_29 = n_3.canonical;
+        g_28 = n_3.canonical;
         if (!(n_3.exact)) {
             AirlightCanonical _e18 = airlight_canonical(p_8);
             AirlightCanonical _e19 = airlight_refined(p_8, _e18);
-            g_29 = _e19;
+            g_28 = _e19;
         }
-        AirlightCanonical _e20 = g_29;
+        AirlightCanonical _e20 = g_28;
         AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
@@ -8591,61 +8527,61 @@ AirlightResult airlight_point_integral(
 }
 
 AirlightResult airlight_in_scatter_point(
-    AirlightScene s_50
+    AirlightScene s_51
 ) {
+    bool local_194 = {};
     bool local_195 = {};
-    bool local_196 = {};
-    bool _e1 = airlight_valid(s_50);
+    bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_195 = s_50.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_194 = s_51.light_shape != AIRLIGHT_SHAPE_POINT;
+    } else {
+        local_194 = true;
+    }
+    bool _e10 = local_194;
+    if (!(_e10)) {
+        local_195 = s_51.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
         local_195 = true;
     }
-    bool _e10 = local_195;
-    if (!(_e10)) {
-        local_196 = s_50.surface_kind != AIRLIGHT_SURFACE_NONE;
-    } else {
-        local_196 = true;
-    }
-    bool _e18 = local_196;
+    bool _e18 = local_195;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_point_integral(s_50);
+    AirlightResult _e22 = airlight_point_integral(s_51);
     return _e22;
 }
 
 AirlightResult airlight_in_scatter_route(
-    AirlightScene s_51
+    AirlightScene s_52
 ) {
+    bool local_196 = {};
     bool local_197 = {};
-    bool local_198 = {};
-    bool _e1 = airlight_valid(s_51);
+    bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_197 = s_51.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_196 = s_52.light_shape != AIRLIGHT_SHAPE_POINT;
+    } else {
+        local_196 = true;
+    }
+    bool _e10 = local_196;
+    if (!(_e10)) {
+        local_197 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
         local_197 = true;
     }
-    bool _e10 = local_197;
-    if (!(_e10)) {
-        local_198 = s_51.surface_kind != AIRLIGHT_SURFACE_NONE;
-    } else {
-        local_198 = true;
-    }
-    bool _e18 = local_198;
+    bool _e18 = local_197;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e22 = airlight_canonical(s_51);
-    AirlightCanonical _e23 = airlight_refined(s_51, _e22);
-    AirlightResult _e24 = airlight_limits(s_51, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_52);
+    AirlightCanonical _e23 = airlight_refined(s_52, _e22);
+    AirlightResult _e24 = airlight_limits(s_52, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_51);
+    bool _e29 = airlight_isotropic_scene(s_52);
     if (!(_e29)) {
-        metal::float2 _e31 = airlight_angle_route(s_51, _e23);
+        metal::float2 _e31 = airlight_angle_route(s_52, _e23);
         if (_e31.x > 0.5) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult {metal::max(_e31.y, 0.0), AIRLIGHT_STATUS_OK});
             return _e40;
@@ -8655,24 +8591,24 @@ AirlightResult airlight_in_scatter_route(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_52
+    AirlightScene s_53
 ) {
     AirlightAdaptive st_2 = {};
     uint step_3 = 0u;
     float k_9 = {};
     float gauss_2 = {};
     uint j_10 = {};
-    bool local_199 = {};
+    bool local_198 = {};
     float f = {};
-    bool local_200 = {};
-    bool _e1 = airlight_valid(s_52);
+    bool local_199 = {};
+    bool _e1 = airlight_valid(s_53);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    if (s_52.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_53.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e12 = airlight_outer(s_52);
+    AirlightOuter _e12 = airlight_outer(s_53);
     if (_e12.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -8725,29 +8661,29 @@ AirlightResult airlight_in_scatter(
                 }
                 {
                     uint _e64 = j_10;
-                    metal::float3 node_4 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
+                    metal::float3 node_5 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
                     uint _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_10;
-                        local_199 = _e81 < 6u;
+                        local_198 = _e81 < 6u;
                     } else {
-                        local_199 = false;
+                        local_198 = false;
                     }
-                    bool _e85 = local_199;
+                    bool _e85 = local_198;
                     float w_11 = _e85 ? (c_24 - (hw_8 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_24 + (hw_8 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
-                    AirlightNode _e87 = airlight_outer_node(s_52, _e12, w_11);
+                    AirlightNode _e87 = airlight_outer_node(s_53, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_52.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_200 = s_52.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_53.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_199 = s_53.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_200 = false;
+                            local_199 = false;
                         }
-                        bool _e106 = local_200;
+                        bool _e106 = local_199;
                         if (_e106) {
                             return _e93;
                         }

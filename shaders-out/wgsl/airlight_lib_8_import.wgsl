@@ -218,6 +218,7 @@ struct AirlightFlatLobe {
     scale: f32,
     l: f32,
     q: vec2<f32>,
+    on_emitter: bool,
 }
 
 struct AirlightCap {
@@ -453,8 +454,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_15 = (x * x);
     let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
-    let s_53 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_53 * x));
+    let s_54 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_54 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -511,10 +512,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_54 = (x_2 / (2f + x_2));
-    let z_17 = (s_54 * s_54);
+    let s_55 = (x_2 / (2f + x_2));
+    let z_17 = (s_55 * s_55);
     let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
-    return ((2f * s_54) * sum_14);
+    return ((2f * s_55) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1473,8 +1474,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
                 }
             }
             let _e55 = steps;
-            let top_2 = ((k0_ + _e55) + 2u);
-            odd = f32(((2u * top_2) + 1u));
+            let top_1 = ((k0_ + _e55) + 2u);
+            odd = f32(((2u * top_1) + 1u));
             loop {
                 let _e73 = i_4;
                 if (_e73 < 46u) {
@@ -1483,7 +1484,7 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
                 }
                 {
                     let _e76 = i_4;
-                    if ((_e76 + AIRLIGHT_TERMS) > top_2) {
+                    if ((_e76 + AIRLIGHT_TERMS) > top_1) {
                         break;
                     }
                     let _e79 = above;
@@ -1976,8 +1977,8 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     sum_3 = (_e119 + (_e77[7] * _e81[7]));
     let _e124 = airlight_factor(half_6, a_5, b_4);
     let _e125 = r_2;
-    let w_3 = (_e124 * _e125);
-    let mass_5 = (w_3 * _e81[0]);
+    let w_2 = (_e124 * _e125);
+    let mass_5 = (w_2 * _e81[0]);
     let _e129 = vc;
     let _e130 = r_2;
     let _e132 = airlight_singular_floor(heights_1, steps_2, _e129, _e130, false);
@@ -1989,7 +1990,7 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
     let _e140 = airlight_transform_noise(mass_5, _e139);
     let _e141 = over_max;
     let _e143 = f_max_1;
-    let _e144 = airlight_panel_result((w_3 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
+    let _e144 = airlight_panel_result((w_2 * _e137), error_1, _e140, (mass_5 * _e141), _e143);
     return _e144;
 }
 
@@ -2043,7 +2044,7 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e81 = samples_1;
     let _e82 = airlight_legendre(_e81);
     let _e83 = airlight_factor(half_7, a_6, b_5);
-    let w_4 = (_e83 * r_9);
+    let w_3 = (_e83 * r_9);
     let _e85 = airlight_zero_terms();
     m_2 = _e85;
     m_2[0] = 2f;
@@ -2051,13 +2052,13 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
     let _e93 = airlight_tail_estimate(_e82);
     let _e95 = m_2;
     let _e96 = airlight_error_factor(_e82, _e95, _e90);
-    let error_2 = (((w_4 * 2f) * _e93) * _e96);
+    let error_2 = (((w_3 * 2f) * _e93) * _e96);
     let _e104 = p_avg;
-    let _e105 = airlight_transform_noise((w_4 * 2f), _e104);
+    let _e105 = airlight_transform_noise((w_3 * 2f), _e104);
     let _e106 = mass_1;
     let _e108 = over_max_1;
     let _e110 = f_max_2;
-    let _e111 = airlight_panel_result(((w_4 * 2f) * _e82[0]), error_2, _e105, ((w_4 * _e106) * _e108), _e110);
+    let _e111 = airlight_panel_result(((w_3 * 2f) * _e82[0]), error_2, _e105, ((w_3 * _e106) * _e108), _e110);
     return _e111;
 }
 
@@ -2746,8 +2747,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
         return AIRLIGHT_FLT_MAX;
     }
     let inv_h = (1f / big_h_1);
-    let w_5 = (v_s + inv_h);
-    let r_11 = ((1f + (w_5 * w_5)) / (1f + (v_s * v_s)));
+    let w_4 = (v_s + inv_h);
+    let r_11 = ((1f + (w_4 * w_4)) / (1f + (v_s * v_s)));
     let e_9 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
     return (e_9 * inv_h);
 }
@@ -2952,13 +2953,13 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let _e297 = i_11;
             samples_3[_e297] = gw;
             let _e299 = i_11;
-            let w_6 = _e224[(_e299 / 2u)].y;
+            let w_5 = _e224[(_e299 / 2u)].y;
             let _e304 = value_1;
-            value_1 = (_e304 + (w_6 * gw));
+            value_1 = (_e304 + (w_5 * gw));
             let _e307 = mass_4;
-            mass_4 = (_e307 + (w_6 * weight_3));
+            mass_4 = (_e307 + (w_5 * weight_3));
             let _e310 = magnitude;
-            magnitude = (_e310 + (w_6 * abs(gw)));
+            magnitude = (_e310 + (w_5 * abs(gw)));
             let _e314 = f_max_5;
             f_max_5 = max(_e314, abs(f_2));
         }
@@ -4454,13 +4455,13 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e46 = airlight_diff_of_products(hi_6.y, dir_2.z, hi_6.z, dir_2.y, key_4);
     let _e59 = airlight_diff_of_products(hi_6.z, dir_2.x, hi_6.x, dir_2.z, key_4);
     let _e72 = airlight_diff_of_products(hi_6.x, dir_2.y, hi_6.y, dir_2.x, key_4);
-    let w_7 = vec3<f32>((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
-    let _e82 = airlight_vec_finite(w_7);
+    let w_6 = vec3<f32>((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
+    let _e82 = airlight_vec_finite(w_6);
     if !(_e82) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_7);
+    let _e85 = airlight_safe_length(w_6);
     if (_e85 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
@@ -4484,7 +4485,7 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         a_16 = _e112;
     }
     let _e113 = airlight_normalize(dir_2);
-    let _e114 = airlight_normalize(w_7);
+    let _e114 = airlight_normalize(w_6);
     let n_4 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_16;
@@ -5387,9 +5388,9 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bo
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
-    let w_8 = (hi_5 - lo_6);
-    if !(!((w_8 > 0f))) {
-        let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_8)));
+    let w_7 = (hi_5 - lo_6);
+    if !(!((w_7 > 0f))) {
+        let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_7)));
         local_144 = !((_e14 > 0f));
     } else {
         local_144 = true;
@@ -5407,11 +5408,11 @@ fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bo
         }
         {
             let _e29 = k_6;
-            let node_2 = _e21[_e29];
+            let node_3 = _e21[_e29];
             let _e31 = sum_5;
-            let _e34 = airlight_lobe_node(q_3, lo_6, w_8, node_2.x, smoothstep_1);
-            let _e38 = airlight_lobe_node(q_3, lo_6, w_8, (1f - node_2.x), smoothstep_1);
-            sum_5 = (_e31 + (node_2.y * (_e34 + _e38)));
+            let _e34 = airlight_lobe_node(q_3, lo_6, w_7, node_3.x, smoothstep_1);
+            let _e38 = airlight_lobe_node(q_3, lo_6, w_7, (1f - node_3.x), smoothstep_1);
+            sum_5 = (_e31 + (node_3.y * (_e34 + _e38)));
         }
         continuing {
             let _e43 = k_6;
@@ -5768,12 +5769,12 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
         let t_8 = (x_20 - f32(i_36));
         let a_41 = g_25.gamma[i_36];
         let b_19 = g_25.gamma[(i_36 + 1u)];
-        let w_9 = (b_19 - a_41);
+        let w_8 = (b_19 - a_41);
         let u_8 = (1f - t_8);
         let smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
         let smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_41 + (((w_9 * t_8) * t_8) * ((3f - t_8) - t_8)));
-        jacobian = (((w_9 * 6f) * t_8) * u_8);
+        gamma_1 = (a_41 + (((w_8 * t_8) * t_8) * ((3f - t_8) - t_8)));
+        jacobian = (((w_8 * 6f) * t_8) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
             local_163 = !(smooth_a);
@@ -5781,7 +5782,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_41 + ((w_9 * t_8) * t_8)), _e66);
+        gamma_1 = select(_e58, (a_41 + ((w_8 * t_8) * t_8)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -5789,7 +5790,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_164 = false;
         }
         let _e75 = local_164;
-        jacobian = select(_e68, (w_9 * (t_8 + t_8)), _e75);
+        jacobian = select(_e68, (w_8 * (t_8 + t_8)), _e75);
         let _e77 = gamma_1;
         if smooth_a {
             local_165 = !(smooth_b);
@@ -5797,7 +5798,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_165 = false;
         }
         let _e85 = local_165;
-        gamma_1 = select(_e77, (b_19 - ((w_9 * u_8) * u_8)), _e85);
+        gamma_1 = select(_e77, (b_19 - ((w_8 * u_8) * u_8)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_166 = !(smooth_b);
@@ -5805,7 +5806,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_166 = false;
         }
         let _e94 = local_166;
-        jacobian = select(_e87, (w_9 * (u_8 + u_8)), _e94);
+        jacobian = select(_e87, (w_8 * (u_8 + u_8)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
             local_167 = smooth_b;
@@ -5813,7 +5814,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_41 + (w_9 * t_8)), _e102);
+        gamma_1 = select(_e96, (a_41 + (w_8 * t_8)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -5821,7 +5822,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
             local_168 = false;
         }
         let _e108 = local_168;
-        jacobian = select(_e104, w_9, _e108);
+        jacobian = select(_e104, w_8, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
             let _e114 = p;
@@ -6026,32 +6027,57 @@ fn airlight_emission_scale(s_30: AirlightScene) -> f32 {
     return (2f / sqrt(f32((p_3 - 1u))));
 }
 
-fn airlight_far_from_edge(s_31: AirlightScene, depth: f32, z_9: f32) -> bool {
-    let _e3 = airlight_emission_scale(s_31);
+fn airlight_graded_range(s_31: AirlightScene, top: f32) -> vec2<f32> {
+    var local_169: bool;
+
+    let _e2 = airlight_emission_scale(s_31);
+    if (_e2 > 0f) {
+        local_169 = (_e2 < top);
+    } else {
+        local_169 = false;
+    }
+    let _e9 = local_169;
+    if _e9 {
+        let _e11 = airlight_atan((top / _e2));
+        return vec2<f32>(_e11, _e2);
+    }
+    return vec2<f32>(top, 0f);
+}
+
+fn airlight_graded_node(graded: f32, node: f32) -> vec2<f32> {
+    if (graded > 0f) {
+        let _e4 = airlight_cos_sin_half_turn(node);
+        return vec2<f32>(((graded * _e4.y) / _e4.x), (graded / (_e4.x * _e4.x)));
+    }
+    return vec2<f32>(node, 1f);
+}
+
+fn airlight_far_from_edge(s_32: AirlightScene, depth: f32, z_9: f32) -> bool {
+    let _e3 = airlight_emission_scale(s_32);
     return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * select(1f, min(_e3, 1f), (_e3 > 0f))));
 }
 
 fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
-    var local_169: bool;
+    var local_170: bool;
 
     if !(!((gap_3 > 0f))) {
-        local_169 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_170 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_169 = true;
+        local_170 = true;
     }
-    let _e12 = local_169;
+    let _e12 = local_170;
     if _e12 {
         return vec2<f32>(1f, 0f);
     }
     return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
 }
 
-fn airlight_phase_lobes(s_32: AirlightScene) -> vec4<f32> {
+fn airlight_phase_lobes(s_33: AirlightScene) -> vec4<f32> {
     var first: vec2<f32> = vec2<f32>(1f, 0f);
     var second: vec2<f32> = vec2<f32>(1f, 0f);
 
-    let p0_5 = s_32.phase_param_a;
-    switch s_32.phase_kind {
+    let p0_5 = s_33.phase_param_a;
+    switch s_33.phase_kind {
         case 2u, 4u: {
             let _e11 = airlight_hg_gap(p0_5);
             let _e12 = airlight_lobe(p0_5, _e11);
@@ -6066,8 +6092,8 @@ fn airlight_phase_lobes(s_32: AirlightScene) -> vec4<f32> {
             let _e22 = airlight_hg_gap(p0_5);
             let _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            let _e26 = airlight_hg_gap(s_32.phase_param_b);
-            let _e27 = airlight_lobe(s_32.phase_param_b, _e26);
+            let _e26 = airlight_hg_gap(s_33.phase_param_b);
+            let _e27 = airlight_lobe(s_33.phase_param_b, _e26);
             second = _e27;
         }
         default: {
@@ -6080,15 +6106,15 @@ fn airlight_phase_lobes(s_32: AirlightScene) -> vec4<f32> {
 
 fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
-    var local_170: bool;
+    var local_171: bool;
 
     let m_10 = abs(n_2);
     if (m_10.x <= m_10.y) {
-        local_170 = (m_10.x <= m_10.z);
+        local_171 = (m_10.x <= m_10.z);
     } else {
-        local_170 = false;
+        local_171 = false;
     }
-    let _e16 = local_170;
+    let _e16 = local_171;
     if _e16 {
         u_3 = vec3<f32>(1f, 0f, 0f);
     } else {
@@ -6110,9 +6136,9 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     return (select(-1f, 1f, (u_9 >= 0f)) * _e13);
 }
 
-fn airlight_area(s_33: AirlightScene) -> AirlightArea {
+fn airlight_area(s_34: AirlightScene) -> AirlightArea {
     var a_18: AirlightArea;
-    var local_171: bool;
+    var local_172: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
     var cut1_: f32 = 0f;
@@ -6120,37 +6146,37 @@ fn airlight_area(s_33: AirlightScene) -> AirlightArea {
     var size: f32;
     var t_end_1: f32;
     var end_infinite: bool;
-    var local_172: bool;
+    var local_173: bool;
     var cuts_4: array<f32, 3>;
     var i_27: u32 = 0u;
-    var local_173: bool;
     var local_174: bool;
     var local_175: bool;
+    var local_176: bool;
 
     let zero = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_33);
-    a_18 = AirlightArea(zero, s_33.light_position, zero, zero, zero, zero, zero, zero, s_33.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    let _e28 = airlight_isotropic_phase(s_33);
+    let _e21 = airlight_phase_lobes(s_34);
+    a_18 = AirlightArea(zero, s_34.light_position, zero, zero, zero, zero, zero, zero, s_34.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    let _e28 = airlight_isotropic_phase(s_34);
     a_18.isotropic = _e28;
-    if !((s_33.intensity == 0f)) {
-        local_171 = (s_33.sigma_s == 0f);
+    if !((s_34.intensity == 0f)) {
+        local_172 = (s_34.sigma_s == 0f);
     } else {
-        local_171 = true;
+        local_172 = true;
     }
-    let _e39 = local_171;
+    let _e39 = local_172;
     if _e39 {
         a_18.outcome = 1u;
         let _e42 = a_18;
         return _e42;
     }
-    let o_6 = s_33.origin;
-    let _e45 = airlight_normalize(s_33.dir);
+    let o_6 = s_34.origin;
+    let _e45 = airlight_normalize(s_34.dir);
     a_18.d = _e45;
-    let infinite_6 = ((s_33.flags & 1u) != 0u);
-    let t0_2 = s_33.t_min;
-    centre = s_33.light_position;
-    size = s_33.light_param_a;
-    if (s_33.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+    let infinite_6 = ((s_34.flags & 1u) != 0u);
+    let t0_2 = s_34.t_min;
+    centre = s_34.light_position;
+    size = s_34.light_param_a;
+    if (s_34.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e67 = a_18.c;
         let oc = (o_6 - _e67);
         let b_20 = dot(oc, _e45);
@@ -6166,15 +6192,15 @@ fn airlight_area(s_33: AirlightScene) -> AirlightArea {
             cut_count = 2u;
         }
     } else {
-        if (s_33.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e98 = airlight_normalize(s_33.light_axis);
+        if (s_34.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e98 = airlight_normalize(s_34.light_axis);
             a_18.n = _e98;
             let _e101 = a_18.n;
             let _e102 = airlight_basis_e1_(_e101);
             a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_33.light_axis;
-            a_18.ev = s_33.light_end;
+            a_18.eu = s_34.light_axis;
+            a_18.ev = s_34.light_end;
             let _e109 = a_18.eu;
             let _e111 = a_18.ev;
             let _e113 = airlight_normalize(cross(_e109, _e111));
@@ -6220,20 +6246,20 @@ fn airlight_area(s_33: AirlightScene) -> AirlightArea {
     let _e184 = size;
     let _e185 = size;
     a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
-    t_end_1 = s_33.t_max;
+    t_end_1 = s_34.t_max;
     end_infinite = infinite_6;
-    if (s_33.sigma_t > 0f) {
+    if (s_34.sigma_t > 0f) {
         let _e195 = centre;
         let _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
         let _e201 = size;
-        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_33.sigma_t));
+        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_34.sigma_t));
         if !(infinite_6) {
             let _e210 = t_end_1;
-            local_172 = (reach_1 < _e210);
+            local_173 = (reach_1 < _e210);
         } else {
-            local_172 = true;
+            local_173 = true;
         }
-        let _e213 = local_172;
+        let _e213 = local_173;
         if _e213 {
             t_end_1 = reach_1;
             end_infinite = false;
@@ -6266,25 +6292,25 @@ fn airlight_area(s_33: AirlightScene) -> AirlightArea {
             cuts_4[_e248] = _e217;
             let _e250 = airlight_is_finite(t_9);
             if _e250 {
-                local_173 = (t_9 >= t0_2);
+                local_174 = (t_9 >= t0_2);
             } else {
-                local_173 = false;
+                local_174 = false;
             }
-            let _e255 = local_173;
+            let _e255 = local_174;
             if _e255 {
                 let _e258 = end_infinite;
                 if !(_e258) {
                     let _e262 = t_end_1;
-                    local_175 = (t_9 <= _e262);
+                    local_176 = (t_9 <= _e262);
                 } else {
-                    local_175 = true;
+                    local_176 = true;
                 }
-                let _e265 = local_175;
-                local_174 = _e265;
+                let _e265 = local_176;
+                local_175 = _e265;
             } else {
-                local_174 = false;
+                local_175 = false;
             }
-            let _e267 = local_174;
+            let _e267 = local_175;
             if _e267 {
                 let _e268 = i_27;
                 let _e270 = a_18;
@@ -6309,128 +6335,79 @@ fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_34: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded: f32, node: f32) -> f32 {
-    var g_26: f32;
-    var jacobian_1: f32 = 1f;
-
-    g_26 = node;
-    if (graded > 0f) {
-        let _e11 = airlight_cos_sin_half_turn(node);
-        g_26 = ((graded * _e11.y) / _e11.x);
-        jacobian_1 = (graded / (_e11.x * _e11.x));
-    }
-    let _e20 = g_26;
-    let _e21 = airlight_cos_sin_half_turn(_e20);
-    let r_13 = ((above_1.rho0_ * _e21.y) / _e21.x);
-    let dr = (above_1.rho0_ / (_e21.x * _e21.x));
+fn airlight_flat_node(s_35: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+    let _e6 = airlight_graded_node(graded_1, node_1);
+    let _e8 = airlight_cos_sin_half_turn(_e6.x);
+    let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
+    let dr = (above_1.rho0_ / (_e8.x * _e8.x));
     let p_4 = (above_1.off + (r_13 * e_3));
     let z_19 = above_1.z;
     let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e63 = airlight_area_phase(s_34, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
-    let _e64 = jacobian_1;
-    let _e65 = airlight_emitted(s_34, cos_);
-    return ((((((((_e64 * _e65) * exp(min((-(s_34.sigma_t) * dist), 0f))) * _e63) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    let _e50 = airlight_area_phase(s_35, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    let _e52 = airlight_emitted(s_35, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_35.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_35: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
-    var top: f32;
-    var graded_1: f32;
-    var local_176: bool;
+fn airlight_flat_radial(s_36: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    top = _e7;
-    let _e9 = airlight_emission_scale(s_35);
-    graded_1 = _e9;
-    let _e11 = graded_1;
-    if (_e11 > 0f) {
-        let _e16 = graded_1;
-        let _e17 = top;
-        local_176 = (_e16 < _e17);
-    } else {
-        local_176 = false;
-    }
-    let _e20 = local_176;
-    if _e20 {
-        let _e21 = top;
-        let _e22 = graded_1;
-        let _e24 = airlight_atan((_e21 / _e22));
-        top = _e24;
-    } else {
-        graded_1 = 0f;
-    }
-    let _e26 = top;
-    let c_16 = (0.5f * _e26);
-    let _e29 = top;
-    let hw_2 = (0.5f * _e29);
-    let _e34 = sum_7;
-    let _e37 = graded_1;
-    let _e41 = airlight_flat_node(s_35, a_20, above_2, e_4, _e37, (c_16 - (0.09501251f * hw_2)));
-    sum_7 = (_e34 + ((0.1894506f * hw_2) * _e41));
-    let _e44 = sum_7;
-    let _e47 = graded_1;
-    let _e51 = airlight_flat_node(s_35, a_20, above_2, e_4, _e47, (c_16 + (0.09501251f * hw_2)));
-    sum_7 = (_e44 + ((0.1894506f * hw_2) * _e51));
+    let _e8 = airlight_graded_range(s_36, _e7);
+    let graded_5 = _e8.y;
+    let c_16 = (0.5f * _e8.x);
+    let hw_2 = (0.5f * _e8.x);
+    let _e18 = sum_7;
+    let _e24 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251f * hw_2)));
+    sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
+    let _e27 = sum_7;
+    let _e33 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251f * hw_2)));
+    sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
+    let _e36 = sum_7;
+    let _e42 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354f * hw_2)));
+    sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
+    let _e45 = sum_7;
+    let _e51 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354f * hw_2)));
+    sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e57 = graded_1;
-    let _e61 = airlight_flat_node(s_35, a_20, above_2, e_4, _e57, (c_16 - (0.28160354f * hw_2)));
-    sum_7 = (_e54 + ((0.18260342f * hw_2) * _e61));
-    let _e64 = sum_7;
-    let _e67 = graded_1;
-    let _e71 = airlight_flat_node(s_35, a_20, above_2, e_4, _e67, (c_16 + (0.28160354f * hw_2)));
-    sum_7 = (_e64 + ((0.18260342f * hw_2) * _e71));
-    let _e74 = sum_7;
-    let _e77 = graded_1;
-    let _e81 = airlight_flat_node(s_35, a_20, above_2, e_4, _e77, (c_16 - (0.45801678f * hw_2)));
-    sum_7 = (_e74 + ((0.16915652f * hw_2) * _e81));
-    let _e84 = sum_7;
-    let _e87 = graded_1;
-    let _e91 = airlight_flat_node(s_35, a_20, above_2, e_4, _e87, (c_16 + (0.45801678f * hw_2)));
-    sum_7 = (_e84 + ((0.16915652f * hw_2) * _e91));
-    let _e94 = sum_7;
-    let _e97 = graded_1;
-    let _e101 = airlight_flat_node(s_35, a_20, above_2, e_4, _e97, (c_16 - (0.61787623f * hw_2)));
-    sum_7 = (_e94 + ((0.14959599f * hw_2) * _e101));
-    let _e104 = sum_7;
-    let _e107 = graded_1;
-    let _e111 = airlight_flat_node(s_35, a_20, above_2, e_4, _e107, (c_16 + (0.61787623f * hw_2)));
-    sum_7 = (_e104 + ((0.14959599f * hw_2) * _e111));
-    let _e114 = sum_7;
-    let _e117 = graded_1;
-    let _e121 = airlight_flat_node(s_35, a_20, above_2, e_4, _e117, (c_16 - (0.7554044f * hw_2)));
-    sum_7 = (_e114 + ((0.12462897f * hw_2) * _e121));
-    let _e124 = sum_7;
-    let _e127 = graded_1;
-    let _e131 = airlight_flat_node(s_35, a_20, above_2, e_4, _e127, (c_16 + (0.7554044f * hw_2)));
-    sum_7 = (_e124 + ((0.12462897f * hw_2) * _e131));
-    let _e134 = sum_7;
-    let _e137 = graded_1;
-    let _e141 = airlight_flat_node(s_35, a_20, above_2, e_4, _e137, (c_16 - (0.8656312f * hw_2)));
-    sum_7 = (_e134 + ((0.09515851f * hw_2) * _e141));
+    let _e60 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678f * hw_2)));
+    sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
+    let _e63 = sum_7;
+    let _e69 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678f * hw_2)));
+    sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
+    let _e72 = sum_7;
+    let _e78 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623f * hw_2)));
+    sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
+    let _e81 = sum_7;
+    let _e87 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623f * hw_2)));
+    sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
+    let _e90 = sum_7;
+    let _e96 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044f * hw_2)));
+    sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
+    let _e99 = sum_7;
+    let _e105 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044f * hw_2)));
+    sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
+    let _e108 = sum_7;
+    let _e114 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312f * hw_2)));
+    sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
+    let _e117 = sum_7;
+    let _e123 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312f * hw_2)));
+    sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
+    let _e126 = sum_7;
+    let _e132 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.944575f * hw_2)));
+    sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
+    let _e135 = sum_7;
+    let _e141 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.944575f * hw_2)));
+    sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e147 = graded_1;
-    let _e151 = airlight_flat_node(s_35, a_20, above_2, e_4, _e147, (c_16 + (0.8656312f * hw_2)));
-    sum_7 = (_e144 + ((0.09515851f * hw_2) * _e151));
-    let _e154 = sum_7;
-    let _e157 = graded_1;
-    let _e161 = airlight_flat_node(s_35, a_20, above_2, e_4, _e157, (c_16 - (0.944575f * hw_2)));
-    sum_7 = (_e154 + ((0.062253524f * hw_2) * _e161));
-    let _e164 = sum_7;
-    let _e167 = graded_1;
-    let _e171 = airlight_flat_node(s_35, a_20, above_2, e_4, _e167, (c_16 + (0.944575f * hw_2)));
-    sum_7 = (_e164 + ((0.062253524f * hw_2) * _e171));
-    let _e174 = sum_7;
-    let _e177 = graded_1;
-    let _e181 = airlight_flat_node(s_35, a_20, above_2, e_4, _e177, (c_16 - (0.9894009f * hw_2)));
-    sum_7 = (_e174 + ((0.02715246f * hw_2) * _e181));
-    let _e184 = sum_7;
-    let _e187 = graded_1;
-    let _e191 = airlight_flat_node(s_35, a_20, above_2, e_4, _e187, (c_16 + (0.9894009f * hw_2)));
-    sum_7 = (_e184 + ((0.02715246f * hw_2) * _e191));
-    let _e194 = sum_7;
-    return _e194;
+    let _e150 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009f * hw_2)));
+    sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
+    let _e153 = sum_7;
+    let _e159 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009f * hw_2)));
+    sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
+    let _e162 = sum_7;
+    return _e162;
 }
 
 fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
@@ -6524,7 +6501,8 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
                 let _e49 = airlight_outline_nearest(o_2, q_13);
                 let to_near = vec3<f32>(_e49, -(z_11));
                 let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
-                if !(all((_e49 == q_13))) {
+                let on_emitter = all((_e49 == q_13));
+                if !(on_emitter) {
                     let _e63 = airlight_acos(cos_1);
                     local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
@@ -6532,7 +6510,7 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
                 }
                 let _e69 = local_180;
                 if _e69 {
-                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13);
+                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                 }
             }
         }
@@ -6541,7 +6519,7 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
             j_5 = (_e74 + 1u);
         }
     }
-    return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f));
+    return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f), false);
 }
 
 fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
@@ -6597,24 +6575,24 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
     return _e93;
 }
 
-fn airlight_flat_lobe_node(s_36: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_27: f32) -> f32 {
-    let _e7 = airlight_cos_sin_half_turn(g_27);
+fn airlight_flat_lobe_node(s_37: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_26: f32) -> f32 {
+    let _e7 = airlight_cos_sin_half_turn(g_26);
     let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
     let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
     if !((c_17 > 0f)) {
         return 0f;
     }
-    let _e26 = airlight_emitted(s_36, c_17);
-    let _e38 = airlight_area_phase(s_36, (lobe_1.sign * _e13.x));
-    return (((((_e26 * exp(min(((-(s_36.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    let _e26 = airlight_emitted(s_37, c_17);
+    let _e38 = airlight_area_phase(s_37, (lobe_1.sign * _e13.x));
+    return (((((_e26 * exp(min(((-(s_37.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-fn airlight_flat_lobe_along(s_37: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_38: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
-    let w_10 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    let k_12 = (w_10.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_10.xy + (k_12 * lobe_2.p.xy)));
+    let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
+    let k_12 = (w_9.z / -(lobe_2.p.z));
+    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_12 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
@@ -6625,52 +6603,52 @@ fn airlight_flat_lobe_along(s_37: AirlightScene, z_13: f32, o_4: AirlightOutline
     let c_18 = (0.5f * _e45);
     let hw_3 = (0.5f * _e45);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_37, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -6698,7 +6676,7 @@ fn airlight_sort4_(x_23: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-fn airlight_flat_about_lobe(s_38: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var i_29: u32 = 0u;
     var i_30: u32 = 0u;
@@ -6710,128 +6688,126 @@ fn airlight_flat_about_lobe(s_38: AirlightScene, z_14: f32, o_5: AirlightOutline
     let v_9 = cross(lobe_3.p, _e5);
     let q_14 = lobe_3.q;
     if (o_5.radius > 0f) {
-        let d_5 = (o_5.corners[0] - q_14);
-        let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        if (dq_2 <= o_5.radius) {
+        if lobe_3.on_emitter {
             loop {
-                let _e29 = i_29;
-                if (_e29 < 32u) {
+                let _e17 = i_29;
+                if (_e17 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e33 = i_29;
-                    let _e34 = airlight_azimuths(true, _e33);
-                    let _e35 = sum_9;
-                    let _e38 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e34.xy);
-                    sum_9 = (_e35 + (_e34.z * _e38));
+                    let _e21 = i_29;
+                    let _e22 = airlight_azimuths(true, _e21);
+                    let _e23 = sum_9;
+                    let _e26 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
+                    sum_9 = (_e23 + (_e22.z * _e26));
                 }
                 continuing {
-                    let _e42 = i_29;
-                    i_29 = (_e42 + 1u);
+                    let _e30 = i_29;
+                    i_29 = (_e30 + 1u);
                 }
             }
-            let _e44 = sum_9;
-            return _e44;
+            let _e32 = sum_9;
+            return _e32;
         }
+        let d_5 = (o_5.corners[0] - q_14);
+        let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
         let sb_1 = (o_5.radius / dq_2);
         let cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        let _e54 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        let _e66 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
-        let _e68 = airlight_wrap_turn((_e66 - _e54));
-        let _e80 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
-        let _e82 = airlight_wrap_turn((_e80 - _e54));
-        let centre_2 = (_e54 + ((_e68 + _e82) * 0.5f));
-        let half_19 = (abs((_e68 - _e82)) * 0.5f);
+        let _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        let _e65 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        let _e67 = airlight_wrap_turn((_e65 - _e53));
+        let _e79 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        let _e81 = airlight_wrap_turn((_e79 - _e53));
+        let centre_2 = (_e53 + ((_e67 + _e81) * 0.5f));
+        let half_19 = (abs((_e67 - _e81)) * 0.5f);
         loop {
-            let _e93 = i_30;
-            if (_e93 < 32u) {
+            let _e92 = i_30;
+            if (_e92 < 32u) {
             } else {
                 break;
             }
             {
-                let _e97 = i_30;
-                let _e98 = airlight_azimuths(false, _e97);
-                let _e99 = sum_9;
-                let _e107 = airlight_cos_sin_turns((centre_2 + (half_19 * _e98.y)));
-                let _e108 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e107);
-                sum_9 = (_e99 + (((_e98.z * half_19) * _e98.x) * _e108));
+                let _e96 = i_30;
+                let _e97 = airlight_azimuths(false, _e96);
+                let _e98 = sum_9;
+                let _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
+                let _e107 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e106);
+                sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
             continuing {
-                let _e112 = i_30;
-                i_30 = (_e112 + 1u);
+                let _e111 = i_30;
+                i_30 = (_e111 + 1u);
             }
         }
-        let _e114 = sum_9;
-        return _e114;
+        let _e113 = sum_9;
+        return _e113;
     }
-    let _e115 = airlight_outline_nearest(o_5, q_14);
-    let inside_2 = all((_e115 == q_14));
-    if !(inside_2) {
-        let _e129 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
-        mid = _e129;
+    if !(lobe_3.on_emitter) {
+        let _e126 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
+        mid = _e126;
     }
-    let _e133 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    let _e134 = mid;
-    let _e136 = airlight_wrap_turn((_e133 - _e134));
-    let _e140 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    let _e141 = mid;
-    let _e143 = airlight_wrap_turn((_e140 - _e141));
-    let _e147 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    let _e148 = mid;
-    let _e150 = airlight_wrap_turn((_e147 - _e148));
-    let _e154 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    let _e155 = mid;
-    let _e157 = airlight_wrap_turn((_e154 - _e155));
-    let _e159 = airlight_sort4_(vec4<f32>(_e136, _e143, _e150, _e157));
-    let wedges = select(3u, 4u, inside_2);
+    let _e130 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e131 = mid;
+    let _e133 = airlight_wrap_turn((_e130 - _e131));
+    let _e137 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e138 = mid;
+    let _e140 = airlight_wrap_turn((_e137 - _e138));
+    let _e144 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e145 = mid;
+    let _e147 = airlight_wrap_turn((_e144 - _e145));
+    let _e151 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e152 = mid;
+    let _e154 = airlight_wrap_turn((_e151 - _e152));
+    let _e156 = airlight_sort4_(vec4<f32>(_e133, _e140, _e147, _e154));
+    let wedges = select(3u, 4u, lobe_3.on_emitter);
     loop {
-        let _e165 = i_31;
-        if (_e165 < wedges) {
+        let _e163 = i_31;
+        if (_e163 < wedges) {
         } else {
             break;
         }
         {
-            let _e167 = mid;
-            let _e168 = i_31;
-            let first_2 = (_e167 + _e159[_e168]);
-            let _e171 = mid;
-            let _e172 = i_31;
-            let _e181 = i_31;
-            let last_1 = (_e171 + select(_e159[min((_e172 + 1u), 3u)], (_e159.x + 6.2831855f), (_e181 == 3u)));
+            let _e165 = mid;
+            let _e166 = i_31;
+            let first_2 = (_e165 + _e156[_e166]);
+            let _e169 = mid;
+            let _e170 = i_31;
+            let _e179 = i_31;
+            let last_1 = (_e169 + select(_e156[min((_e170 + 1u), 3u)], (_e156.x + 6.2831855f), (_e179 == 3u)));
             let c_19 = ((first_2 + last_1) * 0.5f);
             let hw_4 = ((last_1 - first_2) * 0.5f);
             j_6 = 0u;
             loop {
-                let _e194 = j_6;
-                if (_e194 < 12u) {
+                let _e192 = j_6;
+                if (_e192 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e197 = j_6;
-                    let _e198 = airlight_triangle_rule(_e197);
-                    let _e199 = sum_9;
-                    let _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                    let _e206 = airlight_flat_lobe_along(s_38, z_14, o_5, lobe_3, _e5, v_9, _e205);
-                    sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
+                    let _e195 = j_6;
+                    let _e196 = airlight_triangle_rule(_e195);
+                    let _e197 = sum_9;
+                    let _e203 = airlight_cos_sin_turns((c_19 + (hw_4 * _e196.x)));
+                    let _e204 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e203);
+                    sum_9 = (_e197 + ((_e196.y * hw_4) * _e204));
                 }
                 continuing {
-                    let _e210 = j_6;
-                    j_6 = (_e210 + 1u);
+                    let _e208 = j_6;
+                    j_6 = (_e208 + 1u);
                 }
             }
         }
         continuing {
-            let _e213 = i_31;
-            i_31 = (_e213 + 1u);
+            let _e211 = i_31;
+            i_31 = (_e211 + 1u);
         }
     }
-    let _e215 = sum_9;
-    return _e215;
+    let _e213 = sum_9;
+    return _e213;
 }
 
-fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
     var local_181: bool;
     var local_182: bool;
     var u_6: vec2<f32> = vec2(0f);
@@ -6854,12 +6830,12 @@ fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
     let _e30 = airlight_flat_lobe(a_23, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_39, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_40, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_39, (radius_2 - rf), z_20);
+            let _e44 = airlight_far_from_edge(s_40, (radius_2 - rf), z_20);
             local_182 = _e44;
         } else {
             local_182 = true;
@@ -6869,10 +6845,10 @@ fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     } else {
         local_181 = false;
     }
-    let inside_3 = local_181;
+    let inside_2 = local_181;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
-    if !(inside_3) {
+    if !(inside_2) {
         u_6 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
         let _e63 = u_6;
         let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
@@ -6887,14 +6863,14 @@ fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
         }
         {
             let _e76 = i_32;
-            let _e77 = airlight_azimuths(inside_3, _e76);
+            let _e77 = airlight_azimuths(inside_2, _e76);
             let _e80 = u_6.x;
             let _e84 = u_6.y;
             let _e89 = u_6.y;
             let _e93 = u_6.x;
             e_8 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
-            if inside_3 {
+            if inside_2 {
                 e_8 = _e77.xy;
                 let b_23 = ((fx * _e77.x) + (fy_1 * _e77.y));
                 let root_4 = sqrt(((b_23 * b_23) - k_13));
@@ -6904,7 +6880,7 @@ fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
             let _e120 = above_3;
             let _e121 = e_8;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_39, a_23, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_40, a_23, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -6916,7 +6892,7 @@ fn airlight_disc(s_39: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_40: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
     var local_183: bool;
     var sum_11: f32 = 0f;
@@ -6937,13 +6913,13 @@ fn airlight_parallelogram(s_40: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
     let _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_40, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_41, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_8 = (_e76.xy + foot);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_40, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        let _e89 = airlight_far_from_edge(s_41, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_183 = _e89;
     } else {
         local_183 = false;
@@ -6991,7 +6967,7 @@ fn airlight_parallelogram(s_40: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
                     let _e171 = airlight_cos_sin_half_turn(((0.5f * _e147) * (1f + _e164.x)));
                     let dir_3 = vec2<f32>(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
                     let _e187 = sum_11;
-                    let _e200 = airlight_flat_radial(s_40, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
+                    let _e200 = airlight_flat_radial(s_41, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
                     sum_11 = (_e187 + (((_e164.y * 0.5f) * _e147) * _e200));
                 }
                 continuing {
@@ -7009,32 +6985,19 @@ fn airlight_parallelogram(s_40: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     return _e209;
 }
 
-fn airlight_cap_row(s_41: AirlightScene, cap: AirlightCap, graded_3: f32, node_1: f32, weight_1: f32) -> vec3<f32> {
-    var phi: f32;
-    var w_2: f32;
-
-    phi = node_1;
-    w_2 = weight_1;
-    if (graded_3 > 0f) {
-        let _e9 = airlight_cos_sin_half_turn(node_1);
-        phi = ((graded_3 * _e9.y) / _e9.x);
-        w_2 = ((weight_1 * graded_3) / (_e9.x * _e9.x));
-    }
-    let _e19 = phi;
-    let _e20 = airlight_cos_sin_half_turn(_e19);
-    let sb_2 = (cap.sin_a * _e20.y);
+fn airlight_cap_row(s_42: AirlightScene, cap: AirlightCap, graded_3: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+    let _e5 = airlight_graded_node(graded_3, node_2);
+    let w_10 = (weight_1 * _e5.y);
+    let _e9 = airlight_cos_sin_half_turn(_e5.x);
+    let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
-    let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e20.x)), 0f);
-    let _e38 = w_2;
-    let _e40 = airlight_emitted(s_41, _e20.x);
-    let factor = (((((((_e38 * _e40) * cap.sin_a) * cap.sin_a) * _e20.y) * _e20.x) / cb_2) * exp(min((-(s_41.sigma_t) * dist_1), 0f)));
+    let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
+    let _e28 = airlight_emitted(s_42, _e9.x);
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_42.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_42: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
-    var graded_4: f32;
-    var top_1: f32 = 1.5707964f;
-    var local_184: bool;
+fn airlight_sphere_cap(s_43: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
     var i_34: u32 = 0u;
@@ -7045,263 +7008,228 @@ fn airlight_sphere_cap(s_42: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let ad = dot(cap_1.a, a_25.d);
     let e1d = dot(_e4, a_25.d);
     let e2d = dot(e2_2, a_25.d);
-    let _e14 = airlight_emission_scale(s_42);
-    graded_4 = _e14;
-    let _e18 = graded_4;
-    if (_e18 > 0f) {
-        let _e23 = graded_4;
-        let _e24 = top_1;
-        local_184 = (_e23 < _e24);
-    } else {
-        local_184 = false;
-    }
-    let _e27 = local_184;
-    if _e27 {
-        let _e28 = top_1;
-        let _e29 = graded_4;
-        let _e31 = airlight_atan((_e28 / _e29));
-        top_1 = _e31;
-    } else {
-        graded_4 = 0f;
-    }
-    let _e33 = top_1;
-    let c_20 = (0.5f * _e33);
-    let _e36 = top_1;
-    let hw_5 = (0.5f * _e36);
-    let _e74 = graded_4;
-    let _e80 = airlight_cap_row(s_42, cap_1, _e74, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
-    rows[0] = _e80;
-    let _e82 = graded_4;
-    let _e88 = airlight_cap_row(s_42, cap_1, _e82, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
-    rows[1] = _e88;
-    let _e90 = graded_4;
-    let _e96 = airlight_cap_row(s_42, cap_1, _e90, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
-    rows[2] = _e96;
-    let _e98 = graded_4;
-    let _e104 = airlight_cap_row(s_42, cap_1, _e98, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
-    rows[3] = _e104;
-    let _e106 = graded_4;
-    let _e112 = airlight_cap_row(s_42, cap_1, _e106, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
-    rows[4] = _e112;
-    let _e114 = graded_4;
-    let _e120 = airlight_cap_row(s_42, cap_1, _e114, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
-    rows[5] = _e120;
-    let _e122 = graded_4;
-    let _e128 = airlight_cap_row(s_42, cap_1, _e122, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
-    rows[6] = _e128;
-    let _e130 = graded_4;
-    let _e136 = airlight_cap_row(s_42, cap_1, _e130, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
-    rows[7] = _e136;
-    let _e138 = graded_4;
-    let _e144 = airlight_cap_row(s_42, cap_1, _e138, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
-    rows[8] = _e144;
-    let _e146 = graded_4;
-    let _e152 = airlight_cap_row(s_42, cap_1, _e146, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
-    rows[9] = _e152;
-    let _e154 = graded_4;
-    let _e160 = airlight_cap_row(s_42, cap_1, _e154, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
-    rows[10] = _e160;
-    let _e162 = graded_4;
-    let _e168 = airlight_cap_row(s_42, cap_1, _e162, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
-    rows[11] = _e168;
-    let _e170 = graded_4;
-    let _e176 = airlight_cap_row(s_42, cap_1, _e170, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
-    rows[12] = _e176;
-    let _e178 = graded_4;
-    let _e184 = airlight_cap_row(s_42, cap_1, _e178, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
-    rows[13] = _e184;
-    let _e186 = graded_4;
-    let _e192 = airlight_cap_row(s_42, cap_1, _e186, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
-    rows[14] = _e192;
-    let _e194 = graded_4;
-    let _e200 = airlight_cap_row(s_42, cap_1, _e194, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
-    rows[15] = _e200;
+    let _e15 = airlight_graded_range(s_43, 1.5707964f);
+    let graded_7 = _e15.y;
+    let c_20 = (0.5f * _e15.x);
+    let hw_5 = (0.5f * _e15.x);
+    let _e63 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    rows[0] = _e63;
+    let _e70 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    rows[1] = _e70;
+    let _e77 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    rows[2] = _e77;
+    let _e84 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    rows[3] = _e84;
+    let _e91 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    rows[4] = _e91;
+    let _e98 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    rows[5] = _e98;
+    let _e105 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    rows[6] = _e105;
+    let _e112 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    rows[7] = _e112;
+    let _e119 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    rows[8] = _e119;
+    let _e126 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    rows[9] = _e126;
+    let _e133 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    rows[10] = _e133;
+    let _e140 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    rows[11] = _e140;
+    let _e147 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    rows[12] = _e147;
+    let _e154 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    rows[13] = _e154;
+    let _e161 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    rows[14] = _e161;
+    let _e168 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    rows[15] = _e168;
     if a_25.isotropic {
-        let _e206 = airlight_area_phase(s_42, 0f);
-        let around_1 = (6.2831855f * _e206);
-        let _e208 = sum_12;
-        let _e211 = rows[0].x;
-        sum_12 = (_e208 + (_e211 * around_1));
-        let _e214 = sum_12;
-        let _e217 = rows[1].x;
-        sum_12 = (_e214 + (_e217 * around_1));
-        let _e220 = sum_12;
-        let _e223 = rows[2].x;
-        sum_12 = (_e220 + (_e223 * around_1));
-        let _e226 = sum_12;
-        let _e229 = rows[3].x;
-        sum_12 = (_e226 + (_e229 * around_1));
-        let _e232 = sum_12;
-        let _e235 = rows[4].x;
-        sum_12 = (_e232 + (_e235 * around_1));
-        let _e238 = sum_12;
-        let _e241 = rows[5].x;
-        sum_12 = (_e238 + (_e241 * around_1));
-        let _e244 = sum_12;
-        let _e247 = rows[6].x;
-        sum_12 = (_e244 + (_e247 * around_1));
-        let _e250 = sum_12;
-        let _e253 = rows[7].x;
-        sum_12 = (_e250 + (_e253 * around_1));
-        let _e256 = sum_12;
-        let _e259 = rows[8].x;
-        sum_12 = (_e256 + (_e259 * around_1));
-        let _e262 = sum_12;
-        let _e265 = rows[9].x;
-        sum_12 = (_e262 + (_e265 * around_1));
-        let _e268 = sum_12;
-        let _e271 = rows[10].x;
-        sum_12 = (_e268 + (_e271 * around_1));
-        let _e274 = sum_12;
-        let _e277 = rows[11].x;
-        sum_12 = (_e274 + (_e277 * around_1));
-        let _e280 = sum_12;
-        let _e283 = rows[12].x;
-        sum_12 = (_e280 + (_e283 * around_1));
-        let _e286 = sum_12;
-        let _e289 = rows[13].x;
-        sum_12 = (_e286 + (_e289 * around_1));
-        let _e292 = sum_12;
-        let _e295 = rows[14].x;
-        sum_12 = (_e292 + (_e295 * around_1));
-        let _e298 = sum_12;
-        let _e301 = rows[15].x;
-        sum_12 = (_e298 + (_e301 * around_1));
-        let _e304 = sum_12;
-        return _e304;
+        let _e174 = airlight_area_phase(s_43, 0f);
+        let around_1 = (6.2831855f * _e174);
+        let _e176 = sum_12;
+        let _e179 = rows[0].x;
+        sum_12 = (_e176 + (_e179 * around_1));
+        let _e182 = sum_12;
+        let _e185 = rows[1].x;
+        sum_12 = (_e182 + (_e185 * around_1));
+        let _e188 = sum_12;
+        let _e191 = rows[2].x;
+        sum_12 = (_e188 + (_e191 * around_1));
+        let _e194 = sum_12;
+        let _e197 = rows[3].x;
+        sum_12 = (_e194 + (_e197 * around_1));
+        let _e200 = sum_12;
+        let _e203 = rows[4].x;
+        sum_12 = (_e200 + (_e203 * around_1));
+        let _e206 = sum_12;
+        let _e209 = rows[5].x;
+        sum_12 = (_e206 + (_e209 * around_1));
+        let _e212 = sum_12;
+        let _e215 = rows[6].x;
+        sum_12 = (_e212 + (_e215 * around_1));
+        let _e218 = sum_12;
+        let _e221 = rows[7].x;
+        sum_12 = (_e218 + (_e221 * around_1));
+        let _e224 = sum_12;
+        let _e227 = rows[8].x;
+        sum_12 = (_e224 + (_e227 * around_1));
+        let _e230 = sum_12;
+        let _e233 = rows[9].x;
+        sum_12 = (_e230 + (_e233 * around_1));
+        let _e236 = sum_12;
+        let _e239 = rows[10].x;
+        sum_12 = (_e236 + (_e239 * around_1));
+        let _e242 = sum_12;
+        let _e245 = rows[11].x;
+        sum_12 = (_e242 + (_e245 * around_1));
+        let _e248 = sum_12;
+        let _e251 = rows[12].x;
+        sum_12 = (_e248 + (_e251 * around_1));
+        let _e254 = sum_12;
+        let _e257 = rows[13].x;
+        sum_12 = (_e254 + (_e257 * around_1));
+        let _e260 = sum_12;
+        let _e263 = rows[14].x;
+        sum_12 = (_e260 + (_e263 * around_1));
+        let _e266 = sum_12;
+        let _e269 = rows[15].x;
+        sum_12 = (_e266 + (_e269 * around_1));
+        let _e272 = sum_12;
+        return _e272;
     }
     loop {
-        let _e307 = i_34;
-        if (_e307 < 32u) {
+        let _e275 = i_34;
+        if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e311 = i_34;
-            let _e312 = airlight_azimuths(true, _e311);
-            let across_1 = ((_e312.x * e1d) + (_e312.y * e2d));
+            let _e279 = i_34;
+            let _e280 = airlight_azimuths(true, _e279);
+            let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
+            let _e288 = at_2;
+            let _e291 = rows[0].x;
+            let _e294 = rows[0].y;
+            let _e298 = rows[0].z;
+            let _e301 = airlight_area_phase(s_43, ((_e294 * ad) + (_e298 * across_1)));
+            at_2 = (_e288 + (_e291 * _e301));
+            let _e304 = at_2;
+            let _e307 = rows[1].x;
+            let _e310 = rows[1].y;
+            let _e314 = rows[1].z;
+            let _e317 = airlight_area_phase(s_43, ((_e310 * ad) + (_e314 * across_1)));
+            at_2 = (_e304 + (_e307 * _e317));
             let _e320 = at_2;
-            let _e323 = rows[0].x;
-            let _e326 = rows[0].y;
-            let _e330 = rows[0].z;
-            let _e333 = airlight_area_phase(s_42, ((_e326 * ad) + (_e330 * across_1)));
+            let _e323 = rows[2].x;
+            let _e326 = rows[2].y;
+            let _e330 = rows[2].z;
+            let _e333 = airlight_area_phase(s_43, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
-            let _e339 = rows[1].x;
-            let _e342 = rows[1].y;
-            let _e346 = rows[1].z;
-            let _e349 = airlight_area_phase(s_42, ((_e342 * ad) + (_e346 * across_1)));
+            let _e339 = rows[3].x;
+            let _e342 = rows[3].y;
+            let _e346 = rows[3].z;
+            let _e349 = airlight_area_phase(s_43, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
-            let _e355 = rows[2].x;
-            let _e358 = rows[2].y;
-            let _e362 = rows[2].z;
-            let _e365 = airlight_area_phase(s_42, ((_e358 * ad) + (_e362 * across_1)));
+            let _e355 = rows[4].x;
+            let _e358 = rows[4].y;
+            let _e362 = rows[4].z;
+            let _e365 = airlight_area_phase(s_43, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
-            let _e371 = rows[3].x;
-            let _e374 = rows[3].y;
-            let _e378 = rows[3].z;
-            let _e381 = airlight_area_phase(s_42, ((_e374 * ad) + (_e378 * across_1)));
+            let _e371 = rows[5].x;
+            let _e374 = rows[5].y;
+            let _e378 = rows[5].z;
+            let _e381 = airlight_area_phase(s_43, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
-            let _e387 = rows[4].x;
-            let _e390 = rows[4].y;
-            let _e394 = rows[4].z;
-            let _e397 = airlight_area_phase(s_42, ((_e390 * ad) + (_e394 * across_1)));
+            let _e387 = rows[6].x;
+            let _e390 = rows[6].y;
+            let _e394 = rows[6].z;
+            let _e397 = airlight_area_phase(s_43, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
-            let _e403 = rows[5].x;
-            let _e406 = rows[5].y;
-            let _e410 = rows[5].z;
-            let _e413 = airlight_area_phase(s_42, ((_e406 * ad) + (_e410 * across_1)));
+            let _e403 = rows[7].x;
+            let _e406 = rows[7].y;
+            let _e410 = rows[7].z;
+            let _e413 = airlight_area_phase(s_43, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
-            let _e419 = rows[6].x;
-            let _e422 = rows[6].y;
-            let _e426 = rows[6].z;
-            let _e429 = airlight_area_phase(s_42, ((_e422 * ad) + (_e426 * across_1)));
+            let _e419 = rows[8].x;
+            let _e422 = rows[8].y;
+            let _e426 = rows[8].z;
+            let _e429 = airlight_area_phase(s_43, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
-            let _e435 = rows[7].x;
-            let _e438 = rows[7].y;
-            let _e442 = rows[7].z;
-            let _e445 = airlight_area_phase(s_42, ((_e438 * ad) + (_e442 * across_1)));
+            let _e435 = rows[9].x;
+            let _e438 = rows[9].y;
+            let _e442 = rows[9].z;
+            let _e445 = airlight_area_phase(s_43, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
-            let _e451 = rows[8].x;
-            let _e454 = rows[8].y;
-            let _e458 = rows[8].z;
-            let _e461 = airlight_area_phase(s_42, ((_e454 * ad) + (_e458 * across_1)));
+            let _e451 = rows[10].x;
+            let _e454 = rows[10].y;
+            let _e458 = rows[10].z;
+            let _e461 = airlight_area_phase(s_43, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
-            let _e467 = rows[9].x;
-            let _e470 = rows[9].y;
-            let _e474 = rows[9].z;
-            let _e477 = airlight_area_phase(s_42, ((_e470 * ad) + (_e474 * across_1)));
+            let _e467 = rows[11].x;
+            let _e470 = rows[11].y;
+            let _e474 = rows[11].z;
+            let _e477 = airlight_area_phase(s_43, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
-            let _e483 = rows[10].x;
-            let _e486 = rows[10].y;
-            let _e490 = rows[10].z;
-            let _e493 = airlight_area_phase(s_42, ((_e486 * ad) + (_e490 * across_1)));
+            let _e483 = rows[12].x;
+            let _e486 = rows[12].y;
+            let _e490 = rows[12].z;
+            let _e493 = airlight_area_phase(s_43, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
-            let _e499 = rows[11].x;
-            let _e502 = rows[11].y;
-            let _e506 = rows[11].z;
-            let _e509 = airlight_area_phase(s_42, ((_e502 * ad) + (_e506 * across_1)));
+            let _e499 = rows[13].x;
+            let _e502 = rows[13].y;
+            let _e506 = rows[13].z;
+            let _e509 = airlight_area_phase(s_43, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
-            let _e515 = rows[12].x;
-            let _e518 = rows[12].y;
-            let _e522 = rows[12].z;
-            let _e525 = airlight_area_phase(s_42, ((_e518 * ad) + (_e522 * across_1)));
+            let _e515 = rows[14].x;
+            let _e518 = rows[14].y;
+            let _e522 = rows[14].z;
+            let _e525 = airlight_area_phase(s_43, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
-            let _e531 = rows[13].x;
-            let _e534 = rows[13].y;
-            let _e538 = rows[13].z;
-            let _e541 = airlight_area_phase(s_42, ((_e534 * ad) + (_e538 * across_1)));
+            let _e531 = rows[15].x;
+            let _e534 = rows[15].y;
+            let _e538 = rows[15].z;
+            let _e541 = airlight_area_phase(s_43, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
-            let _e544 = at_2;
-            let _e547 = rows[14].x;
-            let _e550 = rows[14].y;
-            let _e554 = rows[14].z;
-            let _e557 = airlight_area_phase(s_42, ((_e550 * ad) + (_e554 * across_1)));
-            at_2 = (_e544 + (_e547 * _e557));
-            let _e560 = at_2;
-            let _e563 = rows[15].x;
-            let _e566 = rows[15].y;
-            let _e570 = rows[15].z;
-            let _e573 = airlight_area_phase(s_42, ((_e566 * ad) + (_e570 * across_1)));
-            at_2 = (_e560 + (_e563 * _e573));
-            let _e576 = sum_12;
-            let _e578 = at_2;
-            sum_12 = (_e576 + (_e312.z * _e578));
+            let _e544 = sum_12;
+            let _e546 = at_2;
+            sum_12 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e582 = i_34;
-            i_34 = (_e582 + 1u);
+            let _e550 = i_34;
+            i_34 = (_e550 + 1u);
         }
     }
-    let _e584 = sum_12;
-    return _e584;
+    let _e552 = sum_12;
+    return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_43: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_5: f32, g_28: f32) -> f32 {
-    let _e8 = airlight_cos_sin_half_turn(g_28);
-    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_5 * _e8.y) / _e8.x)));
+fn airlight_sphere_lobe_node(s_44: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_4: f32, g_27: f32) -> f32 {
+    let _e8 = airlight_cos_sin_half_turn(g_27);
+    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_4 * _e8.y) / _e8.x)));
     let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e43 = airlight_emitted(s_43, (root_5 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_43, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_43.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_5) / (_e8.x * _e8.x));
+    let _e43 = airlight_emitted(s_44, (root_5 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_44, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_44.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
 }
 
-fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_45: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
@@ -7316,7 +7244,7 @@ fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: Ai
     let v_10 = cross(p_7, _e8);
     let au = dot(cap_3.a, _e8);
     let av = dot(cap_3.a, v_10);
-    let inside_4 = (cos_p_1 > cap_3.cos_a);
+    let inside_3 = (cos_p_1 > cap_3.cos_a);
     let sin_p = sqrt(((au * au) + (av * av)));
     if (sin_p > 0f) {
         axis_2 = vec2<f32>((au / sin_p), (av / sin_p));
@@ -7331,12 +7259,12 @@ fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: Ai
         }
         {
             let _e50 = i_35;
-            let _e51 = airlight_azimuths(inside_4, _e50);
+            let _e51 = airlight_azimuths(inside_3, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
             big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
             wpsi = _e51.z;
-            if !(inside_4) {
+            if !(inside_3) {
                 let _e66 = half_15;
                 let _e69 = airlight_cos_sin((_e66 * _e51.y));
                 big_b_1 = (sin_p * _e69.x);
@@ -7351,96 +7279,96 @@ fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: Ai
             let _e90 = big_b_1;
             let _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1f));
             start_3 = 0f;
-            if !(inside_4) {
+            if !(inside_3) {
                 start_3 = max((mid_3 - _e97), 0f);
             }
             let to = (mid_3 + _e97);
             let _e105 = start_3;
-            let graded_7 = max(scale_1, _e105);
+            let graded_8 = max(scale_1, _e105);
             let _e107 = start_3;
-            let _e110 = airlight_atan(((to - _e107) / graded_7));
+            let _e110 = airlight_atan(((to - _e107) / graded_8));
             let c_21 = (0.5f * _e110);
             let hw_6 = (0.5f * _e110);
             around = 0f;
             let _e117 = around;
             let _e120 = big_b_1;
             let _e121 = start_3;
-            let _e125 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e120, _e121, graded_7, (c_21 - (0.09501251f * hw_6)));
+            let _e125 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e120, _e121, graded_8, (c_21 - (0.09501251f * hw_6)));
             around = (_e117 + ((0.1894506f * hw_6) * _e125));
             let _e128 = around;
             let _e131 = big_b_1;
             let _e132 = start_3;
-            let _e136 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e131, _e132, graded_7, (c_21 + (0.09501251f * hw_6)));
+            let _e136 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e131, _e132, graded_8, (c_21 + (0.09501251f * hw_6)));
             around = (_e128 + ((0.1894506f * hw_6) * _e136));
             let _e139 = around;
             let _e142 = big_b_1;
             let _e143 = start_3;
-            let _e147 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e142, _e143, graded_7, (c_21 - (0.28160354f * hw_6)));
+            let _e147 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e142, _e143, graded_8, (c_21 - (0.28160354f * hw_6)));
             around = (_e139 + ((0.18260342f * hw_6) * _e147));
             let _e150 = around;
             let _e153 = big_b_1;
             let _e154 = start_3;
-            let _e158 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e153, _e154, graded_7, (c_21 + (0.28160354f * hw_6)));
+            let _e158 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e153, _e154, graded_8, (c_21 + (0.28160354f * hw_6)));
             around = (_e150 + ((0.18260342f * hw_6) * _e158));
             let _e161 = around;
             let _e164 = big_b_1;
             let _e165 = start_3;
-            let _e169 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e164, _e165, graded_7, (c_21 - (0.45801678f * hw_6)));
+            let _e169 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e164, _e165, graded_8, (c_21 - (0.45801678f * hw_6)));
             around = (_e161 + ((0.16915652f * hw_6) * _e169));
             let _e172 = around;
             let _e175 = big_b_1;
             let _e176 = start_3;
-            let _e180 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e175, _e176, graded_7, (c_21 + (0.45801678f * hw_6)));
+            let _e180 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e175, _e176, graded_8, (c_21 + (0.45801678f * hw_6)));
             around = (_e172 + ((0.16915652f * hw_6) * _e180));
             let _e183 = around;
             let _e186 = big_b_1;
             let _e187 = start_3;
-            let _e191 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e186, _e187, graded_7, (c_21 - (0.61787623f * hw_6)));
+            let _e191 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e186, _e187, graded_8, (c_21 - (0.61787623f * hw_6)));
             around = (_e183 + ((0.14959599f * hw_6) * _e191));
             let _e194 = around;
             let _e197 = big_b_1;
             let _e198 = start_3;
-            let _e202 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e197, _e198, graded_7, (c_21 + (0.61787623f * hw_6)));
+            let _e202 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e197, _e198, graded_8, (c_21 + (0.61787623f * hw_6)));
             around = (_e194 + ((0.14959599f * hw_6) * _e202));
             let _e205 = around;
             let _e208 = big_b_1;
             let _e209 = start_3;
-            let _e213 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e208, _e209, graded_7, (c_21 - (0.7554044f * hw_6)));
+            let _e213 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e208, _e209, graded_8, (c_21 - (0.7554044f * hw_6)));
             around = (_e205 + ((0.12462897f * hw_6) * _e213));
             let _e216 = around;
             let _e219 = big_b_1;
             let _e220 = start_3;
-            let _e224 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e219, _e220, graded_7, (c_21 + (0.7554044f * hw_6)));
+            let _e224 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e219, _e220, graded_8, (c_21 + (0.7554044f * hw_6)));
             around = (_e216 + ((0.12462897f * hw_6) * _e224));
             let _e227 = around;
             let _e230 = big_b_1;
             let _e231 = start_3;
-            let _e235 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e230, _e231, graded_7, (c_21 - (0.8656312f * hw_6)));
+            let _e235 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e230, _e231, graded_8, (c_21 - (0.8656312f * hw_6)));
             around = (_e227 + ((0.09515851f * hw_6) * _e235));
             let _e238 = around;
             let _e241 = big_b_1;
             let _e242 = start_3;
-            let _e246 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e241, _e242, graded_7, (c_21 + (0.8656312f * hw_6)));
+            let _e246 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e241, _e242, graded_8, (c_21 + (0.8656312f * hw_6)));
             around = (_e238 + ((0.09515851f * hw_6) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
             let _e253 = start_3;
-            let _e257 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e252, _e253, graded_7, (c_21 - (0.944575f * hw_6)));
+            let _e257 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e252, _e253, graded_8, (c_21 - (0.944575f * hw_6)));
             around = (_e249 + ((0.062253524f * hw_6) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
             let _e264 = start_3;
-            let _e268 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e263, _e264, graded_7, (c_21 + (0.944575f * hw_6)));
+            let _e268 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e263, _e264, graded_8, (c_21 + (0.944575f * hw_6)));
             around = (_e260 + ((0.062253524f * hw_6) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
             let _e275 = start_3;
-            let _e279 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e274, _e275, graded_7, (c_21 - (0.9894009f * hw_6)));
+            let _e279 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e274, _e275, graded_8, (c_21 - (0.9894009f * hw_6)));
             around = (_e271 + ((0.02715246f * hw_6) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
             let _e286 = start_3;
-            let _e290 = airlight_sphere_lobe_node(s_44, cap_3, sign_2, cos_p_1, _e285, _e286, graded_7, (c_21 + (0.9894009f * hw_6)));
+            let _e290 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e285, _e286, graded_8, (c_21 + (0.9894009f * hw_6)));
             around = (_e282 + ((0.02715246f * hw_6) * _e290));
             let _e293 = sum_13;
             let _e294 = wpsi;
@@ -7456,16 +7384,16 @@ fn airlight_sphere_about_lobe(s_44: AirlightScene, a_26: AirlightArea, cap_3: Ai
     return _e301;
 }
 
-fn airlight_sphere(s_45: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_sphere(s_46: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_8: u32 = 0u;
+    var local_184: bool;
     var local_185: bool;
     var local_186: bool;
     var local_187: bool;
     var local_188: bool;
-    var local_189: bool;
 
     let v_11 = (a_27.c - x_26);
     let _e5 = airlight_safe_length(v_11);
@@ -7487,36 +7415,36 @@ fn airlight_sphere(s_45: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
             let c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_185 = (lobe_5.y > 0f);
+                local_184 = (lobe_5.y > 0f);
+            } else {
+                local_184 = false;
+            }
+            let _e57 = local_184;
+            if _e57 {
+                local_185 = (lobe_5.y < (_e23 + _e23));
             } else {
                 local_185 = false;
             }
-            let _e57 = local_185;
-            if _e57 {
-                local_186 = (lobe_5.y < (_e23 + _e23));
-            } else {
-                local_186 = false;
-            }
-            let _e64 = local_186;
+            let _e64 = local_185;
             if _e64 {
                 if !((c_22 > cap_4.cos_a)) {
                     if (c_22 > -(cap_4.cos_a)) {
                         let _e77 = airlight_acos(c_22);
-                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_189 = false;
+                        local_188 = false;
                     }
-                    let _e84 = local_189;
-                    local_188 = _e84;
+                    let _e84 = local_188;
+                    local_187 = _e84;
                 } else {
-                    local_188 = true;
+                    local_187 = true;
                 }
-                let _e86 = local_188;
-                local_187 = _e86;
+                let _e86 = local_187;
+                local_186 = _e86;
             } else {
-                local_187 = false;
+                local_186 = false;
             }
-            let _e88 = local_187;
+            let _e88 = local_186;
             if _e88 {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -7533,48 +7461,48 @@ fn airlight_sphere(s_45: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_45, a_27, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_46, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_45, a_27, cap_4);
+    let _e101 = airlight_sphere_cap(s_46, a_27, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_46: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
-    switch s_46.light_shape {
+fn airlight_emitter_radiance(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
+    switch s_47.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_46, a_28, x_27);
+            let _e4 = airlight_disc(s_47, a_28, x_27);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_46, a_28, x_27);
+            let _e5 = airlight_parallelogram(s_47, a_28, x_27);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_46, a_28, x_27);
+            let _e6 = airlight_sphere(s_47, a_28, x_27);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_47: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_48: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along = ((a_29.h_eff * _e3.y) / _e3.x);
     let t_12 = (a_29.x_h + along);
-    let fade = exp(min((-(s_47.sigma_t) * max(((a_29.x_h - s_47.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_47, a_29, (s_47.origin + (t_12 * a_29.d)));
+    let fade = exp(min((-(s_48.sigma_t) * max(((a_29.x_h - s_48.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_48, a_29, (s_48.origin + (t_12 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_48: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_49: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_8: f32;
     var gauss_1: f32;
     var j_9: u32;
-    var local_190: bool;
+    var local_189: bool;
 
-    let _e1 = airlight_area(s_48);
+    let _e1 = airlight_area(s_49);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7607,21 +7535,21 @@ fn airlight_area_light(s_48: AirlightScene) -> AirlightResult {
                 }
                 {
                     let _e49 = j_9;
-                    let node_3 = _e8[(_e49 / 2u)];
+                    let node_4 = _e8[(_e49 / 2u)];
                     let _e59 = j_9;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_9;
-                        local_190 = (_e66 < 14u);
+                        local_189 = (_e66 < 14u);
                     } else {
-                        local_190 = false;
+                        local_189 = false;
                     }
-                    let _e70 = local_190;
-                    let x_36 = select((c_23 + (hw_7 * node_3.x)), (c_23 - (hw_7 * node_3.x)), _e70);
-                    let _e72 = airlight_area_node(s_48, _e1, x_36);
+                    let _e70 = local_189;
+                    let x_36 = select((c_23 + (hw_7 * node_4.x)), (c_23 - (hw_7 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_49, _e1, x_36);
                     let _e73 = k_8;
-                    k_8 = (_e73 + (node_3.y * _e72));
+                    k_8 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
-                    gauss_1 = (_e77 + (node_3.z * _e72));
+                    gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
                     let _e82 = j_9;
@@ -7651,43 +7579,43 @@ fn airlight_area_light(s_48: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_48.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_49.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_49: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_area(s_50: AirlightScene) -> AirlightResult {
+    var local_190: bool;
     var local_191: bool;
-    var local_192: bool;
 
-    let _e1 = airlight_valid(s_49);
+    let _e1 = airlight_valid(s_50);
     if !(!(_e1)) {
-        local_191 = (s_49.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_190 = (s_50.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_190 = true;
+    }
+    let _e10 = local_190;
+    if !(_e10) {
+        local_191 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_191 = true;
     }
-    let _e10 = local_191;
-    if !(_e10) {
-        local_192 = (s_49.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_192 = true;
-    }
-    let _e18 = local_192;
+    let _e18 = local_191;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_49);
+    let _e22 = airlight_area_light(s_50);
     return _e22;
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_193: bool;
+    var local_192: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_193 = true;
+        local_192 = true;
     }
-    let _e11 = local_193;
+    let _e11 = local_192;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -7696,26 +7624,26 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_194: bool;
-    var g_29: AirlightCanonical;
+    var local_193: bool;
+    var g_28: AirlightCanonical;
 
     let p_8 = n_3.scene;
     let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_8.dir);
-        local_194 = _e11;
+        local_193 = _e11;
     } else {
-        local_194 = false;
+        local_193 = false;
     }
-    let _e13 = local_194;
+    let _e13 = local_193;
     if _e13 {
-        g_29 = n_3.canonical;
+        g_28 = n_3.canonical;
         if !(n_3.exact) {
             let _e18 = airlight_canonical(p_8);
             let _e19 = airlight_refined(p_8, _e18);
-            g_29 = _e19;
+            g_28 = _e19;
         }
-        let _e20 = g_29;
+        let _e20 = g_28;
         let _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
@@ -7730,60 +7658,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_50: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_point(s_51: AirlightScene) -> AirlightResult {
+    var local_194: bool;
     var local_195: bool;
-    var local_196: bool;
-
-    let _e1 = airlight_valid(s_50);
-    if !(!(_e1)) {
-        local_195 = (s_50.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_195 = true;
-    }
-    let _e10 = local_195;
-    if !(_e10) {
-        local_196 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_196 = true;
-    }
-    let _e18 = local_196;
-    if _e18 {
-        return AirlightResult(0f, 1u);
-    }
-    let _e22 = airlight_point_integral(s_50);
-    return _e22;
-}
-
-fn airlight_in_scatter_route(s_51: AirlightScene) -> AirlightResult {
-    var local_197: bool;
-    var local_198: bool;
 
     let _e1 = airlight_valid(s_51);
     if !(!(_e1)) {
-        local_197 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_197 = true;
+        local_194 = true;
     }
-    let _e10 = local_197;
+    let _e10 = local_194;
     if !(_e10) {
-        local_198 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_198 = true;
+        local_195 = true;
     }
-    let _e18 = local_198;
+    let _e18 = local_195;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_51);
-    let _e23 = airlight_refined(s_51, _e22);
-    let _e24 = airlight_limits(s_51, _e23);
+    let _e22 = airlight_point_integral(s_51);
+    return _e22;
+}
+
+fn airlight_in_scatter_route(s_52: AirlightScene) -> AirlightResult {
+    var local_196: bool;
+    var local_197: bool;
+
+    let _e1 = airlight_valid(s_52);
+    if !(!(_e1)) {
+        local_196 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_196 = true;
+    }
+    let _e10 = local_196;
+    if !(_e10) {
+        local_197 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_197 = true;
+    }
+    let _e18 = local_197;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_52);
+    let _e23 = airlight_refined(s_52, _e22);
+    let _e24 = airlight_limits(s_52, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_51);
+    let _e29 = airlight_isotropic_scene(s_52);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_51, _e23);
+        let _e31 = airlight_angle_route(s_52, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -7792,24 +7720,24 @@ fn airlight_in_scatter_route(s_51: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_52: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_53: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_9: f32;
     var gauss_2: f32;
     var j_10: u32;
-    var local_199: bool;
+    var local_198: bool;
     var f: f32;
-    var local_200: bool;
+    var local_199: bool;
 
-    let _e1 = airlight_valid(s_52);
+    let _e1 = airlight_valid(s_53);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_52.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_53.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_52);
+    let _e12 = airlight_outer(s_53);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7844,29 +7772,29 @@ fn airlight_in_scatter(s_52: AirlightScene) -> AirlightResult {
                 }
                 {
                     let _e64 = j_10;
-                    let node_4 = _e25[(_e64 / 2u)];
+                    let node_5 = _e25[(_e64 / 2u)];
                     let _e74 = j_10;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_10;
-                        local_199 = (_e81 < 6u);
+                        local_198 = (_e81 < 6u);
                     } else {
-                        local_199 = false;
+                        local_198 = false;
                     }
-                    let _e85 = local_199;
-                    let w_11 = select((c_24 + (hw_8 * node_4.x)), (c_24 - (hw_8 * node_4.x)), _e85);
-                    let _e87 = airlight_outer_node(s_52, _e12, w_11);
+                    let _e85 = local_198;
+                    let w_11 = select((c_24 + (hw_8 * node_5.x)), (c_24 - (hw_8 * node_5.x)), _e85);
+                    let _e87 = airlight_outer_node(s_53, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_52.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_200 = (s_52.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_53.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_199 = (s_53.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_200 = false;
+                            local_199 = false;
                         }
-                        let _e106 = local_200;
+                        let _e106 = local_199;
                         if _e106 {
                             return _e93;
                         }
@@ -7874,10 +7802,10 @@ fn airlight_in_scatter(s_52: AirlightScene) -> AirlightResult {
                     }
                     let _e110 = k_9;
                     let _e112 = f;
-                    k_9 = (_e110 + (node_4.y * _e112));
+                    k_9 = (_e110 + (node_5.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
-                    gauss_2 = (_e115 + (node_4.z * _e117));
+                    gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
                     let _e121 = j_10;

@@ -2672,6 +2672,23 @@ fn airlight_emission_scale(s: AirlightScene) -> f32 {
     return 2.0 / sqrt(f32(p - 1u));
 }
 
+/// outer.rs `graded_radial`'s rule on [0, top]: (the range of ϑ, the scale s) where the emission
+/// lobe's scale s is below `top`, (top, 0) where the nodes are not graded.
+fn airlight_graded_range(s: AirlightScene, top: f32) -> vec2<f32> {
+    let scale = airlight_emission_scale(s);
+    if (scale > 0.0 && scale < top) { return vec2<f32>(airlight_atan(top / scale), scale); }
+    return vec2<f32>(top, 0.0);
+}
+
+/// A node ϑ of that rule as (x, dx/dϑ): (s tan ϑ, s/cos²ϑ) for s = `graded` > 0, else (ϑ, 1).
+fn airlight_graded_node(graded: f32, node: f32) -> vec2<f32> {
+    if (graded > 0.0) {
+        let t = airlight_cos_sin_half_turn(node);
+        return vec2<f32>(graded * t.y / t.x, graded / (t.x * t.x));
+    }
+    return vec2<f32>(node, 1.0);
+}
+
 /// Whether a flat emitter is taken about the foot `depth` inside its edge at the height z
 /// (outer.rs `Light::far_from_edge`): depth ≥ EDGE_REACH·z·min(1, s).
 fn airlight_far_from_edge(s: AirlightScene, depth: f32, z: f32) -> bool {
@@ -2830,14 +2847,8 @@ fn airlight_above(z: f32, off: vec2<f32>) -> AirlightAbove {
 /// One node of `airlight_flat_radial`: L_e c^{p−1} P e^{−σt d} z/d³ r dr/dγ at r = ρ₀ tan γ along
 /// `e`, γ the node, or s tan of it where the rule is graded by s = `graded` > 0 (times s/cos²).
 fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, graded: f32, node: f32) -> f32 {
-    var g = node;
-    var jacobian = 1.0;
-    if (graded > 0.0) {
-        let t = airlight_cos_sin_half_turn(node);
-        g = graded * t.y / t.x;
-        jacobian = graded / (t.x * t.x);
-    }
-    let cs = airlight_cos_sin_half_turn(g);
+    let at = airlight_graded_node(graded, node);
+    let cs = airlight_cos_sin_half_turn(at.x);
     let r = above.rho0 * cs.y / cs.x;
     let dr = above.rho0 / (cs.x * cs.x);
     let p = above.off + r * e;
@@ -2846,22 +2857,17 @@ fn airlight_flat_node(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e
     let inv = 1.0 / dist;
     let cos = z * inv;
     let phase = airlight_area_phase(s, (p.x * a.dirs.x + p.y * a.dirs.y - z * a.dirs.z) * inv);
-    return jacobian * airlight_emitted(s, cos) * exp(min(-s.sigma_t * dist, 0.0)) * phase * cos * inv * inv * r * dr;
+    return at.y * airlight_emitted(s, cos) * exp(min(-s.sigma_t * dist, 0.0)) * phase * cos * inv * inv * r * dr;
 }
 
 /// ∫ L_e c^{p−1} P e^{−σt d} z/d³ r dr along the direction `e` from q* out to `r_max`, in γ
 /// (outer.rs `radial`): Gauss–Legendre RADIAL, written out, graded towards γ = 0 by an emission
 /// lobe narrower than the range (outer.rs `graded_radial`).
 fn airlight_flat_radial(s: AirlightScene, a: AirlightArea, above: AirlightAbove, e: vec2<f32>, r_max: f32) -> f32 {
-    var top = airlight_atan(r_max / above.rho0);
-    var graded = airlight_emission_scale(s);
-    if (graded > 0.0 && graded < top) {
-        top = airlight_atan(top / graded);
-    } else {
-        graded = 0.0;
-    }
-    let c = 0.5 * top;
-    let hw = 0.5 * top;
+    let range = airlight_graded_range(s, airlight_atan(r_max / above.rho0));
+    let graded = range.y;
+    let c = 0.5 * range.x;
+    let hw = 0.5 * range.x;
     var sum = 0.0;
 @RADIAL_FLAT@    return sum;
 }
@@ -3039,13 +3045,14 @@ fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
 
 /// A phase lobe pointing at a flat emitter (outer.rs `FlatLobe`): its direction p = sign·d in
 /// the plane's coordinates (p·n < 0), its radial scale (0: none), x's distance L from the point
-/// q_L where p meets the plane, and q_L about the foot.
+/// q_L where p meets the plane, q_L about the foot, and whether it is on the emitter.
 struct AirlightFlatLobe {
     p: vec3<f32>,
     sign: f32,
     scale: f32,
     l: f32,
     q: vec2<f32>,
+    on_emitter: bool,
 }
 
 /// The phase lobe to take a flat emitter about (outer.rs `flat_lobe`): one narrower than the
@@ -3062,12 +3069,13 @@ fn airlight_flat_lobe(a: AirlightArea, z: f32, o: AirlightOutline, centre: vec2<
             let near = airlight_outline_nearest(o, q);
             let to_near = vec3<f32>(near, -z);
             let cos = min(dot(p, to_near) / sqrt(dot(to_near, to_near)), 1.0);
-            if (all(near == q) || airlight_acos(cos) < AIRLIGHT_LOBE_REACH * lobe.y) {
-                return AirlightFlatLobe(p, lobe.x, lobe.y, l, q);
+            let on_emitter = all(near == q);
+            if (on_emitter || airlight_acos(cos) < AIRLIGHT_LOBE_REACH * lobe.y) {
+                return AirlightFlatLobe(p, lobe.x, lobe.y, l, q, on_emitter);
             }
         }
     }
-    return AirlightFlatLobe(vec3<f32>(0.0), 1.0, 0.0, 0.0, vec2<f32>(0.0));
+    return AirlightFlatLobe(vec3<f32>(0.0), 1.0, 0.0, 0.0, vec2<f32>(0.0), false);
 }
 
 /// (cos x, sin x) for any x: reduced to [−π, π] by 2π (an absolute error of about ε|x|), then
@@ -3135,9 +3143,7 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
     let q = lobe.q;
     var sum = 0.0;
     if (o.radius > 0.0) {
-        let d = o.corners[0] - q;
-        let dq = sqrt(d.x * d.x + d.y * d.y);
-        if (dq <= o.radius) {
+        if (lobe.on_emitter) {
             for (var i = 0u; i < 32u; i++) {
                 let az = airlight_azimuths(true, i);
                 sum += az.z * airlight_flat_lobe_along(s, z, o, lobe, u, v, az.xy);
@@ -3145,6 +3151,8 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
             return sum;
         }
         // the tangents from q_L, at ±β from the centre's direction
+        let d = o.corners[0] - q;
+        let dq = sqrt(d.x * d.x + d.y * d.y);
         let sb = o.radius / dq;
         let cb = sqrt((dq - o.radius) * (dq + o.radius)) / dq;
         let mid = airlight_lobe_azimuth(u, v, d);
@@ -3159,15 +3167,14 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         return sum;
     }
     // the corners' azimuths about the centre's (outside) or absolute (inside), in order
-    let inside = all(airlight_outline_nearest(o, q) == q);
     var mid = 0.0;
-    if (!inside) { mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q); }
+    if (!lobe.on_emitter) { mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q); }
     let psi = airlight_sort4(vec4<f32>(
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[0] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[1] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[2] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[3] - q) - mid)));
-    let wedges = select(3u, 4u, inside);
+    let wedges = select(3u, 4u, lobe.on_emitter);
     for (var i = 0u; i < wedges; i++) {
         let first = mid + psi[i];
         let last = mid + select(psi[min(i + 1u, 3u)], psi.x + 2.0 * AIRLIGHT_PI, i == 3u);
@@ -3194,14 +3201,9 @@ struct AirlightCap {
 /// One node φ of the cap rule (outer.rs `sphere`): (the φ-weight's factor w L_e cos^{p−1} φ
 /// sin²α sin φ cos φ / cos β e^{−σt d}, cos β, sin β).
 fn airlight_cap_row(s: AirlightScene, cap: AirlightCap, graded: f32, node: f32, weight: f32) -> vec3<f32> {
-    var phi = node;
-    var w = weight;
-    if (graded > 0.0) {
-        let t = airlight_cos_sin_half_turn(node);
-        phi = graded * t.y / t.x;
-        w = weight * graded / (t.x * t.x);
-    }
-    let cs = airlight_cos_sin_half_turn(phi);
+    let at = airlight_graded_node(graded, node);
+    let w = weight * at.y;
+    let cs = airlight_cos_sin_half_turn(at.x);
     let sb = cap.sin_a * cs.y;
     let cb = sqrt((1.0 - sb) * (1.0 + sb));
     let dist = max(cap.dc * cb - cap.radius * cs.x, 0.0);
@@ -3218,15 +3220,10 @@ fn airlight_sphere_cap(s: AirlightScene, a: AirlightArea, cap: AirlightCap) -> f
     let ad = dot(cap.a, a.d);
     let e1d = dot(e1, a.d);
     let e2d = dot(e2, a.d);
-    var graded = airlight_emission_scale(s);
-    var top = 0.5 * AIRLIGHT_PI;
-    if (graded > 0.0 && graded < top) {
-        top = airlight_atan(top / graded);
-    } else {
-        graded = 0.0;
-    }
-    let c = 0.5 * top;
-    let hw = 0.5 * top;
+    let range = airlight_graded_range(s, 0.5 * AIRLIGHT_PI);
+    let graded = range.y;
+    let c = 0.5 * range.x;
+    let hw = 0.5 * range.x;
     // zeros written out (naga's HLSL back end emits an array's zero value as invalid HLSL)
     var rows = array<vec3<f32>, @RADIAL_NODES@>(@ZEROS_RADIAL_ROWS@);
 @RADIAL_CAP_ROWS@    var sum = 0.0;

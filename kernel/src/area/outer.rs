@@ -394,13 +394,14 @@ impl<T: Real> Outline<T> {
 
 /// A phase lobe pointing at a flat emitter: its direction `p = sign·d` in the plane's coordinates
 /// (`p·n < 0`, towards the plane), its radial scale `s` ([`lobes`]), `x`'s distance `L` from the
-/// point `q_L` where `p` meets the plane, and `q_L` (about the foot).
+/// point `q_L` where `p` meets the plane, `q_L` (about the foot), and whether it is on the emitter.
 struct FlatLobe<T> {
     p: [T; 3],
     sign: T,
     scale: T,
     l: T,
     q: (T, T),
+    on_emitter: bool,
 }
 
 /// The phase lobe to take a flat emitter about, as a sphere's (`sphere_about_lobe`): one narrower
@@ -419,7 +420,8 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
         let near = outline.nearest(q);
         let to_near = [near.0, near.1, -z];
         let cos = (dot(p, to_near) / length(to_near)).min(T::one());
-        (near == q || cos.acos() < T::lit(LOBE_REACH) * scale).then_some(FlatLobe { p, sign, scale, l, q })
+        let on_emitter = near == q;
+        (on_emitter || cos.acos() < T::lit(LOBE_REACH) * scale).then_some(FlatLobe { p, sign, scale, l, q, on_emitter })
     })
 }
 
@@ -434,7 +436,7 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
 /// parallelogram's corners seen from `q_L` (its chords' ends stay on one edge each) by
 /// [`TRIANGLE_AZIMUTHAL`].
 fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, outline: &Outline<T>, lobe: &FlatLobe<T>) -> T {
-    let FlatLobe { p, sign, scale, l, q } = *lobe;
+    let FlatLobe { p, sign, scale, l, q, on_emitter } = *lobe;
     let (u, v) = basis(p);
     let pn = -p[2];
     // a direction in the plane as the azimuth ψ of the half-plane it lies in
@@ -462,14 +464,14 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
     let mut sum = T::zero();
     match *outline {
         Outline::Circle { c, radius } => {
-            let (dx, dy) = (c.0 - q.0, c.1 - q.1);
-            let dq = dx.hypot(dy);
-            if dq <= radius {
+            if on_emitter {
                 for &(cos, sin, w) in &light.azimuths.circle {
                     sum = sum + w * along(cos, sin);
                 }
             } else {
                 // the tangents from q_L, at ±β from the centre's direction
+                let (dx, dy) = (c.0 - q.0, c.1 - q.1);
+                let dq = dx.hypot(dy);
                 let (sb, cb) = (radius / dq, ((dq - radius) * (dq + radius)).sqrt() / dq);
                 let mid = azimuth((dx, dy));
                 let ends = [(dx * cb - dy * sb, dy * cb + dx * sb), (dx * cb + dy * sb, dy * cb - dx * sb)].map(|e| wrap(azimuth(e) - mid));
@@ -482,11 +484,10 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         }
         Outline::Polygon(corners) => {
             // the corners' azimuths about the centre's (outside) or absolute (inside), in order
-            let inside = outline.nearest(q) == q;
-            let mid = if inside { T::zero() } else { azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1)) };
+            let mid = if on_emitter { T::zero() } else { azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1)) };
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
-            let wedges = if inside { 4 } else { 3 };
+            let wedges = if on_emitter { 4 } else { 3 };
             for i in 0..wedges {
                 let (from, to) = (psi[i], if i == 3 { psi[0] + T::PI() + T::PI() } else { psi[i + 1] });
                 each_node(&TRIANGLE_AZIMUTHAL, mid + from, mid + to, |a, w| {
