@@ -621,8 +621,8 @@ float2 airlight_cos_sin(float x)
 {
     float z_15 = (x * x);
     float c_8 = (1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (2.4801588e-5 + (z_15 * (-2.755732e-7 + (z_15 * (2.0876756e-9 + (z_15 * (-1.1470745e-11 + (z_15 * 4.7794773e-14))))))))))))))));
-    float s_54 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
-    return float2(c_8, (s_54 * x));
+    float s_55 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
+    return float2(c_8, (s_55 * x));
 }
 
 float2 airlight_cexp(float2 z_2)
@@ -683,10 +683,10 @@ float airlight_log1p(float x_2)
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_55 = (x_2 / (2.0 + x_2));
-    float z_17 = (s_55 * s_55);
+    float s_56 = (x_2 / (2.0 + x_2));
+    float z_17 = (s_56 * s_56);
     float sum_14 = ((((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0);
-    return ((2.0 * s_55) * sum_14);
+    return ((2.0 * s_56) * sum_14);
 }
 
 bool airlight_is_finite(float x_3)
@@ -770,9 +770,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_28 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    float y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_28 * x_28) + (y_5 * y_5)) < 1.0);
+    float x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_29 * x_29) + (y_6 * y_6)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -1239,8 +1239,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             if ((width_1 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_29 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
-            return ((x_29 * x_29) * (3.0 - (2.0 * x_29)));
+            float x_30 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            return ((x_30 * x_30) * (3.0 - (2.0 * x_30)));
         }
         default: {
             return 1.0;
@@ -1423,15 +1423,15 @@ float airlight_moment_gauss(AirlightHalf half_)
         {
             uint _e26 = j;
             float xi = nodes[min(uint(_e26), 3u)].x;
-            float y_6 = (yc + (hw * xi));
+            float y_7 = (yc + (hw * xi));
             dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi)) / (y_6 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_7 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_6 * y_6))));
+            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_7 * y_7))));
         }
     }
     float _e61 = m;
@@ -1530,10 +1530,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_30 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_30);
+            float x_31 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_31);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_30);
+                const float _e43 = airlight_log1p(x_31);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1685,8 +1685,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[6], uint i_3)
 {
-    float x_31 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_31) : x_31);
+    float x_32 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_32) : x_32);
 }
 
 typedef float airlight_ret_airlight_legendre[12];
@@ -1772,8 +1772,8 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_32 = (lambda / float((2u * k0_)));
-            float per_step = (x_32 * x_32);
+            float x_33 = (lambda / float((2u * k0_)));
+            float per_step = (x_33 * x_33);
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
@@ -2415,8 +2415,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_33 = (half_5.big_h * _e13);
-    return ((x_33 > 0.0) ? exp(-(x_33)) : 1.0);
+    float x_34 = (half_5.big_h * _e13);
+    return ((x_34 > 0.0) ? exp(-(x_34)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -2595,10 +2595,10 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
         {
             uint _e28 = i_7;
             const float _e29 = airlight_node(_e8, _e28);
-            float y_7 = (yc_1 + (r_9 * _e29));
-            float weight_2 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_7 * b_5)));
-            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_7);
-            float over_1 = (1.0 / (1.0 + (y_7 * y_7)));
+            float y_8 = (yc_1 + (r_9 * _e29));
+            float weight_2 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_8 * b_5)));
+            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_8);
+            float over_1 = (1.0 / (1.0 + (y_8 * y_8)));
             uint _e47 = i_7;
             samples_1[min(uint(_e47), 11u)] = ((_e41 * over_1) * weight_2);
             float _e51 = f_max_2;
@@ -2774,10 +2774,10 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
         {
             uint _e22 = i_8;
             const float _e23 = airlight_node(_e6, _e22);
-            float y_8 = (yc_2 + (r_10 * _e23));
-            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_8);
+            float y_9 = (yc_2 + (r_10 * _e23));
+            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_9);
             uint _e27 = i_8;
-            samples_2[min(uint(_e27), 11u)] = (_e26 / (1.0 + (y_8 * y_8)));
+            samples_2[min(uint(_e27), 11u)] = (_e26 / (1.0 + (y_9 * y_9)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
@@ -3084,13 +3084,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     const float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_34 = (abs(alpha) + abs(beta));
+    float x_35 = (abs(alpha) + abs(beta));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_34) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_35) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -3100,7 +3100,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_34) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_35) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -3110,7 +3110,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_34) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_35) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -3120,7 +3120,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_34) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_35) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -3130,7 +3130,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_34) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_35) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -3140,7 +3140,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_34) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_35) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -3150,7 +3150,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_34) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_35) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -3160,7 +3160,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_34) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_35) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -3170,7 +3170,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_34) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_35) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -3180,7 +3180,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_34) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_35) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -3190,7 +3190,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_34) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_35) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -3200,7 +3200,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_34) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_35) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -3532,6 +3532,12 @@ float airlight_atan2_upper(float y_3, float x_8)
     return (near_axis ? (positive ? _e9 : (AIRLIGHT_PI - _e9)) : (positive ? (1.5707964 - _e9) : (1.5707964 + _e9)));
 }
 
+float airlight_atan2_(float y_4, float x_9)
+{
+    const float _e8 = airlight_atan2_upper(abs(y_4), x_9);
+    return (((y_4 >= 0.0) ? 1.0 : -1.0) * _e8);
+}
+
 float airlight_bounded(float a_11)
 {
     const float _e1 = airlight_hypot_one(a_11);
@@ -3548,9 +3554,9 @@ float airlight_angle_y(float u)
     return (u + _e5);
 }
 
-float airlight_axis_excess(float x_9)
+float airlight_axis_excess(float x_10)
 {
-    return (x_9 + sqrt((x_9 * (2.0 + x_9))));
+    return (x_10 + sqrt((x_10 * (2.0 + x_10))));
 }
 
 float airlight_angle_floor(float side_1, float gap_1, float psi0_, float psi1_, float inv_hw, float step_1)
@@ -3585,9 +3591,9 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
     return (e_9 * inv_h);
 }
 
-float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_10, float j_1)
+float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_11, float j_1)
 {
-    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_10))) * j_1);
+    float plain_1 = (((((2.0 * sigma_s_1) * intensity_3) / h_2) * exp(-(x_11))) * j_1);
     const bool _e13 = airlight_is_finite(plain_1);
     if (_e13) {
         return plain_1;
@@ -3595,7 +3601,7 @@ float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_1
     if (!((abs(j_1) > 0.0))) {
         return 0.0;
     }
-    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_10) + log(abs(j_1)))));
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_11) + log(abs(j_1)))));
 }
 
 float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
@@ -3621,7 +3627,7 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     uint i_11 = 0u;
     float m_3[12] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     bool local_28 = (bool)0;
-    float x_11 = 0.0;
+    float x_12 = 0.0;
 
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return float2(0.0, 0.0);
@@ -3792,8 +3798,8 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             float far_pole = ((cs_2 * cs_2) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_9 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
-            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_9 - _e26)), 0.0))) : 0.0);
+            float y_10 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
+            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
             const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             const float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
@@ -3839,9 +3845,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     }
     if ((s_11.sigma_t > 0.0)) {
         const float _e365 = airlight_hypot_one(u0_);
-        x_11 = (s_11.sigma_t * (h_3 * _e365));
+        x_12 = (s_11.sigma_t * (h_3 * _e365));
     }
-    float _e370 = x_11;
+    float _e370 = x_12;
     float _e371 = value_1;
     const float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5));
     return float2(1.0, _e375);
@@ -3891,10 +3897,10 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     return float2(_e63, _e64);
 }
 
-float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_4)
+float airlight_cosine(AirlightCanonical g_14, float sigma_10, float y_5)
 {
-    float y2_1 = (y_4 * y_4);
-    return ((((1.0 - y2_1) * (sigma_10 * g_14.d_el)) + ((y_4 + y_4) * g_14.d_c)) / (1.0 + y2_1));
+    float y2_1 = (y_5 * y_5);
+    return ((((1.0 - y2_1) * (sigma_10 * g_14.d_el)) + ((y_5 + y_5) * g_14.d_c)) / (1.0 + y2_1));
 }
 
 bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11, float bound, float lo_1, float hi_1)
@@ -4323,7 +4329,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     bool infinite_1 = true;
     bool local_43 = (bool)0;
     bool local_44 = (bool)0;
-    float x_12 = 0.0;
+    float x_13 = 0.0;
 
     float h_4 = g_18.h;
     float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
@@ -4365,13 +4371,13 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     AirlightHalf half_17 = ConstructAirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     const bool _e55 = airlight_is_finite(_e8);
     if (_e55) {
-        x_12 = (big_h_3 * _e8);
+        x_13 = (big_h_3 * _e8);
     } else {
         if ((s_14.sigma_t > 0.0)) {
-            x_12 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+            x_13 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    float _e66 = x_12;
+    float _e66 = x_13;
     const float2 _e67 = airlight_moment_zero_weighted(half_17, _e66);
     const float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
     const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -5311,9 +5317,9 @@ AirlightCanonical airlight_canonical(AirlightScene s_20)
     return airlightcanonical;
 }
 
-float airlight_opaque(float x_13, uint key)
+float airlight_opaque(float x_14, uint key)
 {
-    return asfloat((asuint(x_13) ^ key));
+    return asfloat((asuint(x_14) ^ key));
 }
 
 float2 airlight_two_sum(float a_13, float b_10, uint key_1)
@@ -5326,9 +5332,9 @@ float2 airlight_two_sum(float a_13, float b_10, uint key_1)
     return float2(_e4, (_e12 ? e_10 : 0.0));
 }
 
-float airlight_split_high(float x_14)
+float airlight_split_high(float x_15)
 {
-    return asfloat(((asuint(x_14) + 2048u) & 4294963200u));
+    return asfloat(((asuint(x_15) + 2048u) & 4294963200u));
 }
 
 float2 airlight_two_product(float a_14, float b_11, uint key_2)
@@ -6029,11 +6035,11 @@ AirlightAdaptive airlight_adaptive_step(AirlightAdaptive state, float kronrod, f
     return airlightadaptive_1;
 }
 
-float airlight_asinh(float x_15)
+float airlight_asinh(float x_16)
 {
     float r_4 = (float)0;
 
-    float a_38 = abs(x_15);
+    float a_38 = abs(x_16);
     r_4 = (AIRLIGHT_LN_2_ + log(a_38));
     if ((a_38 <= 4096.0)) {
         const float _e17 = airlight_log1p((a_38 + ((a_38 * a_38) / (1.0 + sqrt((1.0 + (a_38 * a_38)))))));
@@ -6041,7 +6047,7 @@ float airlight_asinh(float x_15)
     }
     float _e18 = r_4;
     float _e19 = r_4;
-    return ((x_15 < 0.0) ? -(_e19) : _e18);
+    return ((x_16 < 0.0) ? -(_e19) : _e18);
 }
 
 float airlight_to_w(AirlightOuter g_21, float s_22)
@@ -6053,20 +6059,20 @@ float airlight_to_w(AirlightOuter g_21, float s_22)
     return s_22;
 }
 
-float2 airlight_cos_sin_half_turn(float x_16)
+float2 airlight_cos_sin_half_turn(float x_17)
 {
-    float r_12 = (x_16 - 1.5707964);
+    float r_12 = (x_17 - 1.5707964);
     float z_18 = (r_12 * r_12);
     float cos_r = (1.0 - ((z_18 / 2.0) * (1.0 - ((z_18 / 12.0) * (1.0 - ((z_18 / 30.0) * (1.0 - ((z_18 / 56.0) * (1.0 - ((z_18 / 90.0) * (1.0 - ((z_18 / 132.0) * (1.0 - (z_18 / 182.0))))))))))))));
     float sin_r = (r_12 * (1.0 - ((z_18 / 6.0) * (1.0 - ((z_18 / 20.0) * (1.0 - ((z_18 / 42.0) * (1.0 - ((z_18 / 72.0) * (1.0 - ((z_18 / 110.0) * (1.0 - ((z_18 / 156.0) * (1.0 - (z_18 / 210.0)))))))))))))));
     return float2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_17)
+float airlight_acos(float x_18)
 {
-    float a_39 = abs(x_17);
+    float a_39 = abs(x_18);
     const float _e8 = airlight_atan(sqrt(((1.0 - a_39) / (1.0 + a_39))));
-    return ((x_17 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_23)
@@ -6209,22 +6215,22 @@ AirlightOuter airlight_surface(AirlightScene s_25)
         const float3 _e105 = airlight_normalize(s_25.brdf_view);
         const float3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         float3 _e112 = u_1;
-        float x_35 = dot(_e111, _e112);
+        float x_36 = dot(_e111, _e112);
         float3 _e114 = u_1;
-        float y_10 = dot(_e111, cross(l_3, _e114));
+        float y_11 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_35 * x_35) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_36 * x_36) + (y_11 * y_11)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         const float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            const float _e140 = airlight_angle(x_35, abs(y_10));
-            float phi_r = (((y_10 < 0.0) ? -1.0 : 1.0) * _e140);
+            const float _e140 = airlight_angle(x_36, abs(y_11));
+            float phi_r = (((y_11 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = float3(-(phi_r), (x_35 / _e145), (-(y_10) / _e149));
+            g_22.delta = float3(-(phi_r), (x_36 / _e145), (-(y_11) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -6435,11 +6441,11 @@ AirlightOuter airlight_surface(AirlightScene s_25)
     return airlightouter_4;
 }
 
-float airlight_lobe_at(AirlightLobe q_1, float x_18)
+float airlight_lobe_at(AirlightLobe q_1, float x_19)
 {
     bool local_142 = (bool)0;
 
-    const float2 _e4 = airlight_cos_sin((0.5 * x_18));
+    const float2 _e4 = airlight_cos_sin((0.5 * x_19));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
@@ -6470,12 +6476,12 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
     return (w_1 * _e22);
 }
 
-float airlight_arc_end(float x_19, float cut)
+float airlight_arc_end(float x_20, float cut)
 {
     float end_1 = (float)0;
     bool local_143 = (bool)0;
 
-    end_1 = x_19;
+    end_1 = x_20;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
         float _e6 = end_1;
@@ -6925,7 +6931,7 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1, AirlightCanon
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_20)
+AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_21)
 {
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
@@ -6945,8 +6951,8 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_36 = min(airlight_naga_f2u32(max(floor(x_20), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_20 - float(i_36));
+        uint i_36 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_21 - float(i_36));
         float a_41 = g_25.gamma[min(uint(i_36), 12u)];
         float b_19 = g_25.gamma[min(uint((i_36 + 1u)), 12u)];
         float w_8 = (b_19 - a_41);
@@ -7042,10 +7048,10 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         return airlightnode_2;
     }
     if ((s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_20;
+        at_1 = x_21;
         if ((g_25.scale > 0.0)) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
-            ds = (g_25.scale * cosh(x_20));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
+            ds = (g_25.scale * cosh(x_21));
         }
         float _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -7264,10 +7270,16 @@ float2 airlight_graded_node(float graded, float node)
     return float2(node, 1.0);
 }
 
-bool airlight_far_from_edge(AirlightScene s_32, float depth, float z_9)
+float airlight_narrowed(AirlightScene s_32, float length_)
 {
-    const float _e3 = airlight_emission_scale(s_32);
-    return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * ((_e3 > 0.0) ? min(_e3, 1.0) : 1.0)));
+    const float _e2 = airlight_emission_scale(s_32);
+    return (length_ * ((_e2 > 0.0) ? min(_e2, 1.0) : 1.0));
+}
+
+bool airlight_far_from_edge(AirlightScene s_33, float depth, float z_9)
+{
+    const float _e4 = airlight_narrowed(s_33, z_9);
+    return (depth >= (AIRLIGHT_EDGE_REACH * _e4));
 }
 
 float2 airlight_lobe(float sign_, float gap_3)
@@ -7286,13 +7298,13 @@ float2 airlight_lobe(float sign_, float gap_3)
     return float2(((sign_ < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
 }
 
-float4 airlight_phase_lobes(AirlightScene s_33)
+float4 airlight_phase_lobes(AirlightScene s_34)
 {
     float2 first = float2(1.0, 0.0);
     float2 second = float2(1.0, 0.0);
 
-    float p0_5 = s_33.phase_param_a;
-    switch(s_33.phase_kind) {
+    float p0_5 = s_34.phase_param_a;
+    switch(s_34.phase_kind) {
         case 2u:
         case 4u: {
             const float _e11 = airlight_hg_gap(p0_5);
@@ -7310,8 +7322,8 @@ float4 airlight_phase_lobes(AirlightScene s_33)
             const float _e22 = airlight_hg_gap(p0_5);
             const float2 _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            const float _e26 = airlight_hg_gap(s_33.phase_param_b);
-            const float2 _e27 = airlight_lobe(s_33.phase_param_b, _e26);
+            const float _e26 = airlight_hg_gap(s_34.phase_param_b);
+            const float2 _e27 = airlight_lobe(s_34.phase_param_b, _e26);
             second = _e27;
             break;
         }
@@ -7353,9 +7365,8 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3)
     if (infinite_3) {
         return 1.5707964;
     }
-    float u_9 = (t_3 - a_17.x_h);
-    const float _e13 = airlight_atan2_upper(abs(u_9), a_17.h_eff);
-    return (((u_9 >= 0.0) ? 1.0 : -1.0) * _e13);
+    const float _e7 = airlight_atan2_((t_3 - a_17.x_h), a_17.h_eff);
+    return _e7;
 }
 
 AirlightArea ConstructAirlightArea(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float arg8, float arg9, float arg10, float arg11[13], uint arg12, uint arg13, float4 arg14, bool arg15) {
@@ -7379,7 +7390,7 @@ AirlightArea ConstructAirlightArea(float3 arg0, float3 arg1, float3 arg2, float3
     return ret;
 }
 
-AirlightArea airlight_area(AirlightScene s_34)
+AirlightArea airlight_area(AirlightScene s_35)
 {
     AirlightArea a_18 = (AirlightArea)0;
     bool local_172 = (bool)0;
@@ -7398,12 +7409,12 @@ AirlightArea airlight_area(AirlightScene s_34)
     bool local_176 = (bool)0;
 
     float3 zero = (0.0).xxx;
-    const float4 _e21 = airlight_phase_lobes(s_34);
-    a_18 = ConstructAirlightArea(zero, s_34.light_position, zero, zero, zero, zero, zero, zero, s_34.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
-    const bool _e28 = airlight_isotropic_phase(s_34);
+    const float4 _e21 = airlight_phase_lobes(s_35);
+    a_18 = ConstructAirlightArea(zero, s_35.light_position, zero, zero, zero, zero, zero, zero, s_35.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    const bool _e28 = airlight_isotropic_phase(s_35);
     a_18.isotropic = _e28;
-    if (!((s_34.intensity == 0.0))) {
-        local_172 = (s_34.sigma_s == 0.0);
+    if (!((s_35.intensity == 0.0))) {
+        local_172 = (s_35.sigma_s == 0.0);
     } else {
         local_172 = true;
     }
@@ -7414,14 +7425,14 @@ AirlightArea airlight_area(AirlightScene s_34)
         const AirlightArea airlightarea = _e42;
         return airlightarea;
     }
-    float3 o_6 = s_34.origin;
-    const float3 _e45 = airlight_normalize(s_34.dir);
+    float3 o_6 = s_35.origin;
+    const float3 _e45 = airlight_normalize(s_35.dir);
     a_18.d = _e45;
-    bool infinite_6 = ((s_34.flags & 1u) != 0u);
-    float t0_2 = s_34.t_min;
-    centre = s_34.light_position;
-    size = s_34.light_param_a;
-    if ((s_34.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+    bool infinite_6 = ((s_35.flags & 1u) != 0u);
+    float t0_2 = s_35.t_min;
+    centre = s_35.light_position;
+    size = s_35.light_param_a;
+    if ((s_35.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         float3 _e67 = a_18.c;
         float3 oc = (o_6 - _e67);
         float b_20 = dot(oc, _e45);
@@ -7437,15 +7448,15 @@ AirlightArea airlight_area(AirlightScene s_34)
             cut_count = 2u;
         }
     } else {
-        if ((s_34.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            const float3 _e98 = airlight_normalize(s_34.light_axis);
+        if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            const float3 _e98 = airlight_normalize(s_35.light_axis);
             a_18.n = _e98;
             float3 _e101 = a_18.n;
             const float3 _e102 = airlight_basis_e1_(_e101);
             a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_34.light_axis;
-            a_18.ev = s_34.light_end;
+            a_18.eu = s_35.light_axis;
+            a_18.ev = s_35.light_end;
             float3 _e109 = a_18.eu;
             float3 _e111 = a_18.ev;
             const float3 _e113 = airlight_normalize(cross(_e109, _e111));
@@ -7492,13 +7503,13 @@ AirlightArea airlight_area(AirlightScene s_34)
     float _e184 = size;
     float _e185 = size;
     a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
-    t_end_1 = s_34.t_max;
+    t_end_1 = s_35.t_max;
     end_infinite = infinite_6;
-    if ((s_34.sigma_t > 0.0)) {
+    if ((s_35.sigma_t > 0.0)) {
         float3 _e195 = centre;
         const float _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
         float _e201 = size;
-        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_34.sigma_t));
+        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
         if (!(infinite_6)) {
             float _e210 = t_end_1;
             local_173 = (reach_1 < _e210);
@@ -7597,7 +7608,7 @@ AirlightAbove airlight_above(float z_10, float2 off)
     return airlightabove;
 }
 
-float airlight_flat_node(AirlightScene s_35, AirlightArea a_19, AirlightAbove above_1, float2 e_3, float graded_1, float node_1)
+float airlight_flat_node(AirlightScene s_36, AirlightArea a_19, AirlightAbove above_1, float2 e_3, float graded_1, float node_1)
 {
     const float2 _e6 = airlight_graded_node(graded_1, node_1);
     const float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
@@ -7608,67 +7619,67 @@ float airlight_flat_node(AirlightScene s_35, AirlightArea a_19, AirlightAbove ab
     float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    const float _e50 = airlight_area_phase(s_35, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
-    const float _e52 = airlight_emitted(s_35, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_35.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    const float _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    const float _e52 = airlight_emitted(s_36, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_36, AirlightArea a_20, AirlightAbove above_2, float2 e_4, float r_max)
+float airlight_flat_radial(AirlightScene s_37, AirlightArea a_20, AirlightAbove above_2, float2 e_4, float r_max)
 {
     float sum_7 = 0.0;
 
     const float _e7 = airlight_atan((r_max / above_2.rho0_));
-    const float2 _e8 = airlight_graded_range(s_36, _e7);
+    const float2 _e8 = airlight_graded_range(s_37, _e7);
     float graded_5 = _e8.y;
     float c_16 = (0.5 * _e8.x);
     float hw_2 = (0.5 * _e8.x);
     float _e18 = sum_7;
-    const float _e24 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251 * hw_2)));
+    const float _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251 * hw_2)));
     sum_7 = (_e18 + ((0.1894506 * hw_2) * _e24));
     float _e27 = sum_7;
-    const float _e33 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251 * hw_2)));
+    const float _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251 * hw_2)));
     sum_7 = (_e27 + ((0.1894506 * hw_2) * _e33));
     float _e36 = sum_7;
-    const float _e42 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354 * hw_2)));
+    const float _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354 * hw_2)));
     sum_7 = (_e36 + ((0.18260342 * hw_2) * _e42));
     float _e45 = sum_7;
-    const float _e51 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354 * hw_2)));
+    const float _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354 * hw_2)));
     sum_7 = (_e45 + ((0.18260342 * hw_2) * _e51));
     float _e54 = sum_7;
-    const float _e60 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678 * hw_2)));
+    const float _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678 * hw_2)));
     sum_7 = (_e54 + ((0.16915652 * hw_2) * _e60));
     float _e63 = sum_7;
-    const float _e69 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678 * hw_2)));
+    const float _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678 * hw_2)));
     sum_7 = (_e63 + ((0.16915652 * hw_2) * _e69));
     float _e72 = sum_7;
-    const float _e78 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623 * hw_2)));
+    const float _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623 * hw_2)));
     sum_7 = (_e72 + ((0.14959599 * hw_2) * _e78));
     float _e81 = sum_7;
-    const float _e87 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623 * hw_2)));
+    const float _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623 * hw_2)));
     sum_7 = (_e81 + ((0.14959599 * hw_2) * _e87));
     float _e90 = sum_7;
-    const float _e96 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044 * hw_2)));
+    const float _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044 * hw_2)));
     sum_7 = (_e90 + ((0.12462897 * hw_2) * _e96));
     float _e99 = sum_7;
-    const float _e105 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044 * hw_2)));
+    const float _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044 * hw_2)));
     sum_7 = (_e99 + ((0.12462897 * hw_2) * _e105));
     float _e108 = sum_7;
-    const float _e114 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312 * hw_2)));
+    const float _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312 * hw_2)));
     sum_7 = (_e108 + ((0.09515851 * hw_2) * _e114));
     float _e117 = sum_7;
-    const float _e123 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312 * hw_2)));
+    const float _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312 * hw_2)));
     sum_7 = (_e117 + ((0.09515851 * hw_2) * _e123));
     float _e126 = sum_7;
-    const float _e132 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.944575 * hw_2)));
+    const float _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.944575 * hw_2)));
     sum_7 = (_e126 + ((0.062253524 * hw_2) * _e132));
     float _e135 = sum_7;
-    const float _e141 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.944575 * hw_2)));
+    const float _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.944575 * hw_2)));
     sum_7 = (_e135 + ((0.062253524 * hw_2) * _e141));
     float _e144 = sum_7;
-    const float _e150 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009 * hw_2)));
+    const float _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009 * hw_2)));
     sum_7 = (_e144 + ((0.02715246 * hw_2) * _e150));
     float _e153 = sum_7;
-    const float _e159 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009 * hw_2)));
+    const float _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009 * hw_2)));
     sum_7 = (_e153 + ((0.02715246 * hw_2) * _e159));
     float _e162 = sum_7;
     return _e162;
@@ -7867,7 +7878,7 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
     return _e93;
 }
 
-float airlight_flat_lobe_node(AirlightScene s_37, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded_2, float g_26)
+float airlight_flat_lobe_node(AirlightScene s_38, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_1, float graded_2, float g_26)
 {
     const float2 _e7 = airlight_cos_sin_half_turn(g_26);
     const float2 _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
@@ -7875,12 +7886,12 @@ float airlight_flat_lobe_node(AirlightScene s_37, float z_12, AirlightFlatLobe l
     if (!((c_17 > 0.0))) {
         return 0.0;
     }
-    const float _e26 = airlight_emitted(s_37, c_17);
-    const float _e38 = airlight_area_phase(s_37, (lobe_1.sign_ * _e13.x));
-    return (((((_e26 * exp(min(((-(s_37.sigma_t) * z_12) / c_17), 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    const float _e26 = airlight_emitted(s_38, c_17);
+    const float _e38 = airlight_area_phase(s_38, (lobe_1.sign_ * _e13.x));
+    return (((((_e26 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-float airlight_flat_lobe_along(AirlightScene s_38, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, float3 u_4, float3 v_6, float2 cs_1)
+float airlight_flat_lobe_along(AirlightScene s_39, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, float3 u_4, float3 v_6, float2 cs_1)
 {
     float sum_8 = 0.0;
 
@@ -7897,52 +7908,52 @@ float airlight_flat_lobe_along(AirlightScene s_38, float z_13, AirlightOutline o
     float c_18 = (0.5 * _e45);
     float hw_3 = (0.5 * _e45);
     float _e52 = sum_8;
-    const float _e58 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251 * hw_3)));
+    const float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    const float _e67 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251 * hw_3)));
+    const float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    const float _e76 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354 * hw_3)));
+    const float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    const float _e85 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354 * hw_3)));
+    const float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    const float _e94 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678 * hw_3)));
+    const float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    const float _e103 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678 * hw_3)));
+    const float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    const float _e112 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623 * hw_3)));
+    const float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    const float _e121 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623 * hw_3)));
+    const float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    const float _e130 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044 * hw_3)));
+    const float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    const float _e139 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044 * hw_3)));
+    const float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    const float _e148 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312 * hw_3)));
+    const float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    const float _e157 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312 * hw_3)));
+    const float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    const float _e166 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575 * hw_3)));
+    const float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    const float _e175 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575 * hw_3)));
+    const float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    const float _e184 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009 * hw_3)));
+    const float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    const float _e193 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009 * hw_3)));
+    const float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7950,31 +7961,31 @@ float airlight_flat_lobe_along(AirlightScene s_38, float z_13, AirlightOutline o
 
 float airlight_lobe_azimuth(float3 u_5, float3 v_7, float2 e_7)
 {
-    float y_11 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
-    const float _e23 = airlight_atan2_upper(abs(y_11), ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
-    return (((y_11 < 0.0) ? -1.0 : 1.0) * _e23);
+    float y_12 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    const float _e17 = airlight_atan2_(y_12, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    return _e17;
 }
 
-float airlight_wrap_turn(float x_21)
+float airlight_wrap_turn(float x_22)
 {
-    return (x_21 - (6.2831855 * round((x_21 / 6.2831855))));
+    return (x_22 - (6.2831855 * round((x_22 / 6.2831855))));
 }
 
-float2 airlight_cos_sin_turns(float x_22)
+float2 airlight_cos_sin_turns(float x_23)
 {
-    const float _e1 = airlight_wrap_turn(x_22);
+    const float _e1 = airlight_wrap_turn(x_23);
     const float2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return float2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
 
-float4 airlight_sort4_(float4 x_23)
+float4 airlight_sort4_(float4 x_24)
 {
-    float4 a_45 = float4(min(x_23.x, x_23.y), max(x_23.x, x_23.y), min(x_23.z, x_23.w), max(x_23.z, x_23.w));
+    float4 a_45 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
     float4 b_22 = float4(min(a_45.x, a_45.z), min(a_45.y, a_45.w), max(a_45.x, a_45.z), max(a_45.y, a_45.w));
     return float4(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-float airlight_flat_about_lobe(AirlightScene s_39, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
+float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
     uint i_29 = 0u;
@@ -8007,7 +8018,7 @@ float airlight_flat_about_lobe(AirlightScene s_39, float z_14, AirlightOutline o
                     uint _e21 = i_29;
                     const float3 _e22 = airlight_azimuths(true, _e21);
                     float _e23 = sum_9;
-                    const float _e26 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
+                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
             }
@@ -8045,7 +8056,7 @@ float airlight_flat_about_lobe(AirlightScene s_39, float z_14, AirlightOutline o
                 const float3 _e97 = airlight_azimuths(false, _e96);
                 float _e98 = sum_9;
                 const float2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                const float _e107 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e106);
+                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
         }
@@ -8116,7 +8127,7 @@ float airlight_flat_about_lobe(AirlightScene s_39, float z_14, AirlightOutline o
                     const float2 _e196 = airlight_triangle_rule(_e195);
                     float _e197 = sum_9;
                     const float2 _e203 = airlight_cos_sin_turns((c_19 + (hw_4 * _e196.x)));
-                    const float _e204 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e203);
+                    const float _e204 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e203);
                     sum_9 = (_e197 + ((_e196.y * hw_4) * _e204));
                 }
             }
@@ -8133,7 +8144,7 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-float airlight_disc(AirlightScene s_40, AirlightArea a_23, float3 x_24)
+float airlight_disc(AirlightScene s_41, AirlightArea a_23, float3 x_25)
 {
     bool local_181 = (bool)0;
     bool local_182 = (bool)0;
@@ -8144,7 +8155,7 @@ float airlight_disc(AirlightScene s_40, AirlightArea a_23, float3 x_24)
     float2 e_8 = (float2)0;
     float r_max_1 = (float)0;
 
-    float3 rel = (x_24 - a_23.c);
+    float3 rel = (x_25 - a_23.c);
     float z_20 = dot(rel, a_23.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
@@ -8157,12 +8168,12 @@ float airlight_disc(AirlightScene s_40, AirlightArea a_23, float3 x_24)
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
     const AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        const float _e34 = airlight_flat_about_lobe(s_40, z_20, outline, _e30);
+        const float _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            const bool _e44 = airlight_far_from_edge(s_40, (radius_2 - rf), z_20);
+            const bool _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
             local_182 = _e44;
         } else {
             local_182 = true;
@@ -8216,7 +8227,7 @@ float airlight_disc(AirlightScene s_40, AirlightArea a_23, float3 x_24)
             AirlightAbove _e120 = above_3;
             float2 _e121 = e_8;
             float _e122 = r_max_1;
-            const float _e123 = airlight_flat_radial(s_40, a_23, _e120, _e121, _e122);
+            const float _e123 = airlight_flat_radial(s_41, a_23, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -8224,7 +8235,7 @@ float airlight_disc(AirlightScene s_40, AirlightArea a_23, float3 x_24)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
+float airlight_parallelogram(AirlightScene s_42, AirlightArea a_24, float3 x_26)
 {
     float2 q_8 = (float2)0;
     bool local_183 = (bool)0;
@@ -8232,7 +8243,7 @@ float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     uint i_33 = 0u;
     uint j_7 = (uint)0;
 
-    float3 rel_1 = (x_25 - a_24.c);
+    float3 rel_1 = (x_26 - a_24.c);
     float z_21 = dot(rel_1, a_24.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
@@ -8246,13 +8257,13 @@ float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
     const AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
     if ((_e69.scale > 0.0)) {
-        const float _e73 = airlight_flat_about_lobe(s_41, z_21, about_foot, _e69);
+        const float _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
     q_8 = (_e76.xy + foot);
     if ((_e76.z > 0.0)) {
-        const bool _e89 = airlight_far_from_edge(s_41, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        const bool _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_183 = _e89;
     } else {
         local_183 = false;
@@ -8270,8 +8281,8 @@ float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
         if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
         loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
         if (!loop_init_39) {
-            uint _e207 = i_33;
-            i_33 = (_e207 + 1u);
+            uint _e205 = i_33;
+            i_33 = (_e205 + 1u);
         }
         loop_init_39 = false;
         uint _e102 = i_33;
@@ -8294,8 +8305,11 @@ float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
             float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
             float h_9 = (area / el);
             float2 m_12 = float2((e_15.y / el), (-(e_15.x) / el));
-            const float _e147 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
-            float2 start_4 = (ca / (sqrt(((ca.x * ca.x) + (ca.y * ca.y)))).xx);
+            float2 t_12 = (e_15 / (el).xx);
+            const float _e143 = airlight_narrowed(s_42, _e94.rho0_);
+            float reach_2 = sqrt(((h_9 * h_9) + (_e143 * _e143)));
+            const float _e149 = airlight_atan2_(dot(ca, t_12), reach_2);
+            const float _e151 = airlight_atan2_(dot(cb_1, t_12), reach_2);
             j_7 = 0u;
             uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
             bool loop_init_40 = true;
@@ -8303,32 +8317,35 @@ float airlight_parallelogram(AirlightScene s_41, AirlightArea a_24, float3 x_25)
                 if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
                 loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
                 if (!loop_init_40) {
-                    uint _e204 = j_7;
-                    j_7 = (_e204 + 1u);
+                    uint _e202 = j_7;
+                    j_7 = (_e202 + 1u);
                 }
                 loop_init_40 = false;
-                uint _e160 = j_7;
-                if ((_e160 < 12u)) {
+                uint _e154 = j_7;
+                if ((_e154 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e163 = j_7;
-                    const float2 _e164 = airlight_triangle_rule(_e163);
-                    const float2 _e171 = airlight_cos_sin_half_turn(((0.5 * _e147) * (1.0 + _e164.x)));
-                    float2 dir_3 = float2(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
-                    float _e187 = sum_11;
-                    const float _e200 = airlight_flat_radial(s_41, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
-                    sum_11 = (_e187 + (((_e164.y * 0.5) * _e147) * _e200));
+                    uint _e157 = j_7;
+                    const float2 _e158 = airlight_triangle_rule(_e157);
+                    const float2 _e170 = airlight_cos_sin_half_turn((((0.5 * (_e149 + _e151)) + ((0.5 * (_e151 - _e149)) * _e158.x)) + 1.5707964));
+                    float sigma_13 = ((reach_2 * -(_e170.x)) / _e170.y);
+                    float r2_4 = ((h_9 * h_9) + (sigma_13 * sigma_13));
+                    float r_14 = sqrt(r2_4);
+                    float2 dir_3 = (((h_9 * m_12) + (sigma_13 * t_12)) / (r_14).xx);
+                    float _e185 = sum_11;
+                    const float _e198 = airlight_flat_radial(s_42, a_24, _e94, dir_3, r_14);
+                    sum_11 = (_e185 + ((((((_e158.y * 0.5) * (_e151 - _e149)) * h_9) * reach_2) / ((_e170.y * _e170.y) * r2_4)) * _e198));
                 }
             }
         }
     }
-    float _e209 = sum_11;
-    return _e209;
+    float _e207 = sum_11;
+    return _e207;
 }
 
-float3 airlight_cap_row(AirlightScene s_42, AirlightCap cap, float graded_3, float node_2, float weight_1)
+float3 airlight_cap_row(AirlightScene s_43, AirlightCap cap, float graded_3, float node_2, float weight_1)
 {
     const float2 _e5 = airlight_graded_node(graded_3, node_2);
     float w_10 = (weight_1 * _e5.y);
@@ -8336,8 +8353,8 @@ float3 airlight_cap_row(AirlightScene s_42, AirlightCap cap, float graded_3, flo
     float sb_2 = (cap.sin_a * _e9.y);
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0.0);
-    const float _e28 = airlight_emitted(s_42, _e9.x);
-    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_42.sigma_t) * dist_1), 0.0)));
+    const float _e28 = airlight_emitted(s_43, _e9.x);
+    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
     return float3(factor, cb_2, sb_2);
 }
 
@@ -8347,7 +8364,7 @@ airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 a
     return ret;
 }
 
-float airlight_sphere_cap(AirlightScene s_43, AirlightArea a_25, AirlightCap cap_1)
+float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_25, AirlightCap cap_1)
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
@@ -8359,44 +8376,44 @@ float airlight_sphere_cap(AirlightScene s_43, AirlightArea a_25, AirlightCap cap
     float ad = dot(cap_1.a, a_25.d);
     float e1d = dot(_e4, a_25.d);
     float e2d = dot(e2_2, a_25.d);
-    const float2 _e15 = airlight_graded_range(s_43, 1.5707964);
+    const float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_7 = _e15.y;
     float c_20 = (0.5 * _e15.x);
     float hw_5 = (0.5 * _e15.x);
-    const float3 _e63 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    const float3 _e63 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[0] = _e63;
-    const float3 _e70 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    const float3 _e70 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
     rows[1] = _e70;
-    const float3 _e77 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e77 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[2] = _e77;
-    const float3 _e84 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e84 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
     rows[3] = _e84;
-    const float3 _e91 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e91 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[4] = _e91;
-    const float3 _e98 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e98 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
     rows[5] = _e98;
-    const float3 _e105 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e105 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[6] = _e105;
-    const float3 _e112 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e112 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
     rows[7] = _e112;
-    const float3 _e119 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e119 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[8] = _e119;
-    const float3 _e126 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e126 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
     rows[9] = _e126;
-    const float3 _e133 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e133 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[10] = _e133;
-    const float3 _e140 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e140 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
     rows[11] = _e140;
-    const float3 _e147 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e147 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[12] = _e147;
-    const float3 _e154 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e154 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
     rows[13] = _e154;
-    const float3 _e161 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e161 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[14] = _e161;
-    const float3 _e168 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[15] = _e168;
     if (a_25.isotropic) {
-        const float _e174 = airlight_area_phase(s_43, 0.0);
+        const float _e174 = airlight_area_phase(s_44, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_12;
         float _e179 = rows[0].x;
@@ -8473,97 +8490,97 @@ float airlight_sphere_cap(AirlightScene s_43, AirlightArea a_25, AirlightCap cap
             float _e291 = rows[0].x;
             float _e294 = rows[0].y;
             float _e298 = rows[0].z;
-            const float _e301 = airlight_area_phase(s_43, ((_e294 * ad) + (_e298 * across_1)));
+            const float _e301 = airlight_area_phase(s_44, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             float _e304 = at_2;
             float _e307 = rows[1].x;
             float _e310 = rows[1].y;
             float _e314 = rows[1].z;
-            const float _e317 = airlight_area_phase(s_43, ((_e310 * ad) + (_e314 * across_1)));
+            const float _e317 = airlight_area_phase(s_44, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             float _e320 = at_2;
             float _e323 = rows[2].x;
             float _e326 = rows[2].y;
             float _e330 = rows[2].z;
-            const float _e333 = airlight_area_phase(s_43, ((_e326 * ad) + (_e330 * across_1)));
+            const float _e333 = airlight_area_phase(s_44, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[3].x;
             float _e342 = rows[3].y;
             float _e346 = rows[3].z;
-            const float _e349 = airlight_area_phase(s_43, ((_e342 * ad) + (_e346 * across_1)));
+            const float _e349 = airlight_area_phase(s_44, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[4].x;
             float _e358 = rows[4].y;
             float _e362 = rows[4].z;
-            const float _e365 = airlight_area_phase(s_43, ((_e358 * ad) + (_e362 * across_1)));
+            const float _e365 = airlight_area_phase(s_44, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[5].x;
             float _e374 = rows[5].y;
             float _e378 = rows[5].z;
-            const float _e381 = airlight_area_phase(s_43, ((_e374 * ad) + (_e378 * across_1)));
+            const float _e381 = airlight_area_phase(s_44, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[6].x;
             float _e390 = rows[6].y;
             float _e394 = rows[6].z;
-            const float _e397 = airlight_area_phase(s_43, ((_e390 * ad) + (_e394 * across_1)));
+            const float _e397 = airlight_area_phase(s_44, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[7].x;
             float _e406 = rows[7].y;
             float _e410 = rows[7].z;
-            const float _e413 = airlight_area_phase(s_43, ((_e406 * ad) + (_e410 * across_1)));
+            const float _e413 = airlight_area_phase(s_44, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[8].x;
             float _e422 = rows[8].y;
             float _e426 = rows[8].z;
-            const float _e429 = airlight_area_phase(s_43, ((_e422 * ad) + (_e426 * across_1)));
+            const float _e429 = airlight_area_phase(s_44, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[9].x;
             float _e438 = rows[9].y;
             float _e442 = rows[9].z;
-            const float _e445 = airlight_area_phase(s_43, ((_e438 * ad) + (_e442 * across_1)));
+            const float _e445 = airlight_area_phase(s_44, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[10].x;
             float _e454 = rows[10].y;
             float _e458 = rows[10].z;
-            const float _e461 = airlight_area_phase(s_43, ((_e454 * ad) + (_e458 * across_1)));
+            const float _e461 = airlight_area_phase(s_44, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[11].x;
             float _e470 = rows[11].y;
             float _e474 = rows[11].z;
-            const float _e477 = airlight_area_phase(s_43, ((_e470 * ad) + (_e474 * across_1)));
+            const float _e477 = airlight_area_phase(s_44, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[12].x;
             float _e486 = rows[12].y;
             float _e490 = rows[12].z;
-            const float _e493 = airlight_area_phase(s_43, ((_e486 * ad) + (_e490 * across_1)));
+            const float _e493 = airlight_area_phase(s_44, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[13].x;
             float _e502 = rows[13].y;
             float _e506 = rows[13].z;
-            const float _e509 = airlight_area_phase(s_43, ((_e502 * ad) + (_e506 * across_1)));
+            const float _e509 = airlight_area_phase(s_44, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[14].x;
             float _e518 = rows[14].y;
             float _e522 = rows[14].z;
-            const float _e525 = airlight_area_phase(s_43, ((_e518 * ad) + (_e522 * across_1)));
+            const float _e525 = airlight_area_phase(s_44, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[15].x;
             float _e534 = rows[15].y;
             float _e538 = rows[15].z;
-            const float _e541 = airlight_area_phase(s_43, ((_e534 * ad) + (_e538 * across_1)));
+            const float _e541 = airlight_area_phase(s_44, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = sum_12;
             float _e546 = at_2;
@@ -8574,19 +8591,19 @@ float airlight_sphere_cap(AirlightScene s_43, AirlightArea a_25, AirlightCap cap
     return _e552;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_44, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_4, float g_27)
+float airlight_sphere_lobe_node(AirlightScene s_45, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_2, float graded_4, float g_27)
 {
     const float2 _e8 = airlight_cos_sin_half_turn(g_27);
     const float2 _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_4 * _e8.y) / _e8.x)));
     float toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
     float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
-    const float _e43 = airlight_emitted(s_44, (root_5 / cap_2.radius));
-    const float _e53 = airlight_area_phase(s_44, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_44.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
+    const float _e43 = airlight_emitted(s_45, (root_5 / cap_2.radius));
+    const float _e53 = airlight_area_phase(s_45, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_45.sigma_t) * dist_2), 0.0))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_45, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1)
+float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_1)
 {
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
@@ -8615,8 +8632,8 @@ float airlight_sphere_about_lobe(AirlightScene s_45, AirlightArea a_26, Airlight
         if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
         if (!loop_init_42) {
-            uint _e299 = i_35;
-            i_35 = (_e299 + 1u);
+            uint _e291 = i_35;
+            i_35 = (_e291 + 1u);
         }
         loop_init_42 = false;
         uint _e47 = i_35;
@@ -8639,112 +8656,110 @@ float airlight_sphere_about_lobe(AirlightScene s_45, AirlightArea a_26, Airlight
                 wpsi = ((_e51.z * _e73) * _e51.x);
             }
             float _e77 = big_b_1;
-            float _e83 = big_b_1;
-            const float _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
-            float mid_3 = (((_e77 < 0.0) ? -1.0 : 1.0) * _e85);
-            float _e89 = big_b_1;
-            float _e90 = big_b_1;
-            const float _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1.0));
+            const float _e78 = airlight_atan2_(_e77, cos_p_1);
+            float _e81 = big_b_1;
+            float _e82 = big_b_1;
+            const float _e89 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e81 * _e82)))), 1.0));
             start_3 = 0.0;
             if (!(inside_3)) {
-                start_3 = max((mid_3 - _e97), 0.0);
+                start_3 = max((_e78 - _e89), 0.0);
             }
-            float to = (mid_3 + _e97);
-            float _e105 = start_3;
-            float graded_8 = max(scale_1, _e105);
-            float _e107 = start_3;
-            const float _e110 = airlight_atan(((to - _e107) / graded_8));
-            float c_21 = (0.5 * _e110);
-            float hw_6 = (0.5 * _e110);
+            float to = (_e78 + _e89);
+            float _e97 = start_3;
+            float graded_8 = max(scale_1, _e97);
+            float _e99 = start_3;
+            const float _e102 = airlight_atan(((to - _e99) / graded_8));
+            float c_21 = (0.5 * _e102);
+            float hw_6 = (0.5 * _e102);
             around = 0.0;
-            float _e117 = around;
-            float _e120 = big_b_1;
-            float _e121 = start_3;
-            const float _e125 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e120, _e121, graded_8, (c_21 - (0.09501251 * hw_6)));
-            around = (_e117 + ((0.1894506 * hw_6) * _e125));
-            float _e128 = around;
-            float _e131 = big_b_1;
-            float _e132 = start_3;
-            const float _e136 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e131, _e132, graded_8, (c_21 + (0.09501251 * hw_6)));
-            around = (_e128 + ((0.1894506 * hw_6) * _e136));
-            float _e139 = around;
-            float _e142 = big_b_1;
-            float _e143 = start_3;
-            const float _e147 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e142, _e143, graded_8, (c_21 - (0.28160354 * hw_6)));
-            around = (_e139 + ((0.18260342 * hw_6) * _e147));
-            float _e150 = around;
-            float _e153 = big_b_1;
-            float _e154 = start_3;
-            const float _e158 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e153, _e154, graded_8, (c_21 + (0.28160354 * hw_6)));
-            around = (_e150 + ((0.18260342 * hw_6) * _e158));
-            float _e161 = around;
-            float _e164 = big_b_1;
-            float _e165 = start_3;
-            const float _e169 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e164, _e165, graded_8, (c_21 - (0.45801678 * hw_6)));
-            around = (_e161 + ((0.16915652 * hw_6) * _e169));
-            float _e172 = around;
-            float _e175 = big_b_1;
-            float _e176 = start_3;
-            const float _e180 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e175, _e176, graded_8, (c_21 + (0.45801678 * hw_6)));
-            around = (_e172 + ((0.16915652 * hw_6) * _e180));
-            float _e183 = around;
-            float _e186 = big_b_1;
-            float _e187 = start_3;
-            const float _e191 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e186, _e187, graded_8, (c_21 - (0.61787623 * hw_6)));
-            around = (_e183 + ((0.14959599 * hw_6) * _e191));
-            float _e194 = around;
-            float _e197 = big_b_1;
-            float _e198 = start_3;
-            const float _e202 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e197, _e198, graded_8, (c_21 + (0.61787623 * hw_6)));
-            around = (_e194 + ((0.14959599 * hw_6) * _e202));
-            float _e205 = around;
-            float _e208 = big_b_1;
-            float _e209 = start_3;
-            const float _e213 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e208, _e209, graded_8, (c_21 - (0.7554044 * hw_6)));
-            around = (_e205 + ((0.12462897 * hw_6) * _e213));
-            float _e216 = around;
-            float _e219 = big_b_1;
-            float _e220 = start_3;
-            const float _e224 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e219, _e220, graded_8, (c_21 + (0.7554044 * hw_6)));
-            around = (_e216 + ((0.12462897 * hw_6) * _e224));
-            float _e227 = around;
-            float _e230 = big_b_1;
-            float _e231 = start_3;
-            const float _e235 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e230, _e231, graded_8, (c_21 - (0.8656312 * hw_6)));
-            around = (_e227 + ((0.09515851 * hw_6) * _e235));
-            float _e238 = around;
-            float _e241 = big_b_1;
-            float _e242 = start_3;
-            const float _e246 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e241, _e242, graded_8, (c_21 + (0.8656312 * hw_6)));
-            around = (_e238 + ((0.09515851 * hw_6) * _e246));
-            float _e249 = around;
-            float _e252 = big_b_1;
-            float _e253 = start_3;
-            const float _e257 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e252, _e253, graded_8, (c_21 - (0.944575 * hw_6)));
-            around = (_e249 + ((0.062253524 * hw_6) * _e257));
-            float _e260 = around;
-            float _e263 = big_b_1;
-            float _e264 = start_3;
-            const float _e268 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e263, _e264, graded_8, (c_21 + (0.944575 * hw_6)));
-            around = (_e260 + ((0.062253524 * hw_6) * _e268));
-            float _e271 = around;
-            float _e274 = big_b_1;
-            float _e275 = start_3;
-            const float _e279 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e274, _e275, graded_8, (c_21 - (0.9894009 * hw_6)));
-            around = (_e271 + ((0.02715246 * hw_6) * _e279));
-            float _e282 = around;
-            float _e285 = big_b_1;
-            float _e286 = start_3;
-            const float _e290 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e285, _e286, graded_8, (c_21 + (0.9894009 * hw_6)));
-            around = (_e282 + ((0.02715246 * hw_6) * _e290));
-            float _e293 = sum_13;
-            float _e294 = wpsi;
-            float _e295 = around;
-            sum_13 = (_e293 + (_e294 * _e295));
+            float _e109 = around;
+            float _e112 = big_b_1;
+            float _e113 = start_3;
+            const float _e117 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e112, _e113, graded_8, (c_21 - (0.09501251 * hw_6)));
+            around = (_e109 + ((0.1894506 * hw_6) * _e117));
+            float _e120 = around;
+            float _e123 = big_b_1;
+            float _e124 = start_3;
+            const float _e128 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e123, _e124, graded_8, (c_21 + (0.09501251 * hw_6)));
+            around = (_e120 + ((0.1894506 * hw_6) * _e128));
+            float _e131 = around;
+            float _e134 = big_b_1;
+            float _e135 = start_3;
+            const float _e139 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e134, _e135, graded_8, (c_21 - (0.28160354 * hw_6)));
+            around = (_e131 + ((0.18260342 * hw_6) * _e139));
+            float _e142 = around;
+            float _e145 = big_b_1;
+            float _e146 = start_3;
+            const float _e150 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e145, _e146, graded_8, (c_21 + (0.28160354 * hw_6)));
+            around = (_e142 + ((0.18260342 * hw_6) * _e150));
+            float _e153 = around;
+            float _e156 = big_b_1;
+            float _e157 = start_3;
+            const float _e161 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e156, _e157, graded_8, (c_21 - (0.45801678 * hw_6)));
+            around = (_e153 + ((0.16915652 * hw_6) * _e161));
+            float _e164 = around;
+            float _e167 = big_b_1;
+            float _e168 = start_3;
+            const float _e172 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e167, _e168, graded_8, (c_21 + (0.45801678 * hw_6)));
+            around = (_e164 + ((0.16915652 * hw_6) * _e172));
+            float _e175 = around;
+            float _e178 = big_b_1;
+            float _e179 = start_3;
+            const float _e183 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e178, _e179, graded_8, (c_21 - (0.61787623 * hw_6)));
+            around = (_e175 + ((0.14959599 * hw_6) * _e183));
+            float _e186 = around;
+            float _e189 = big_b_1;
+            float _e190 = start_3;
+            const float _e194 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e189, _e190, graded_8, (c_21 + (0.61787623 * hw_6)));
+            around = (_e186 + ((0.14959599 * hw_6) * _e194));
+            float _e197 = around;
+            float _e200 = big_b_1;
+            float _e201 = start_3;
+            const float _e205 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e200, _e201, graded_8, (c_21 - (0.7554044 * hw_6)));
+            around = (_e197 + ((0.12462897 * hw_6) * _e205));
+            float _e208 = around;
+            float _e211 = big_b_1;
+            float _e212 = start_3;
+            const float _e216 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e211, _e212, graded_8, (c_21 + (0.7554044 * hw_6)));
+            around = (_e208 + ((0.12462897 * hw_6) * _e216));
+            float _e219 = around;
+            float _e222 = big_b_1;
+            float _e223 = start_3;
+            const float _e227 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e222, _e223, graded_8, (c_21 - (0.8656312 * hw_6)));
+            around = (_e219 + ((0.09515851 * hw_6) * _e227));
+            float _e230 = around;
+            float _e233 = big_b_1;
+            float _e234 = start_3;
+            const float _e238 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e233, _e234, graded_8, (c_21 + (0.8656312 * hw_6)));
+            around = (_e230 + ((0.09515851 * hw_6) * _e238));
+            float _e241 = around;
+            float _e244 = big_b_1;
+            float _e245 = start_3;
+            const float _e249 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e244, _e245, graded_8, (c_21 - (0.944575 * hw_6)));
+            around = (_e241 + ((0.062253524 * hw_6) * _e249));
+            float _e252 = around;
+            float _e255 = big_b_1;
+            float _e256 = start_3;
+            const float _e260 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e255, _e256, graded_8, (c_21 + (0.944575 * hw_6)));
+            around = (_e252 + ((0.062253524 * hw_6) * _e260));
+            float _e263 = around;
+            float _e266 = big_b_1;
+            float _e267 = start_3;
+            const float _e271 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e266, _e267, graded_8, (c_21 - (0.9894009 * hw_6)));
+            around = (_e263 + ((0.02715246 * hw_6) * _e271));
+            float _e274 = around;
+            float _e277 = big_b_1;
+            float _e278 = start_3;
+            const float _e282 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e277, _e278, graded_8, (c_21 + (0.9894009 * hw_6)));
+            around = (_e274 + ((0.02715246 * hw_6) * _e282));
+            float _e285 = sum_13;
+            float _e286 = wpsi;
+            float _e287 = around;
+            sum_13 = (_e285 + (_e286 * _e287));
         }
     }
-    float _e301 = sum_13;
-    return _e301;
+    float _e293 = sum_13;
+    return _e293;
 }
 
 AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -8757,7 +8772,7 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_46, AirlightArea a_27, float3 x_26)
+float airlight_sphere(AirlightScene s_47, AirlightArea a_27, float3 x_27)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
@@ -8769,7 +8784,7 @@ float airlight_sphere(AirlightScene s_46, AirlightArea a_27, float3 x_26)
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
 
-    float3 v_11 = (a_27.c - x_26);
+    float3 v_11 = (a_27.c - x_27);
     const float _e5 = airlight_safe_length(v_11);
     if (!((_e5 > a_27.radius))) {
         return 0.0;
@@ -8840,42 +8855,42 @@ float airlight_sphere(AirlightScene s_46, AirlightArea a_27, float3 x_26)
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        const float _e100 = airlight_sphere_about_lobe(s_46, a_27, cap_4, _e97, _e98, _e99);
+        const float _e100 = airlight_sphere_about_lobe(s_47, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    const float _e101 = airlight_sphere_cap(s_46, a_27, cap_4);
+    const float _e101 = airlight_sphere_cap(s_47, a_27, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_47, AirlightArea a_28, float3 x_27)
+float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_28, float3 x_28)
 {
-    switch(s_47.light_shape) {
+    switch(s_48.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_47, a_28, x_27);
+            const float _e4 = airlight_disc(s_48, a_28, x_28);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_47, a_28, x_27);
+            const float _e5 = airlight_parallelogram(s_48, a_28, x_28);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_47, a_28, x_27);
+            const float _e6 = airlight_sphere(s_48, a_28, x_28);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_48, AirlightArea a_29, float theta)
+float airlight_area_node(AirlightScene s_49, AirlightArea a_29, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
     float along = ((a_29.h_eff * _e3.y) / _e3.x);
-    float t_12 = (a_29.x_h + along);
-    float fade = exp(min((-(s_48.sigma_t) * max(((a_29.x_h - s_48.t_min) + along), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_48, a_29, (s_48.origin + (t_12 * a_29.d)));
+    float t_13 = (a_29.x_h + along);
+    float fade = exp(min((-(s_49.sigma_t) * max(((a_29.x_h - s_49.t_min) + along), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_49, a_29, (s_49.origin + (t_13 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_49)
+AirlightResult airlight_area_light(AirlightScene s_50)
 {
     AirlightAdaptive st_1 = (AirlightAdaptive)0;
     uint step_2 = 0u;
@@ -8884,7 +8899,7 @@ AirlightResult airlight_area_light(AirlightScene s_49)
     uint j_9 = (uint)0;
     bool local_189 = (bool)0;
 
-    const AirlightArea _e1 = airlight_area(s_49);
+    const AirlightArea _e1 = airlight_area(s_50);
     if ((_e1.outcome == 1u)) {
         const AirlightResult airlightresult_8 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_8;
@@ -8945,8 +8960,8 @@ AirlightResult airlight_area_light(AirlightScene s_49)
                         local_189 = false;
                     }
                     bool _e70 = local_189;
-                    float x_36 = (_e70 ? (c_23 - (hw_7 * node_4.x)) : (c_23 + (hw_7 * node_4.x)));
-                    const float _e72 = airlight_area_node(s_49, _e1, x_36);
+                    float x_37 = (_e70 ? (c_23 - (hw_7 * node_4.x)) : (c_23 + (hw_7 * node_4.x)));
+                    const float _e72 = airlight_area_node(s_50, _e1, x_37);
                     float _e73 = k_8;
                     k_8 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
@@ -8973,24 +8988,24 @@ AirlightResult airlight_area_light(AirlightScene s_49)
         const AirlightResult airlightresult_9 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_9;
     }
-    const AirlightResult airlightresult_10 = ConstructAirlightResult((s_49.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    const AirlightResult airlightresult_10 = ConstructAirlightResult((s_50.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
     return airlightresult_10;
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_50)
+AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 {
     bool local_190 = (bool)0;
     bool local_191 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_50);
+    const bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_190 = (s_50.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_190 = true;
     }
     bool _e10 = local_190;
     if (!(_e10)) {
-        local_191 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_191 = true;
     }
@@ -8999,7 +9014,7 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_50)
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
     }
-    const AirlightResult _e22 = airlight_area_light(s_50);
+    const AirlightResult _e22 = airlight_area_light(s_51);
     const AirlightResult airlightresult_12 = _e22;
     return airlightresult_12;
 }
@@ -9063,20 +9078,20 @@ AirlightResult airlight_point_integral(AirlightScene p_1)
     return airlightresult_16;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_51)
+AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 {
     bool local_194 = (bool)0;
     bool local_195 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_51);
+    const bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_194 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_194 = true;
     }
     bool _e10 = local_194;
     if (!(_e10)) {
-        local_195 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
@@ -9085,25 +9100,25 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_51)
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
     }
-    const AirlightResult _e22 = airlight_point_integral(s_51);
+    const AirlightResult _e22 = airlight_point_integral(s_52);
     const AirlightResult airlightresult_18 = _e22;
     return airlightresult_18;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_52)
+AirlightResult airlight_in_scatter_route(AirlightScene s_53)
 {
     bool local_196 = (bool)0;
     bool local_197 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_52);
+    const bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_196 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_196 = true;
     }
     bool _e10 = local_196;
     if (!(_e10)) {
-        local_197 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_197 = true;
     }
@@ -9112,17 +9127,17 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_52)
         const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_19;
     }
-    const AirlightCanonical _e22 = airlight_canonical(s_52);
-    const AirlightCanonical _e23 = airlight_refined(s_52, _e22);
-    const AirlightResult _e24 = airlight_limits(s_52, _e23);
+    const AirlightCanonical _e22 = airlight_canonical(s_53);
+    const AirlightCanonical _e23 = airlight_refined(s_53, _e22);
+    const AirlightResult _e24 = airlight_limits(s_53, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         const AirlightResult _e28 = airlight_overflowed(_e24);
         const AirlightResult airlightresult_20 = _e28;
         return airlightresult_20;
     }
-    const bool _e29 = airlight_isotropic_scene(s_52);
+    const bool _e29 = airlight_isotropic_scene(s_53);
     if (!(_e29)) {
-        const float2 _e31 = airlight_angle_route(s_52, _e23);
+        const float2 _e31 = airlight_angle_route(s_53, _e23);
         if ((_e31.x > 0.5)) {
             const AirlightResult _e40 = airlight_overflowed(ConstructAirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             const AirlightResult airlightresult_21 = _e40;
@@ -9133,7 +9148,7 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_52)
     return airlightresult_22;
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_53)
+AirlightResult airlight_in_scatter(AirlightScene s_54)
 {
     AirlightAdaptive st_2 = (AirlightAdaptive)0;
     uint step_3 = 0u;
@@ -9144,16 +9159,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_53)
     float f = (float)0;
     bool local_199 = (bool)0;
 
-    const bool _e1 = airlight_valid(s_53);
+    const bool _e1 = airlight_valid(s_54);
     if (!(_e1)) {
         const AirlightResult airlightresult_23 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_23;
     }
-    if ((s_53.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_54.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         const AirlightResult airlightresult_24 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_24;
     }
-    const AirlightOuter _e12 = airlight_outer(s_53);
+    const AirlightOuter _e12 = airlight_outer(s_54);
     if ((_e12.outcome == 1u)) {
         const AirlightResult airlightresult_25 = ConstructAirlightResult(0.0, 0u);
         return airlightresult_25;
@@ -9218,7 +9233,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_53)
                     }
                     bool _e85 = local_198;
                     float w_11 = (_e85 ? (c_24 - (hw_8 * node_5.x)) : (c_24 + (hw_8 * node_5.x)));
-                    const AirlightNode _e87 = airlight_outer_node(s_53, _e12, w_11);
+                    const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         const AirlightResult _e93 = airlight_node_integral(_e87);
@@ -9226,8 +9241,8 @@ AirlightResult airlight_in_scatter(AirlightScene s_53)
                             const AirlightResult airlightresult_27 = _e93;
                             return airlightresult_27;
                         }
-                        if ((s_53.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_199 = (s_53.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_54.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_199 = false;
                         }

@@ -452,8 +452,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_15 = (x * x);
     let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
-    let s_54 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_54 * x));
+    let s_55 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_55 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -510,10 +510,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_55 = (x_2 / (2f + x_2));
-    let z_17 = (s_55 * s_55);
+    let s_56 = (x_2 / (2f + x_2));
+    let z_17 = (s_56 * s_56);
     let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
-    return ((2f * s_55) * sum_14);
+    return ((2f * s_56) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -583,9 +583,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_28 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_5 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_28 * x_28) + (y_5 * y_5)) < 1f);
+    let x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_29 * x_29) + (y_6 * y_6)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -1014,8 +1014,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_1 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
             }
-            let x_29 = clamp(((c - p1_2) / width_1), 0f, 1f);
-            return ((x_29 * x_29) * (3f - (2f * x_29)));
+            let x_30 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            return ((x_30 * x_30) * (3f - (2f * x_30)));
         }
         default: {
             return 1f;
@@ -1164,15 +1164,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j;
             let xi = nodes[_e26].x;
-            let y_6 = (yc + (hw * xi));
+            let y_7 = (yc + (hw * xi));
             dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi)) / (y_6 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_7 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_6 * y_6))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_7 * y_7))));
         }
         continuing {
             let _e59 = j;
@@ -1271,10 +1271,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_30 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_30);
+            let x_31 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_31);
             if _e42 {
-                let _e43 = airlight_log1p(x_30);
+                let _e43 = airlight_log1p(x_31);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1407,8 +1407,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_31 = rule[(i_3 / 2u)].x;
-    return select(x_31, -(x_31), ((i_3 % 2u) == 0u));
+    let x_32 = rule[(i_3 / 2u)].x;
+    return select(x_32, -(x_32), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 12>) -> array<f32, 12> {
@@ -1489,8 +1489,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_32 = (lambda / f32((2u * k0_)));
-            let per_step = (x_32 * x_32);
+            let x_33 = (lambda / f32((2u * k0_)));
+            let per_step = (x_33 * x_33);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -2112,8 +2112,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_33 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_33)), (x_33 > 0f));
+    let x_34 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_34)), (x_34 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2263,10 +2263,10 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_7;
             let _e29 = airlight_node(_e8, _e28);
-            let y_7 = (yc_1 + (r_9 * _e29));
-            let weight_2 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_7 * b_5)));
-            let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_7);
-            let over_1 = (1f / (1f + (y_7 * y_7)));
+            let y_8 = (yc_1 + (r_9 * _e29));
+            let weight_2 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_8 * b_5)));
+            let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_8);
+            let over_1 = (1f / (1f + (y_8 * y_8)));
             let _e47 = i_7;
             samples_1[_e47] = ((_e41 * over_1) * weight_2);
             let _e51 = f_max_2;
@@ -2433,10 +2433,10 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_8;
             let _e23 = airlight_node(_e6, _e22);
-            let y_8 = (yc_2 + (r_10 * _e23));
-            let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_8);
+            let y_9 = (yc_2 + (r_10 * _e23));
+            let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_9);
             let _e27 = i_8;
-            samples_2[_e27] = (_e26 / (1f + (y_8 * y_8)));
+            samples_2[_e27] = (_e26 / (1f + (y_9 * y_9)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
@@ -2747,13 +2747,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_34 = (abs(alpha) + abs(beta));
+    let x_35 = (abs(alpha) + abs(beta));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_34) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_35) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2763,7 +2763,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_34) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_35) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2773,7 +2773,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_34) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_35) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2783,7 +2783,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_34) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_35) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2793,7 +2793,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_34) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_35) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2803,7 +2803,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_34) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_35) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2813,7 +2813,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_34) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_35) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2823,7 +2823,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_34) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_35) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2833,7 +2833,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_34) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_35) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2843,7 +2843,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_34) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_35) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2853,7 +2853,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_34) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_35) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2863,7 +2863,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_34) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_35) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -3155,6 +3155,11 @@ fn airlight_atan2_upper(y_3: f32, x_8: f32) -> f32 {
     return select(select((1.5707964f + _e9), (1.5707964f - _e9), positive), select((AIRLIGHT_PI - _e9), _e9, positive), near_axis);
 }
 
+fn airlight_atan2_(y_4: f32, x_9: f32) -> f32 {
+    let _e8 = airlight_atan2_upper(abs(y_4), x_9);
+    return (select(-1f, 1f, (y_4 >= 0f)) * _e8);
+}
+
 fn airlight_bounded(a_11: f32) -> f32 {
     let _e1 = airlight_hypot_one(a_11);
     return (1f / (a_11 + _e1));
@@ -3169,8 +3174,8 @@ fn airlight_angle_y(u: f32) -> f32 {
     return (u + _e5);
 }
 
-fn airlight_axis_excess(x_9: f32) -> f32 {
-    return (x_9 + sqrt((x_9 * (2f + x_9))));
+fn airlight_axis_excess(x_10: f32) -> f32 {
+    return (x_10 + sqrt((x_10 * (2f + x_10))));
 }
 
 fn airlight_angle_floor(side_1: f32, gap_1: f32, psi0_: f32, psi1_: f32, inv_hw: f32, step_1: f32) -> f32 {
@@ -3203,8 +3208,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     return (e_9 * inv_h);
 }
 
-fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_10: f32, j_1: f32) -> f32 {
-    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_10))) * j_1);
+fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_11: f32, j_1: f32) -> f32 {
+    let plain_1 = (((((2f * sigma_s_1) * intensity_3) / h_2) * exp(-(x_11))) * j_1);
     let _e13 = airlight_is_finite(plain_1);
     if _e13 {
         return plain_1;
@@ -3212,7 +3217,7 @@ fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_10: f32, j_1:
     if !((abs(j_1) > 0f)) {
         return 0f;
     }
-    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_10) + log(abs(j_1)))));
+    return (sign(j_1) * exp((((((AIRLIGHT_LN_2_ + log(sigma_s_1)) + log(intensity_3)) - log(h_2)) - x_11) + log(abs(j_1)))));
 }
 
 fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f32> {
@@ -3237,7 +3242,7 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     var i_11: u32 = 0u;
     var m_3: array<f32, 12>;
     var local_28: bool;
-    var x_11: f32 = 0f;
+    var x_12: f32 = 0f;
 
     if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return vec2<f32>(0f, 0f);
@@ -3394,8 +3399,8 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let far_pole = ((cs_2 * cs_2) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_9 = select((near_pole / cs_2), (cs_2 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_9 - _e26)), 0f))), (cs_2 > 0f));
+            let y_10 = select((near_pole / cs_2), (cs_2 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_2 > 0f));
             let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
@@ -3445,9 +3450,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     }
     if (s_11.sigma_t > 0f) {
         let _e365 = airlight_hypot_one(u0_);
-        x_11 = (s_11.sigma_t * (h_3 * _e365));
+        x_12 = (s_11.sigma_t * (h_3 * _e365));
     }
-    let _e370 = x_11;
+    let _e370 = x_12;
     let _e371 = value_1;
     let _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5f));
     return vec2<f32>(1f, _e375);
@@ -3496,9 +3501,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     return vec2<f32>(_e63, _e64);
 }
 
-fn airlight_cosine(g_14: AirlightCanonical, sigma_10: f32, y_4: f32) -> f32 {
-    let y2_1 = (y_4 * y_4);
-    return ((((1f - y2_1) * (sigma_10 * g_14.d_el)) + ((y_4 + y_4) * g_14.d_c)) / (1f + y2_1));
+fn airlight_cosine(g_14: AirlightCanonical, sigma_10: f32, y_5: f32) -> f32 {
+    let y2_1 = (y_5 * y_5);
+    return ((((1f - y2_1) * (sigma_10 * g_14.d_el)) + ((y_5 + y_5) * g_14.d_c)) / (1f + y2_1));
 }
 
 fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, bound: f32, lo_1: f32, hi_1: f32) -> bool {
@@ -3879,7 +3884,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     var infinite_1: bool = true;
     var local_43: bool;
     var local_44: bool;
-    var x_12: f32 = 0f;
+    var x_13: f32 = 0f;
 
     let h_4 = g_18.h;
     let a_s = ((g_18.x_h - g_18.t_lo) / h_4);
@@ -3921,13 +3926,13 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let half_17 = AirlightHalf(false, _e47, _e9, _e48, _e49, _e50, _e51);
     let _e55 = airlight_is_finite(_e8);
     if _e55 {
-        x_12 = (big_h_3 * _e8);
+        x_13 = (big_h_3 * _e8);
     } else {
         if (s_14.sigma_t > 0f) {
-            x_12 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
+            x_13 = (s_14.sigma_t * abs((g_18.x_h - g_18.t_lo)));
         }
     }
-    let _e66 = x_12;
+    let _e66 = x_13;
     let _e67 = airlight_moment_zero_weighted(half_17, _e66);
     let _e73 = airlight_integrand(s_14, g_18, -1f, 0f);
     let _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
@@ -4822,8 +4827,8 @@ fn airlight_canonical(s_20: AirlightScene) -> AirlightCanonical {
     return AirlightCanonical(_e19, x_h_2, dot(_e2, _e32), _e34, s_20.t_min, select(s_20.t_max, 0f, infinite_4), infinite_4);
 }
 
-fn airlight_opaque(x_13: f32, key: u32) -> f32 {
-    return bitcast<f32>((bitcast<u32>(x_13) ^ key));
+fn airlight_opaque(x_14: f32, key: u32) -> f32 {
+    return bitcast<f32>((bitcast<u32>(x_14) ^ key));
 }
 
 fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
@@ -4835,8 +4840,8 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     return vec2<f32>(_e4, select(0f, e_10, _e12));
 }
 
-fn airlight_split_high(x_14: f32) -> f32 {
-    return bitcast<f32>(((bitcast<u32>(x_14) + 2048u) & 4294963200u));
+fn airlight_split_high(x_15: f32) -> f32 {
+    return bitcast<f32>(((bitcast<u32>(x_15) + 2048u) & 4294963200u));
 }
 
 fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
@@ -5437,10 +5442,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
     return _e67;
 }
 
-fn airlight_asinh(x_15: f32) -> f32 {
+fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_38 = abs(x_15);
+    let a_38 = abs(x_16);
     r_4 = (AIRLIGHT_LN_2_ + log(a_38));
     if (a_38 <= 4096f) {
         let _e17 = airlight_log1p((a_38 + ((a_38 * a_38) / (1f + sqrt((1f + (a_38 * a_38)))))));
@@ -5448,7 +5453,7 @@ fn airlight_asinh(x_15: f32) -> f32 {
     }
     let _e18 = r_4;
     let _e19 = r_4;
-    return select(_e18, -(_e19), (x_15 < 0f));
+    return select(_e18, -(_e19), (x_16 < 0f));
 }
 
 fn airlight_to_w(g_21: AirlightOuter, s_22: f32) -> f32 {
@@ -5459,18 +5464,18 @@ fn airlight_to_w(g_21: AirlightOuter, s_22: f32) -> f32 {
     return s_22;
 }
 
-fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
-    let r_12 = (x_16 - 1.5707964f);
+fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
+    let r_12 = (x_17 - 1.5707964f);
     let z_18 = (r_12 * r_12);
     let cos_r = (1f - ((z_18 / 2f) * (1f - ((z_18 / 12f) * (1f - ((z_18 / 30f) * (1f - ((z_18 / 56f) * (1f - ((z_18 / 90f) * (1f - ((z_18 / 132f) * (1f - (z_18 / 182f))))))))))))));
     let sin_r = (r_12 * (1f - ((z_18 / 6f) * (1f - ((z_18 / 20f) * (1f - ((z_18 / 42f) * (1f - ((z_18 / 72f) * (1f - ((z_18 / 110f) * (1f - ((z_18 / 156f) * (1f - (z_18 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_17: f32) -> f32 {
-    let a_39 = abs(x_17);
+fn airlight_acos(x_18: f32) -> f32 {
+    let a_39 = abs(x_18);
     let _e8 = airlight_atan(sqrt(((1f - a_39) / (1f + a_39))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_17 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
@@ -5567,22 +5572,22 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_35 = dot(_e111, _e112);
+        let x_36 = dot(_e111, _e112);
         let _e114 = u_1;
-        let y_10 = dot(_e111, cross(l_3, _e114));
+        let y_11 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_35 * x_35) + (y_10 * y_10)));
+        g_22.sin_r = sqrt(((x_36 * x_36) + (y_11 * y_11)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_35, abs(y_10));
-            let phi_r = (select(1f, -1f, (y_10 < 0f)) * _e140);
+            let _e140 = airlight_angle(x_36, abs(y_11));
+            let phi_r = (select(1f, -1f, (y_11 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_35 / _e145), (-(y_10) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_36 / _e145), (-(y_11) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5769,10 +5774,10 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     return _e390;
 }
 
-fn airlight_lobe_at(q_1: AirlightLobe, x_18: f32) -> f32 {
+fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
     var local_142: bool;
 
-    let _e4 = airlight_cos_sin((0.5f * x_18));
+    let _e4 = airlight_cos_sin((0.5f * x_19));
     let s2_ = (_e4.y * _e4.y);
     let cos_x = (1f - (2f * s2_));
     let sin_x = ((2f * _e4.y) * _e4.x);
@@ -5802,11 +5807,11 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
     return (w_1 * _e22);
 }
 
-fn airlight_arc_end(x_19: f32, cut: f32) -> f32 {
+fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     var end_1: f32;
     var local_143: bool;
 
-    end_1 = x_19;
+    end_1 = x_20;
     let _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         let _e6 = end_1;
@@ -6196,7 +6201,7 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> AirlightNode {
+fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> AirlightNode {
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
@@ -6215,8 +6220,8 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_36 = min(u32(max(floor(x_20), 0f)), (g_25.panels - 1u));
-        let t_8 = (x_20 - f32(i_36));
+        let i_36 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_21 - f32(i_36));
         let a_41 = g_25.gamma[i_36];
         let b_19 = g_25.gamma[(i_36 + 1u)];
         let w_8 = (b_19 - a_41);
@@ -6309,10 +6314,10 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_20: f32) -> A
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_20;
+        at_1 = x_21;
         if (g_25.scale > 0f) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_20)));
-            ds = (g_25.scale * cosh(x_20));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
+            ds = (g_25.scale * cosh(x_21));
         }
         let _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -6502,9 +6507,14 @@ fn airlight_graded_node(graded: f32, node: f32) -> vec2<f32> {
     return vec2<f32>(node, 1f);
 }
 
-fn airlight_far_from_edge(s_32: AirlightScene, depth: f32, z_9: f32) -> bool {
-    let _e3 = airlight_emission_scale(s_32);
-    return (depth >= ((AIRLIGHT_EDGE_REACH * z_9) * select(1f, min(_e3, 1f), (_e3 > 0f))));
+fn airlight_narrowed(s_32: AirlightScene, length_: f32) -> f32 {
+    let _e2 = airlight_emission_scale(s_32);
+    return (length_ * select(1f, min(_e2, 1f), (_e2 > 0f)));
+}
+
+fn airlight_far_from_edge(s_33: AirlightScene, depth: f32, z_9: f32) -> bool {
+    let _e4 = airlight_narrowed(s_33, z_9);
+    return (depth >= (AIRLIGHT_EDGE_REACH * _e4));
 }
 
 fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
@@ -6522,12 +6532,12 @@ fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
     return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
 }
 
-fn airlight_phase_lobes(s_33: AirlightScene) -> vec4<f32> {
+fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
     var first: vec2<f32> = vec2<f32>(1f, 0f);
     var second: vec2<f32> = vec2<f32>(1f, 0f);
 
-    let p0_5 = s_33.phase_param_a;
-    switch s_33.phase_kind {
+    let p0_5 = s_34.phase_param_a;
+    switch s_34.phase_kind {
         case 2u, 4u: {
             let _e11 = airlight_hg_gap(p0_5);
             let _e12 = airlight_lobe(p0_5, _e11);
@@ -6542,8 +6552,8 @@ fn airlight_phase_lobes(s_33: AirlightScene) -> vec4<f32> {
             let _e22 = airlight_hg_gap(p0_5);
             let _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            let _e26 = airlight_hg_gap(s_33.phase_param_b);
-            let _e27 = airlight_lobe(s_33.phase_param_b, _e26);
+            let _e26 = airlight_hg_gap(s_34.phase_param_b);
+            let _e27 = airlight_lobe(s_34.phase_param_b, _e26);
             second = _e27;
         }
         default: {
@@ -6581,12 +6591,11 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     if infinite_3 {
         return 1.5707964f;
     }
-    let u_9 = (t_3 - a_17.x_h);
-    let _e13 = airlight_atan2_upper(abs(u_9), a_17.h_eff);
-    return (select(-1f, 1f, (u_9 >= 0f)) * _e13);
+    let _e7 = airlight_atan2_((t_3 - a_17.x_h), a_17.h_eff);
+    return _e7;
 }
 
-fn airlight_area(s_34: AirlightScene) -> AirlightArea {
+fn airlight_area(s_35: AirlightScene) -> AirlightArea {
     var a_18: AirlightArea;
     var local_172: bool;
     var cut_count: u32 = 0u;
@@ -6604,12 +6613,12 @@ fn airlight_area(s_34: AirlightScene) -> AirlightArea {
     var local_176: bool;
 
     let zero = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_34);
-    a_18 = AirlightArea(zero, s_34.light_position, zero, zero, zero, zero, zero, zero, s_34.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    let _e28 = airlight_isotropic_phase(s_34);
+    let _e21 = airlight_phase_lobes(s_35);
+    a_18 = AirlightArea(zero, s_35.light_position, zero, zero, zero, zero, zero, zero, s_35.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    let _e28 = airlight_isotropic_phase(s_35);
     a_18.isotropic = _e28;
-    if !((s_34.intensity == 0f)) {
-        local_172 = (s_34.sigma_s == 0f);
+    if !((s_35.intensity == 0f)) {
+        local_172 = (s_35.sigma_s == 0f);
     } else {
         local_172 = true;
     }
@@ -6619,14 +6628,14 @@ fn airlight_area(s_34: AirlightScene) -> AirlightArea {
         let _e42 = a_18;
         return _e42;
     }
-    let o_6 = s_34.origin;
-    let _e45 = airlight_normalize(s_34.dir);
+    let o_6 = s_35.origin;
+    let _e45 = airlight_normalize(s_35.dir);
     a_18.d = _e45;
-    let infinite_6 = ((s_34.flags & 1u) != 0u);
-    let t0_2 = s_34.t_min;
-    centre = s_34.light_position;
-    size = s_34.light_param_a;
-    if (s_34.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+    let infinite_6 = ((s_35.flags & 1u) != 0u);
+    let t0_2 = s_35.t_min;
+    centre = s_35.light_position;
+    size = s_35.light_param_a;
+    if (s_35.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e67 = a_18.c;
         let oc = (o_6 - _e67);
         let b_20 = dot(oc, _e45);
@@ -6642,15 +6651,15 @@ fn airlight_area(s_34: AirlightScene) -> AirlightArea {
             cut_count = 2u;
         }
     } else {
-        if (s_34.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e98 = airlight_normalize(s_34.light_axis);
+        if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e98 = airlight_normalize(s_35.light_axis);
             a_18.n = _e98;
             let _e101 = a_18.n;
             let _e102 = airlight_basis_e1_(_e101);
             a_18.a1_ = _e102;
         } else {
-            a_18.eu = s_34.light_axis;
-            a_18.ev = s_34.light_end;
+            a_18.eu = s_35.light_axis;
+            a_18.ev = s_35.light_end;
             let _e109 = a_18.eu;
             let _e111 = a_18.ev;
             let _e113 = airlight_normalize(cross(_e109, _e111));
@@ -6696,13 +6705,13 @@ fn airlight_area(s_34: AirlightScene) -> AirlightArea {
     let _e184 = size;
     let _e185 = size;
     a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
-    t_end_1 = s_34.t_max;
+    t_end_1 = s_35.t_max;
     end_infinite = infinite_6;
-    if (s_34.sigma_t > 0f) {
+    if (s_35.sigma_t > 0f) {
         let _e195 = centre;
         let _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
         let _e201 = size;
-        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_34.sigma_t));
+        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_35.sigma_t));
         if !(infinite_6) {
             let _e210 = t_end_1;
             local_173 = (reach_1 < _e210);
@@ -6785,7 +6794,7 @@ fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_35: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+fn airlight_flat_node(s_36: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
@@ -6795,66 +6804,66 @@ fn airlight_flat_node(s_35: AirlightScene, a_19: AirlightArea, above_1: Airlight
     let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_35, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
-    let _e52 = airlight_emitted(s_35, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_35.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    let _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    let _e52 = airlight_emitted(s_36, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_36: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_37: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    let _e8 = airlight_graded_range(s_36, _e7);
+    let _e8 = airlight_graded_range(s_37, _e7);
     let graded_5 = _e8.y;
     let c_16 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_36, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
@@ -7025,19 +7034,19 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
     return _e93;
 }
 
-fn airlight_flat_lobe_node(s_37: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_26: f32) -> f32 {
+fn airlight_flat_lobe_node(s_38: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_26: f32) -> f32 {
     let _e7 = airlight_cos_sin_half_turn(g_26);
     let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
     let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
     if !((c_17 > 0f)) {
         return 0f;
     }
-    let _e26 = airlight_emitted(s_37, c_17);
-    let _e38 = airlight_area_phase(s_37, (lobe_1.sign * _e13.x));
-    return (((((_e26 * exp(min(((-(s_37.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    let _e26 = airlight_emitted(s_38, c_17);
+    let _e38 = airlight_area_phase(s_38, (lobe_1.sign * _e13.x));
+    return (((((_e26 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
 }
 
-fn airlight_flat_lobe_along(s_38: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
@@ -7053,80 +7062,80 @@ fn airlight_flat_lobe_along(s_38: AirlightScene, z_13: f32, o_4: AirlightOutline
     let c_18 = (0.5f * _e45);
     let hw_3 = (0.5f * _e45);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_38, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
 }
 
 fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 {
-    let y_11 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
-    let _e23 = airlight_atan2_upper(abs(y_11), ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
-    return (select(1f, -1f, (y_11 < 0f)) * _e23);
+    let y_12 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    let _e17 = airlight_atan2_(y_12, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    return _e17;
 }
 
-fn airlight_wrap_turn(x_21: f32) -> f32 {
-    return (x_21 - (6.2831855f * round((x_21 / 6.2831855f))));
+fn airlight_wrap_turn(x_22: f32) -> f32 {
+    return (x_22 - (6.2831855f * round((x_22 / 6.2831855f))));
 }
 
-fn airlight_cos_sin_turns(x_22: f32) -> vec2<f32> {
-    let _e1 = airlight_wrap_turn(x_22);
+fn airlight_cos_sin_turns(x_23: f32) -> vec2<f32> {
+    let _e1 = airlight_wrap_turn(x_23);
     let _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
 
-fn airlight_sort4_(x_23: vec4<f32>) -> vec4<f32> {
-    let a_45 = vec4<f32>(min(x_23.x, x_23.y), max(x_23.x, x_23.y), min(x_23.z, x_23.w), max(x_23.z, x_23.w));
+fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
+    let a_45 = vec4<f32>(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
     let b_22 = vec4<f32>(min(a_45.x, a_45.z), min(a_45.y, a_45.w), max(a_45.x, a_45.z), max(a_45.y, a_45.w));
     return vec4<f32>(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
 }
 
-fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var i_29: u32 = 0u;
     var i_30: u32 = 0u;
@@ -7149,7 +7158,7 @@ fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline
                     let _e21 = i_29;
                     let _e22 = airlight_azimuths(true, _e21);
                     let _e23 = sum_9;
-                    let _e26 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
+                    let _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
                 continuing {
@@ -7182,7 +7191,7 @@ fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline
                 let _e97 = airlight_azimuths(false, _e96);
                 let _e98 = sum_9;
                 let _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                let _e107 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e106);
+                let _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
             continuing {
@@ -7239,7 +7248,7 @@ fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline
                     let _e196 = airlight_triangle_rule(_e195);
                     let _e197 = sum_9;
                     let _e203 = airlight_cos_sin_turns((c_19 + (hw_4 * _e196.x)));
-                    let _e204 = airlight_flat_lobe_along(s_39, z_14, o_5, lobe_3, _e5, v_9, _e203);
+                    let _e204 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e203);
                     sum_9 = (_e197 + ((_e196.y * hw_4) * _e204));
                 }
                 continuing {
@@ -7257,7 +7266,7 @@ fn airlight_flat_about_lobe(s_39: AirlightScene, z_14: f32, o_5: AirlightOutline
     return _e213;
 }
 
-fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f32 {
+fn airlight_disc(s_41: AirlightScene, a_23: AirlightArea, x_25: vec3<f32>) -> f32 {
     var local_181: bool;
     var local_182: bool;
     var u_6: vec2<f32> = vec2(0f);
@@ -7267,7 +7276,7 @@ fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     var e_8: vec2<f32>;
     var r_max_1: f32;
 
-    let rel = (x_24 - a_23.c);
+    let rel = (x_25 - a_23.c);
     let z_20 = dot(rel, a_23.n);
     if !((z_20 > 0f)) {
         return 0f;
@@ -7280,12 +7289,12 @@ fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
     let _e30 = airlight_flat_lobe(a_23, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_40, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_40, (radius_2 - rf), z_20);
+            let _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
             local_182 = _e44;
         } else {
             local_182 = true;
@@ -7330,7 +7339,7 @@ fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
             let _e120 = above_3;
             let _e121 = e_8;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_40, a_23, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_41, a_23, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -7342,14 +7351,14 @@ fn airlight_disc(s_40: AirlightScene, a_23: AirlightArea, x_24: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_42: AirlightScene, a_24: AirlightArea, x_26: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
     var local_183: bool;
     var sum_11: f32 = 0f;
     var i_33: u32 = 0u;
     var j_7: u32;
 
-    let rel_1 = (x_25 - a_24.c);
+    let rel_1 = (x_26 - a_24.c);
     let z_21 = dot(rel_1, a_24.n);
     if !((z_21 > 0f)) {
         return 0f;
@@ -7363,13 +7372,13 @@ fn airlight_parallelogram(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
     let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
     let _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_41, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_8 = (_e76.xy + foot);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_41, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        let _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_183 = _e89;
     } else {
         local_183 = false;
@@ -7402,52 +7411,58 @@ fn airlight_parallelogram(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f3
             let el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
             let h_9 = (area / el);
             let m_12 = vec2<f32>((e_15.y / el), (-(e_15.x) / el));
-            let _e147 = airlight_atan2_upper(area, ((ca.x * cb_1.x) + (ca.y * cb_1.y)));
-            let start_4 = (ca / vec2(sqrt(((ca.x * ca.x) + (ca.y * ca.y)))));
+            let t_12 = (e_15 / vec2(el));
+            let _e143 = airlight_narrowed(s_42, _e94.rho0_);
+            let reach_2 = sqrt(((h_9 * h_9) + (_e143 * _e143)));
+            let _e149 = airlight_atan2_(dot(ca, t_12), reach_2);
+            let _e151 = airlight_atan2_(dot(cb_1, t_12), reach_2);
             j_7 = 0u;
             loop {
-                let _e160 = j_7;
-                if (_e160 < 12u) {
+                let _e154 = j_7;
+                if (_e154 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e163 = j_7;
-                    let _e164 = airlight_triangle_rule(_e163);
-                    let _e171 = airlight_cos_sin_half_turn(((0.5f * _e147) * (1f + _e164.x)));
-                    let dir_3 = vec2<f32>(((_e171.x * start_4.x) - (_e171.y * start_4.y)), ((_e171.y * start_4.x) + (_e171.x * start_4.y)));
-                    let _e187 = sum_11;
-                    let _e200 = airlight_flat_radial(s_41, a_24, _e94, dir_3, (h_9 / ((dir_3.x * m_12.x) + (dir_3.y * m_12.y))));
-                    sum_11 = (_e187 + (((_e164.y * 0.5f) * _e147) * _e200));
+                    let _e157 = j_7;
+                    let _e158 = airlight_triangle_rule(_e157);
+                    let _e170 = airlight_cos_sin_half_turn((((0.5f * (_e149 + _e151)) + ((0.5f * (_e151 - _e149)) * _e158.x)) + 1.5707964f));
+                    let sigma_13 = ((reach_2 * -(_e170.x)) / _e170.y);
+                    let r2_4 = ((h_9 * h_9) + (sigma_13 * sigma_13));
+                    let r_14 = sqrt(r2_4);
+                    let dir_3 = (((h_9 * m_12) + (sigma_13 * t_12)) / vec2(r_14));
+                    let _e185 = sum_11;
+                    let _e198 = airlight_flat_radial(s_42, a_24, _e94, dir_3, r_14);
+                    sum_11 = (_e185 + ((((((_e158.y * 0.5f) * (_e151 - _e149)) * h_9) * reach_2) / ((_e170.y * _e170.y) * r2_4)) * _e198));
                 }
                 continuing {
-                    let _e204 = j_7;
-                    j_7 = (_e204 + 1u);
+                    let _e202 = j_7;
+                    j_7 = (_e202 + 1u);
                 }
             }
         }
         continuing {
-            let _e207 = i_33;
-            i_33 = (_e207 + 1u);
+            let _e205 = i_33;
+            i_33 = (_e205 + 1u);
         }
     }
-    let _e209 = sum_11;
-    return _e209;
+    let _e207 = sum_11;
+    return _e207;
 }
 
-fn airlight_cap_row(s_42: AirlightScene, cap: AirlightCap, graded_3: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_3: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
     let _e5 = airlight_graded_node(graded_3, node_2);
     let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
-    let _e28 = airlight_emitted(s_42, _e9.x);
-    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_42.sigma_t) * dist_1), 0f)));
+    let _e28 = airlight_emitted(s_43, _e9.x);
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_43: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_44: AirlightScene, a_25: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
     var i_34: u32 = 0u;
@@ -7458,44 +7473,44 @@ fn airlight_sphere_cap(s_43: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let ad = dot(cap_1.a, a_25.d);
     let e1d = dot(_e4, a_25.d);
     let e2d = dot(e2_2, a_25.d);
-    let _e15 = airlight_graded_range(s_43, 1.5707964f);
+    let _e15 = airlight_graded_range(s_44, 1.5707964f);
     let graded_7 = _e15.y;
     let c_20 = (0.5f * _e15.x);
     let hw_5 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e63 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e70 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e77 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e84 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e91 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e98 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e105 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e112 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e119 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e126 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e133 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e140 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e147 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e154 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e161 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_43, cap_1, graded_7, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e168 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[15] = _e168;
     if a_25.isotropic {
-        let _e174 = airlight_area_phase(s_43, 0f);
+        let _e174 = airlight_area_phase(s_44, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_12;
         let _e179 = rows[0].x;
@@ -7563,97 +7578,97 @@ fn airlight_sphere_cap(s_43: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
             let _e291 = rows[0].x;
             let _e294 = rows[0].y;
             let _e298 = rows[0].z;
-            let _e301 = airlight_area_phase(s_43, ((_e294 * ad) + (_e298 * across_1)));
+            let _e301 = airlight_area_phase(s_44, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             let _e304 = at_2;
             let _e307 = rows[1].x;
             let _e310 = rows[1].y;
             let _e314 = rows[1].z;
-            let _e317 = airlight_area_phase(s_43, ((_e310 * ad) + (_e314 * across_1)));
+            let _e317 = airlight_area_phase(s_44, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             let _e320 = at_2;
             let _e323 = rows[2].x;
             let _e326 = rows[2].y;
             let _e330 = rows[2].z;
-            let _e333 = airlight_area_phase(s_43, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_44, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[3].x;
             let _e342 = rows[3].y;
             let _e346 = rows[3].z;
-            let _e349 = airlight_area_phase(s_43, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_44, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[4].x;
             let _e358 = rows[4].y;
             let _e362 = rows[4].z;
-            let _e365 = airlight_area_phase(s_43, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_44, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[5].x;
             let _e374 = rows[5].y;
             let _e378 = rows[5].z;
-            let _e381 = airlight_area_phase(s_43, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_44, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[6].x;
             let _e390 = rows[6].y;
             let _e394 = rows[6].z;
-            let _e397 = airlight_area_phase(s_43, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_44, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[7].x;
             let _e406 = rows[7].y;
             let _e410 = rows[7].z;
-            let _e413 = airlight_area_phase(s_43, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_44, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[8].x;
             let _e422 = rows[8].y;
             let _e426 = rows[8].z;
-            let _e429 = airlight_area_phase(s_43, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_44, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[9].x;
             let _e438 = rows[9].y;
             let _e442 = rows[9].z;
-            let _e445 = airlight_area_phase(s_43, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_44, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[10].x;
             let _e454 = rows[10].y;
             let _e458 = rows[10].z;
-            let _e461 = airlight_area_phase(s_43, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_44, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[11].x;
             let _e470 = rows[11].y;
             let _e474 = rows[11].z;
-            let _e477 = airlight_area_phase(s_43, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_44, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[12].x;
             let _e486 = rows[12].y;
             let _e490 = rows[12].z;
-            let _e493 = airlight_area_phase(s_43, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_44, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[13].x;
             let _e502 = rows[13].y;
             let _e506 = rows[13].z;
-            let _e509 = airlight_area_phase(s_43, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_44, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[14].x;
             let _e518 = rows[14].y;
             let _e522 = rows[14].z;
-            let _e525 = airlight_area_phase(s_43, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_44, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[15].x;
             let _e534 = rows[15].y;
             let _e538 = rows[15].z;
-            let _e541 = airlight_area_phase(s_43, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_44, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = sum_12;
             let _e546 = at_2;
@@ -7668,18 +7683,18 @@ fn airlight_sphere_cap(s_43: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_44: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_4: f32, g_27: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_45: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_4: f32, g_27: f32) -> f32 {
     let _e8 = airlight_cos_sin_half_turn(g_27);
     let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_4 * _e8.y) / _e8.x)));
     let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e43 = airlight_emitted(s_44, (root_5 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_44, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_44.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
+    let _e43 = airlight_emitted(s_45, (root_5 / cap_2.radius));
+    let _e53 = airlight_area_phase(s_45, (sign_1 * _e14.x));
+    return (((((_e43 * exp(min((-(s_45.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
 }
 
-fn airlight_sphere_about_lobe(s_45: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_46: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
@@ -7722,119 +7737,117 @@ fn airlight_sphere_about_lobe(s_45: AirlightScene, a_26: AirlightArea, cap_3: Ai
                 wpsi = ((_e51.z * _e73) * _e51.x);
             }
             let _e77 = big_b_1;
-            let _e83 = big_b_1;
-            let _e85 = airlight_atan2_upper(abs(_e83), cos_p_1);
-            let mid_3 = (select(1f, -1f, (_e77 < 0f)) * _e85);
-            let _e89 = big_b_1;
-            let _e90 = big_b_1;
-            let _e97 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e89 * _e90)))), 1f));
+            let _e78 = airlight_atan2_(_e77, cos_p_1);
+            let _e81 = big_b_1;
+            let _e82 = big_b_1;
+            let _e89 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e81 * _e82)))), 1f));
             start_3 = 0f;
             if !(inside_3) {
-                start_3 = max((mid_3 - _e97), 0f);
+                start_3 = max((_e78 - _e89), 0f);
             }
-            let to = (mid_3 + _e97);
-            let _e105 = start_3;
-            let graded_8 = max(scale_1, _e105);
-            let _e107 = start_3;
-            let _e110 = airlight_atan(((to - _e107) / graded_8));
-            let c_21 = (0.5f * _e110);
-            let hw_6 = (0.5f * _e110);
+            let to = (_e78 + _e89);
+            let _e97 = start_3;
+            let graded_8 = max(scale_1, _e97);
+            let _e99 = start_3;
+            let _e102 = airlight_atan(((to - _e99) / graded_8));
+            let c_21 = (0.5f * _e102);
+            let hw_6 = (0.5f * _e102);
             around = 0f;
-            let _e117 = around;
-            let _e120 = big_b_1;
-            let _e121 = start_3;
-            let _e125 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e120, _e121, graded_8, (c_21 - (0.09501251f * hw_6)));
-            around = (_e117 + ((0.1894506f * hw_6) * _e125));
-            let _e128 = around;
-            let _e131 = big_b_1;
-            let _e132 = start_3;
-            let _e136 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e131, _e132, graded_8, (c_21 + (0.09501251f * hw_6)));
-            around = (_e128 + ((0.1894506f * hw_6) * _e136));
-            let _e139 = around;
-            let _e142 = big_b_1;
-            let _e143 = start_3;
-            let _e147 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e142, _e143, graded_8, (c_21 - (0.28160354f * hw_6)));
-            around = (_e139 + ((0.18260342f * hw_6) * _e147));
-            let _e150 = around;
-            let _e153 = big_b_1;
-            let _e154 = start_3;
-            let _e158 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e153, _e154, graded_8, (c_21 + (0.28160354f * hw_6)));
-            around = (_e150 + ((0.18260342f * hw_6) * _e158));
-            let _e161 = around;
-            let _e164 = big_b_1;
-            let _e165 = start_3;
-            let _e169 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e164, _e165, graded_8, (c_21 - (0.45801678f * hw_6)));
-            around = (_e161 + ((0.16915652f * hw_6) * _e169));
-            let _e172 = around;
-            let _e175 = big_b_1;
-            let _e176 = start_3;
-            let _e180 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e175, _e176, graded_8, (c_21 + (0.45801678f * hw_6)));
-            around = (_e172 + ((0.16915652f * hw_6) * _e180));
-            let _e183 = around;
-            let _e186 = big_b_1;
-            let _e187 = start_3;
-            let _e191 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e186, _e187, graded_8, (c_21 - (0.61787623f * hw_6)));
-            around = (_e183 + ((0.14959599f * hw_6) * _e191));
-            let _e194 = around;
-            let _e197 = big_b_1;
-            let _e198 = start_3;
-            let _e202 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e197, _e198, graded_8, (c_21 + (0.61787623f * hw_6)));
-            around = (_e194 + ((0.14959599f * hw_6) * _e202));
-            let _e205 = around;
-            let _e208 = big_b_1;
-            let _e209 = start_3;
-            let _e213 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e208, _e209, graded_8, (c_21 - (0.7554044f * hw_6)));
-            around = (_e205 + ((0.12462897f * hw_6) * _e213));
-            let _e216 = around;
-            let _e219 = big_b_1;
-            let _e220 = start_3;
-            let _e224 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e219, _e220, graded_8, (c_21 + (0.7554044f * hw_6)));
-            around = (_e216 + ((0.12462897f * hw_6) * _e224));
-            let _e227 = around;
-            let _e230 = big_b_1;
-            let _e231 = start_3;
-            let _e235 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e230, _e231, graded_8, (c_21 - (0.8656312f * hw_6)));
-            around = (_e227 + ((0.09515851f * hw_6) * _e235));
-            let _e238 = around;
-            let _e241 = big_b_1;
-            let _e242 = start_3;
-            let _e246 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e241, _e242, graded_8, (c_21 + (0.8656312f * hw_6)));
-            around = (_e238 + ((0.09515851f * hw_6) * _e246));
-            let _e249 = around;
-            let _e252 = big_b_1;
-            let _e253 = start_3;
-            let _e257 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e252, _e253, graded_8, (c_21 - (0.944575f * hw_6)));
-            around = (_e249 + ((0.062253524f * hw_6) * _e257));
-            let _e260 = around;
-            let _e263 = big_b_1;
-            let _e264 = start_3;
-            let _e268 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e263, _e264, graded_8, (c_21 + (0.944575f * hw_6)));
-            around = (_e260 + ((0.062253524f * hw_6) * _e268));
-            let _e271 = around;
-            let _e274 = big_b_1;
-            let _e275 = start_3;
-            let _e279 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e274, _e275, graded_8, (c_21 - (0.9894009f * hw_6)));
-            around = (_e271 + ((0.02715246f * hw_6) * _e279));
-            let _e282 = around;
-            let _e285 = big_b_1;
-            let _e286 = start_3;
-            let _e290 = airlight_sphere_lobe_node(s_45, cap_3, sign_2, cos_p_1, _e285, _e286, graded_8, (c_21 + (0.9894009f * hw_6)));
-            around = (_e282 + ((0.02715246f * hw_6) * _e290));
-            let _e293 = sum_13;
-            let _e294 = wpsi;
-            let _e295 = around;
-            sum_13 = (_e293 + (_e294 * _e295));
+            let _e109 = around;
+            let _e112 = big_b_1;
+            let _e113 = start_3;
+            let _e117 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e112, _e113, graded_8, (c_21 - (0.09501251f * hw_6)));
+            around = (_e109 + ((0.1894506f * hw_6) * _e117));
+            let _e120 = around;
+            let _e123 = big_b_1;
+            let _e124 = start_3;
+            let _e128 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e123, _e124, graded_8, (c_21 + (0.09501251f * hw_6)));
+            around = (_e120 + ((0.1894506f * hw_6) * _e128));
+            let _e131 = around;
+            let _e134 = big_b_1;
+            let _e135 = start_3;
+            let _e139 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e134, _e135, graded_8, (c_21 - (0.28160354f * hw_6)));
+            around = (_e131 + ((0.18260342f * hw_6) * _e139));
+            let _e142 = around;
+            let _e145 = big_b_1;
+            let _e146 = start_3;
+            let _e150 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e145, _e146, graded_8, (c_21 + (0.28160354f * hw_6)));
+            around = (_e142 + ((0.18260342f * hw_6) * _e150));
+            let _e153 = around;
+            let _e156 = big_b_1;
+            let _e157 = start_3;
+            let _e161 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e156, _e157, graded_8, (c_21 - (0.45801678f * hw_6)));
+            around = (_e153 + ((0.16915652f * hw_6) * _e161));
+            let _e164 = around;
+            let _e167 = big_b_1;
+            let _e168 = start_3;
+            let _e172 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e167, _e168, graded_8, (c_21 + (0.45801678f * hw_6)));
+            around = (_e164 + ((0.16915652f * hw_6) * _e172));
+            let _e175 = around;
+            let _e178 = big_b_1;
+            let _e179 = start_3;
+            let _e183 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e178, _e179, graded_8, (c_21 - (0.61787623f * hw_6)));
+            around = (_e175 + ((0.14959599f * hw_6) * _e183));
+            let _e186 = around;
+            let _e189 = big_b_1;
+            let _e190 = start_3;
+            let _e194 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e189, _e190, graded_8, (c_21 + (0.61787623f * hw_6)));
+            around = (_e186 + ((0.14959599f * hw_6) * _e194));
+            let _e197 = around;
+            let _e200 = big_b_1;
+            let _e201 = start_3;
+            let _e205 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e200, _e201, graded_8, (c_21 - (0.7554044f * hw_6)));
+            around = (_e197 + ((0.12462897f * hw_6) * _e205));
+            let _e208 = around;
+            let _e211 = big_b_1;
+            let _e212 = start_3;
+            let _e216 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e211, _e212, graded_8, (c_21 + (0.7554044f * hw_6)));
+            around = (_e208 + ((0.12462897f * hw_6) * _e216));
+            let _e219 = around;
+            let _e222 = big_b_1;
+            let _e223 = start_3;
+            let _e227 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e222, _e223, graded_8, (c_21 - (0.8656312f * hw_6)));
+            around = (_e219 + ((0.09515851f * hw_6) * _e227));
+            let _e230 = around;
+            let _e233 = big_b_1;
+            let _e234 = start_3;
+            let _e238 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e233, _e234, graded_8, (c_21 + (0.8656312f * hw_6)));
+            around = (_e230 + ((0.09515851f * hw_6) * _e238));
+            let _e241 = around;
+            let _e244 = big_b_1;
+            let _e245 = start_3;
+            let _e249 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e244, _e245, graded_8, (c_21 - (0.944575f * hw_6)));
+            around = (_e241 + ((0.062253524f * hw_6) * _e249));
+            let _e252 = around;
+            let _e255 = big_b_1;
+            let _e256 = start_3;
+            let _e260 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e255, _e256, graded_8, (c_21 + (0.944575f * hw_6)));
+            around = (_e252 + ((0.062253524f * hw_6) * _e260));
+            let _e263 = around;
+            let _e266 = big_b_1;
+            let _e267 = start_3;
+            let _e271 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e266, _e267, graded_8, (c_21 - (0.9894009f * hw_6)));
+            around = (_e263 + ((0.02715246f * hw_6) * _e271));
+            let _e274 = around;
+            let _e277 = big_b_1;
+            let _e278 = start_3;
+            let _e282 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e277, _e278, graded_8, (c_21 + (0.9894009f * hw_6)));
+            around = (_e274 + ((0.02715246f * hw_6) * _e282));
+            let _e285 = sum_13;
+            let _e286 = wpsi;
+            let _e287 = around;
+            sum_13 = (_e285 + (_e286 * _e287));
         }
         continuing {
-            let _e299 = i_35;
-            i_35 = (_e299 + 1u);
+            let _e291 = i_35;
+            i_35 = (_e291 + 1u);
         }
     }
-    let _e301 = sum_13;
-    return _e301;
+    let _e293 = sum_13;
+    return _e293;
 }
 
-fn airlight_sphere(s_46: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_sphere(s_47: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
@@ -7845,7 +7858,7 @@ fn airlight_sphere(s_46: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
     var local_187: bool;
     var local_188: bool;
 
-    let v_11 = (a_27.c - x_26);
+    let v_11 = (a_27.c - x_27);
     let _e5 = airlight_safe_length(v_11);
     if !((_e5 > a_27.radius)) {
         return 0f;
@@ -7911,40 +7924,40 @@ fn airlight_sphere(s_46: AirlightScene, a_27: AirlightArea, x_26: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_46, a_27, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_47, a_27, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_46, a_27, cap_4);
+    let _e101 = airlight_sphere_cap(s_47, a_27, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
-    switch s_47.light_shape {
+fn airlight_emitter_radiance(s_48: AirlightScene, a_28: AirlightArea, x_28: vec3<f32>) -> f32 {
+    switch s_48.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_47, a_28, x_27);
+            let _e4 = airlight_disc(s_48, a_28, x_28);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_47, a_28, x_27);
+            let _e5 = airlight_parallelogram(s_48, a_28, x_28);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_47, a_28, x_27);
+            let _e6 = airlight_sphere(s_48, a_28, x_28);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_48: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_49: AirlightScene, a_29: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along = ((a_29.h_eff * _e3.y) / _e3.x);
-    let t_12 = (a_29.x_h + along);
-    let fade = exp(min((-(s_48.sigma_t) * max(((a_29.x_h - s_48.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_48, a_29, (s_48.origin + (t_12 * a_29.d)));
+    let t_13 = (a_29.x_h + along);
+    let fade = exp(min((-(s_49.sigma_t) * max(((a_29.x_h - s_49.t_min) + along), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_49, a_29, (s_49.origin + (t_13 * a_29.d)));
     return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_49: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_8: f32;
@@ -7952,7 +7965,7 @@ fn airlight_area_light(s_49: AirlightScene) -> AirlightResult {
     var j_9: u32;
     var local_189: bool;
 
-    let _e1 = airlight_area(s_49);
+    let _e1 = airlight_area(s_50);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -7994,8 +8007,8 @@ fn airlight_area_light(s_49: AirlightScene) -> AirlightResult {
                         local_189 = false;
                     }
                     let _e70 = local_189;
-                    let x_36 = select((c_23 + (hw_7 * node_4.x)), (c_23 - (hw_7 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_49, _e1, x_36);
+                    let x_37 = select((c_23 + (hw_7 * node_4.x)), (c_23 - (hw_7 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_50, _e1, x_37);
                     let _e73 = k_8;
                     k_8 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8029,22 +8042,22 @@ fn airlight_area_light(s_49: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_49.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_50.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_50: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
     var local_190: bool;
     var local_191: bool;
 
-    let _e1 = airlight_valid(s_50);
+    let _e1 = airlight_valid(s_51);
     if !(!(_e1)) {
-        local_190 = (s_50.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_190 = true;
     }
     let _e10 = local_190;
     if !(_e10) {
-        local_191 = (s_50.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_191 = true;
     }
@@ -8052,7 +8065,7 @@ fn airlight_in_scatter_area(s_50: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_50);
+    let _e22 = airlight_area_light(s_51);
     return _e22;
 }
 
@@ -8108,19 +8121,19 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_51: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
     var local_194: bool;
     var local_195: bool;
 
-    let _e1 = airlight_valid(s_51);
+    let _e1 = airlight_valid(s_52);
     if !(!(_e1)) {
-        local_194 = (s_51.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_194 = true;
     }
     let _e10 = local_194;
     if !(_e10) {
-        local_195 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
@@ -8128,23 +8141,23 @@ fn airlight_in_scatter_point(s_51: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_51);
+    let _e22 = airlight_point_integral(s_52);
     return _e22;
 }
 
-fn airlight_in_scatter_route(s_52: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
     var local_196: bool;
     var local_197: bool;
 
-    let _e1 = airlight_valid(s_52);
+    let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_196 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_196 = true;
     }
     let _e10 = local_196;
     if !(_e10) {
-        local_197 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_197 = true;
     }
@@ -8152,16 +8165,16 @@ fn airlight_in_scatter_route(s_52: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_52);
-    let _e23 = airlight_refined(s_52, _e22);
-    let _e24 = airlight_limits(s_52, _e23);
+    let _e22 = airlight_canonical(s_53);
+    let _e23 = airlight_refined(s_53, _e22);
+    let _e24 = airlight_limits(s_53, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_52);
+    let _e29 = airlight_isotropic_scene(s_53);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_52, _e23);
+        let _e31 = airlight_angle_route(s_53, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8170,7 +8183,7 @@ fn airlight_in_scatter_route(s_52: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_53: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_9: f32;
@@ -8180,14 +8193,14 @@ fn airlight_in_scatter(s_53: AirlightScene) -> AirlightResult {
     var f: f32;
     var local_199: bool;
 
-    let _e1 = airlight_valid(s_53);
+    let _e1 = airlight_valid(s_54);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_53.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_54.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_53);
+    let _e12 = airlight_outer(s_54);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8232,15 +8245,15 @@ fn airlight_in_scatter(s_53: AirlightScene) -> AirlightResult {
                     }
                     let _e85 = local_198;
                     let w_11 = select((c_24 + (hw_8 * node_5.x)), (c_24 - (hw_8 * node_5.x)), _e85);
-                    let _e87 = airlight_outer_node(s_53, _e12, w_11);
+                    let _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_53.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_199 = (s_53.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_199 = false;
                         }

@@ -37,6 +37,10 @@ on rays from a point they face towards their centre, their limb and just past it
 phase lobe falls on the emitter or next to it (the ray's line meets the emitter's plane on it
 or near it; the emitter's polar coordinates are about that point or the nearest one).
 
+Corner (category corner): that rectangle on a ray passing beside it, in Henyey–Greenstein fog
+(g = 0.8, 0.99) and in isotropic fog under the emission lobe p = 32: the feet of the ray's points
+on its plane pass just outside a corner.
+
 Usage: python3 tests/reference/gen_area.py [--shapes sphere] [--missing] [--jobs 2]     (numpy
 and mpmath; `--missing`: only the records area.jsonl lacks; several hours for everything on two
 cores, most of it the spheres near the ray, in thick media and around the ray's start; each record
@@ -505,6 +509,18 @@ def scenes():
                     "light": light,
                     "phase": phase,
                 })
+    # corner: the rectangle of focused, on the ray that passes beside it, whose points' feet on
+    # its plane pass just outside one corner (the nearest point moving along an edge into it)
+    rectangle = focused[1]
+    for phase, emission in [(hg(0.8), None), (hg(0.99), None), (None, lobe(32))]:
+        light = dict(rectangle, emission=emission) if emission else rectangle
+        out.append({
+            "category": "corner",
+            "ray": {"origin": [0.0, 0.0, 0.0], "dir": f32v(unit(np.array([1.0, 0.0, 0.3]))), "t_min": 0.0, "t_max": None},
+            "medium": {"sigma_s": f32(0.05), "sigma_t": f32(0.08)},
+            "light": light,
+            "phase": phase or {"kind": "isotropic"},
+        })
     return out
 
 

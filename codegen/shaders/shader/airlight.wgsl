@@ -1263,6 +1263,11 @@ fn airlight_atan2_upper(y: f32, x: f32) -> f32 {
     return select(select(0.5 * AIRLIGHT_PI + r, 0.5 * AIRLIGHT_PI - r, positive), select(AIRLIGHT_PI - r, r, positive), near_axis);
 }
 
+/// atan2(y, x) from airlight_atan2_upper: in [−π, π].
+fn airlight_atan2(y: f32, x: f32) -> f32 {
+    return select(-1.0, 1.0, y >= 0.0) * airlight_atan2_upper(abs(y), x);
+}
+
 /// Y = u + √(1 + u²) without cancellation: the halves' bounded y before the foot.
 fn airlight_angle_y(u: f32) -> f32 {
     if (u < 0.0) { return airlight_bounded(-u); }
@@ -2692,8 +2697,13 @@ fn airlight_graded_node(graded: f32, node: f32) -> vec2<f32> {
 /// Whether a flat emitter is taken about the foot `depth` inside its edge at the height z
 /// (outer.rs `Light::far_from_edge`): depth ≥ EDGE_REACH·z·min(1, s).
 fn airlight_far_from_edge(s: AirlightScene, depth: f32, z: f32) -> bool {
+    return depth >= AIRLIGHT_EDGE_REACH * airlight_narrowed(s, z);
+}
+
+/// length·min(1, s), s the emission lobe's scale (outer.rs `Light::narrowed`).
+fn airlight_narrowed(s: AirlightScene, length: f32) -> f32 {
     let scale = airlight_emission_scale(s);
-    return depth >= AIRLIGHT_EDGE_REACH * z * select(1.0, min(scale, 1.0), scale > 0.0);
+    return length * select(1.0, min(scale, 1.0), scale > 0.0);
 }
 
 /// A lobe of Henyey–Greenstein form at its singular cosine's gap `gap` (|μ*| − 1) on the side of
@@ -2739,8 +2749,7 @@ fn airlight_basis_e1(n: vec3<f32>) -> vec3<f32> {
 /// +∞ (outer.rs `theta`).
 fn airlight_area_theta(a: AirlightArea, t: f32, infinite: bool) -> f32 {
     if (infinite) { return 0.5 * AIRLIGHT_PI; }
-    let u = t - a.x_h;
-    return select(-1.0, 1.0, u >= 0.0) * airlight_atan2_upper(abs(u), a.h_eff);
+    return airlight_atan2(t - a.x_h, a.h_eff);
 }
 
 /// The ray integral's setup (outer.rs `in_scatter_bounded`): the emitter's frame, its centre and
@@ -2948,17 +2957,24 @@ fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f3
         if (!(area > thin)) { continue; }
         let e = cb - ca;
         let el = sqrt(e.x * e.x + e.y * e.y);
-        // the edge's distance from q* and outward normal m
+        // the edge's distance h from q*, outward normal m and direction t: its points
+        // q* + h m + σ t, σ = D tan β (D = hypot(h, ρ₀ min(1, s))), β between C_i's and C_{i+1}'s
         let h = area / el;
         let m = vec2<f32>(e.y / el, -e.x / el);
-        let span = airlight_atan2_upper(area, ca.x * cb.x + ca.y * cb.y);
-        let start = ca / sqrt(ca.x * ca.x + ca.y * ca.y);
+        let t = e / el;
+        let narrow = airlight_narrowed(s, above.rho0);
+        let reach = sqrt(h * h + narrow * narrow);
+        let first = airlight_atan2(dot(ca, t), reach);
+        let last = airlight_atan2(dot(cb, t), reach);
         for (var j = 0u; j < 12u; j++) {
             let node = airlight_triangle_rule(j);
-            // ψ − ψ(C_i) ∈ [0, span] ⊂ [0, π]: the direction C_i's turned by it
-            let turn = airlight_cos_sin_half_turn(0.5 * span * (1.0 + node.x));
-            let dir = vec2<f32>(turn.x * start.x - turn.y * start.y, turn.y * start.x + turn.x * start.y);
-            sum += node.y * 0.5 * span * airlight_flat_radial(s, a, above, dir, h / (dir.x * m.x + dir.y * m.y));
+            // (cos β, sin β) from the half turn's (−sin, cos) at β + π/2 ∈ (0, π)
+            let turn = airlight_cos_sin_half_turn(0.5 * (first + last) + 0.5 * (last - first) * node.x + 0.5 * AIRLIGHT_PI);
+            let sigma = reach * -turn.x / turn.y;
+            let r2 = h * h + sigma * sigma;
+            let r = sqrt(r2);
+            let dir = (h * m + sigma * t) / r;
+            sum += node.y * 0.5 * (last - first) * h * reach / (turn.y * turn.y * r2) * airlight_flat_radial(s, a, above, dir, r);
         }
     }
     return sum;
@@ -3095,7 +3111,7 @@ fn airlight_wrap_turn(x: f32) -> f32 {
 /// atan2(e·v, e·u) (outer.rs `flat_about_lobe`'s `azimuth`).
 fn airlight_lobe_azimuth(u: vec3<f32>, v: vec3<f32>, e: vec2<f32>) -> f32 {
     let y = e.x * v.x + e.y * v.y;
-    return select(1.0, -1.0, y < 0.0) * airlight_atan2_upper(abs(y), e.x * u.x + e.y * u.y);
+    return airlight_atan2(y, e.x * u.x + e.y * u.y);
 }
 
 /// Four values in ascending order (a sorting network: no loop iterations).
@@ -3278,7 +3294,7 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
             big_b = sin_p * airlight_cos_sin(half * az.y).x;
             wpsi = az.z * half * az.x;
         }
-        let mid = select(1.0, -1.0, big_b < 0.0) * airlight_atan2_upper(abs(big_b), cos_p);
+        let mid = airlight_atan2(big_b, cos_p);
         let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
         var start = 0.0;
         if (!inside) { start = max(mid - spread, 0.0); }

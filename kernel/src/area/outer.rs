@@ -18,10 +18,12 @@
 //!   (the foot itself where it lies inside), `r = ρ₀ tan γ`, `ρ₀ = |x − q*|`, so that the
 //!   `z/d³` of `dω = z dA/d³` is smooth in `γ`: a disc over the whole circle about the foot, or
 //!   with `q*` on the rim over the half towards the centre (the chord `2R cos ψ`), a
-//!   parallelogram as the triangles from `q*` to its edges; a foot inside but nearer the edge
+//!   parallelogram as the triangles from `q*` to its edges, each in the angle `β` its far edge
+//!   subtends at a distance `D` (`σ = D tan β` along it: in `ψ` a sliver's chords, from a `q*`
+//!   near a corner, grow too fast); a foot inside but nearer the edge
 //!   than [`EDGE_REACH`] heights is taken as one outside. Gauss–Legendre [`RADIAL`] in `γ`
 //!   (graded towards the foot, `γ = s tan ϑ`, under an emission lobe as a sphere's `φ`),
-//!   [`AZIMUTHAL`] in `ψ` ([`TRIANGLE_AZIMUTHAL`] a triangle). Where a phase lobe narrower than
+//!   [`AZIMUTHAL`] in `ψ` ([`TRIANGLE_AZIMUTHAL`] in a triangle's `β`). Where a phase lobe narrower than
 //!   the emitter points at it (its direction `±d` meets the plane on the emitter or within
 //!   [`LOBE_REACH`] of its widths), polar about that direction instead (`flat_about_lobe`):
 //!   about the foot, a Henyey–Greenstein `g = 0.99` lobe on a disc or rectangle left 1e-2 to 1e-1.
@@ -70,8 +72,8 @@ pub const RADIAL: [(f64, f64); 8] = GL16;
 /// positive half).
 pub const AZIMUTHAL: [(f64, f64); 16] = GL32;
 
-/// Gauss–Legendre in the azimuth over one of a parallelogram's triangles (12 points; positive
-/// half).
+/// Gauss–Legendre over one of a parallelogram's triangles, in the angle `β` of its far edge
+/// (12 points; positive half).
 pub const TRIANGLE_AZIMUTHAL: [(f64, f64); 6] = GL12;
 
 /// `f(x, w)` at the nodes and weights of the Gauss–Legendre rule `half` (its positive half) on
@@ -163,7 +165,13 @@ impl<T: Real, P: PhaseFunction<T>> Light<'_, T, P> {
     /// (else about the edge's nearest point): `depth ≥ EDGE_REACH·z·min(1, s)`, `s` the emission
     /// lobe's scale.
     fn far_from_edge(&self, depth: T, z: T) -> bool {
-        depth >= T::lit(EDGE_REACH) * z * self.emission_scale.map_or(T::one(), |s| s.min(T::one()))
+        depth >= T::lit(EDGE_REACH) * self.narrowed(z)
+    }
+
+    /// `length·min(1, s)`, `s` the emission lobe's scale: how far from a flat emitter's point
+    /// nearest `x` its elements still shine at `x` (a length at `x`'s distance `length`).
+    fn narrowed(&self, length: T) -> T {
+        length * self.emission_scale.map_or(T::one(), |s| s.min(T::one()))
     }
 
     /// `P(μ)`.
@@ -296,13 +304,19 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
         }
         let e = (b.0 - a.0, b.1 - a.1);
         let el = (e.0 * e.0 + e.1 * e.1).sqrt();
-        // the edge's distance from q* and outward normal m
-        let (h, m) = (area / el, (e.1 / el, -e.0 / el));
-        let start = a.1.atan2(a.0);
-        let span = area.atan2(a.0 * b.0 + a.1 * b.1);
-        each_node(&TRIANGLE_AZIMUTHAL, start, start + span, |psi, w| {
-            let (sin, cos) = sin_cos_turns(psi);
-            sum = sum + w * radial(light, &above, (cos, sin), h / (cos * m.0 + sin * m.1));
+        // the edge's distance h from q*, outward normal m and direction t: its points
+        // q* + h m + σ t, σ from a·t to b·t, taken as σ = D tan β (D = hypot(h, ρ₀ min(1, s)));
+        // dψ = h dσ/(h² + σ²)
+        let (h, m, t) = (area / el, (e.1 / el, -e.0 / el), (e.0 / el, e.1 / el));
+        let reach = h.hypot(light.narrowed(above.rho0));
+        let ends = [a, b].map(|c| ((c.0 * t.0 + c.1 * t.1) / reach).atan());
+        each_node(&TRIANGLE_AZIMUTHAL, ends[0], ends[1], |beta, w| {
+            let (sin, cos) = sin_cos_turns(beta);
+            let sigma = reach * sin / cos;
+            let r2 = h * h + sigma * sigma;
+            let r = r2.sqrt();
+            let dir = ((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r);
+            sum = sum + w * h * reach / (cos * cos * r2) * radial(light, &above, dir, r);
         });
     }
     sum
