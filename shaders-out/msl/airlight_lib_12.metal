@@ -3913,9 +3913,9 @@ metal::float2 airlight_crossings(
     float a0_ = k_4 + (sigma_9 * d_el);
     float b0_ = -((d_c + d_c));
     float c0_ = k_4 - (sigma_9 * d_el);
-    float scale_2 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
-    if (!(!((scale_2 > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale_2);
+    float scale_3 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
+    if (!(!((scale_3 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_3);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3924,9 +3924,9 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_36 = a0_ / scale_2;
-    float b_17 = b0_ / scale_2;
-    float c_10 = c0_ / scale_2;
+    float a_36 = a0_ / scale_3;
+    float b_17 = b0_ / scale_3;
+    float c_10 = c0_ / scale_3;
     float disc_1 = (b_17 * b_17) - ((4.0 * a_36) * c_10);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
@@ -7531,56 +7531,56 @@ float airlight_flat_radial(
     float sum_7 = 0.0;
     float _e7 = airlight_atan(r_max / above_2.rho0_);
     metal::float2 _e8 = airlight_graded_range(s_37, _e7);
-    float graded_5 = _e8.y;
+    float graded_6 = _e8.y;
     float c_16 = 0.5 * _e8.x;
     float hw_2 = 0.5 * _e8.x;
     float _e18 = sum_7;
-    float _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.09501251 * hw_2));
+    float _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.09501251 * hw_2));
     sum_7 = _e18 + ((0.1894506 * hw_2) * _e24);
     float _e27 = sum_7;
-    float _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.09501251 * hw_2));
+    float _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.09501251 * hw_2));
     sum_7 = _e27 + ((0.1894506 * hw_2) * _e33);
     float _e36 = sum_7;
-    float _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.28160354 * hw_2));
+    float _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.28160354 * hw_2));
     sum_7 = _e36 + ((0.18260342 * hw_2) * _e42);
     float _e45 = sum_7;
-    float _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.28160354 * hw_2));
+    float _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.28160354 * hw_2));
     sum_7 = _e45 + ((0.18260342 * hw_2) * _e51);
     float _e54 = sum_7;
-    float _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.45801678 * hw_2));
+    float _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.45801678 * hw_2));
     sum_7 = _e54 + ((0.16915652 * hw_2) * _e60);
     float _e63 = sum_7;
-    float _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.45801678 * hw_2));
+    float _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.45801678 * hw_2));
     sum_7 = _e63 + ((0.16915652 * hw_2) * _e69);
     float _e72 = sum_7;
-    float _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.61787623 * hw_2));
+    float _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.61787623 * hw_2));
     sum_7 = _e72 + ((0.14959599 * hw_2) * _e78);
     float _e81 = sum_7;
-    float _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.61787623 * hw_2));
+    float _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.61787623 * hw_2));
     sum_7 = _e81 + ((0.14959599 * hw_2) * _e87);
     float _e90 = sum_7;
-    float _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.7554044 * hw_2));
+    float _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.7554044 * hw_2));
     sum_7 = _e90 + ((0.12462897 * hw_2) * _e96);
     float _e99 = sum_7;
-    float _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.7554044 * hw_2));
+    float _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.7554044 * hw_2));
     sum_7 = _e99 + ((0.12462897 * hw_2) * _e105);
     float _e108 = sum_7;
-    float _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.8656312 * hw_2));
+    float _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.8656312 * hw_2));
     sum_7 = _e108 + ((0.09515851 * hw_2) * _e114);
     float _e117 = sum_7;
-    float _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.8656312 * hw_2));
+    float _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.8656312 * hw_2));
     sum_7 = _e117 + ((0.09515851 * hw_2) * _e123);
     float _e126 = sum_7;
-    float _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.944575 * hw_2));
+    float _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.944575 * hw_2));
     sum_7 = _e126 + ((0.062253524 * hw_2) * _e132);
     float _e135 = sum_7;
-    float _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.944575 * hw_2));
+    float _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.944575 * hw_2));
     sum_7 = _e135 + ((0.062253524 * hw_2) * _e141);
     float _e144 = sum_7;
-    float _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 - (0.9894009 * hw_2));
+    float _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.9894009 * hw_2));
     sum_7 = _e144 + ((0.02715246 * hw_2) * _e150);
     float _e153 = sum_7;
-    float _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, c_16 + (0.9894009 * hw_2));
+    float _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.9894009 * hw_2));
     sum_7 = _e153 + ((0.02715246 * hw_2) * _e159);
     float _e162 = sum_7;
     return _e162;
@@ -7780,24 +7780,43 @@ metal::float2 airlight_outline_chord(
     return _e93;
 }
 
+metal::float2 airlight_graded_from(
+    float scale_1,
+    float start_1,
+    float to
+) {
+    float graded_7 = metal::max(scale_1, start_1);
+    float _e6 = airlight_atan((to - start_1) / graded_7);
+    return metal::float2(graded_7, _e6);
+}
+
+metal::float3 airlight_graded_from_node(
+    float start_2,
+    float graded_2,
+    float g_26
+) {
+    metal::float2 _e3 = airlight_cos_sin_half_turn(g_26);
+    metal::float2 _e9 = airlight_cos_sin_half_turn(start_2 + ((graded_2 * _e3.y) / _e3.x));
+    return metal::float3(_e9, graded_2 / (_e3.x * _e3.x));
+}
+
 float airlight_flat_lobe_node(
     AirlightScene s_38,
     float z_12,
     AirlightFlatLobe lobe_1,
     float k_7,
-    float start_1,
-    float graded_2,
-    float g_26
+    float start_3,
+    float graded_3,
+    float g_27
 ) {
-    metal::float2 _e7 = airlight_cos_sin_half_turn(g_26);
-    metal::float2 _e13 = airlight_cos_sin_half_turn(start_1 + ((graded_2 * _e7.y) / _e7.x));
-    float c_17 = -(lobe_1.p[2]) * (_e13.x - (k_7 * _e13.y));
+    metal::float3 _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
+    float c_17 = -(lobe_1.p[2]) * (_e7.x - (k_7 * _e7.y));
     if (!((c_17 > 0.0))) {
         return 0.0;
     }
-    float _e26 = airlight_emitted(s_38, c_17);
-    float _e38 = airlight_area_phase(s_38, lobe_1.sign * _e13.x);
-    return ((((_e26 * metal::exp(metal::min((-(s_38.sigma_t) * z_12) / c_17, 0.0))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x);
+    float _e20 = airlight_emitted(s_38, c_17);
+    float _e32 = airlight_area_phase(s_38, lobe_1.sign * _e7.x);
+    return (((_e20 * metal::exp(metal::min((-(s_38.sigma_t) * z_12) / c_17, 0.0))) * _e32) * _e7.y) * _e7.z;
 }
 
 float airlight_flat_lobe_along(
@@ -7817,58 +7836,58 @@ float airlight_flat_lobe_along(
         return 0.0;
     }
     float _e34 = airlight_atan2_upper(_e23.x, lobe_2.l + (k_12 * _e23.x));
-    float _e40 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_12 * _e23.y));
-    float graded_6 = metal::max(lobe_2.scale, _e34);
-    float _e45 = airlight_atan((_e40 - _e34) / graded_6);
-    float c_18 = 0.5 * _e45;
-    float hw_3 = 0.5 * _e45;
+    float _e41 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_12 * _e23.y));
+    metal::float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
+    float graded_8 = _e42.x;
+    float c_18 = 0.5 * _e42.y;
+    float hw_3 = 0.5 * _e42.y;
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.09501251 * hw_3));
+    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.09501251 * hw_3));
     sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.09501251 * hw_3));
+    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.09501251 * hw_3));
     sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.28160354 * hw_3));
+    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.28160354 * hw_3));
     sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.28160354 * hw_3));
+    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.28160354 * hw_3));
     sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.45801678 * hw_3));
+    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.45801678 * hw_3));
     sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.45801678 * hw_3));
+    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.45801678 * hw_3));
     sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.61787623 * hw_3));
+    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.61787623 * hw_3));
     sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.61787623 * hw_3));
+    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.61787623 * hw_3));
     sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.7554044 * hw_3));
+    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.7554044 * hw_3));
     sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.7554044 * hw_3));
+    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.7554044 * hw_3));
     sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.8656312 * hw_3));
+    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.8656312 * hw_3));
     sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.8656312 * hw_3));
+    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.8656312 * hw_3));
     sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.944575 * hw_3));
+    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.944575 * hw_3));
     sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.944575 * hw_3));
+    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.944575 * hw_3));
     sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 - (0.9894009 * hw_3));
+    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.9894009 * hw_3));
     sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, c_18 + (0.9894009 * hw_3));
+    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.9894009 * hw_3));
     sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
     float _e196 = sum_8;
     return _e196;
@@ -8269,11 +8288,11 @@ float airlight_parallelogram(
 metal::float3 airlight_cap_row(
     AirlightScene s_43,
     AirlightCap cap,
-    float graded_3,
+    float graded_4,
     float node_2,
     float weight_1
 ) {
-    metal::float2 _e5 = airlight_graded_node(graded_3, node_2);
+    metal::float2 _e5 = airlight_graded_node(graded_4, node_2);
     float w_10 = weight_1 * _e5.y;
     metal::float2 _e9 = airlight_cos_sin_half_turn(_e5.x);
     float sb_2 = cap.sin_a * _e9.y;
@@ -8299,40 +8318,40 @@ float airlight_sphere_cap(
     float e1d = metal::dot(_e4, a_25.d);
     float e2d = metal::dot(e2_2, a_25.d);
     metal::float2 _e15 = airlight_graded_range(s_44, 1.5707964);
-    float graded_7 = _e15.y;
+    float graded_9 = _e15.y;
     float c_20 = 0.5 * _e15.x;
     float hw_5 = 0.5 * _e15.x;
-    metal::float3 _e63 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.09501251 * hw_5), 0.1894506 * hw_5);
+    metal::float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.09501251 * hw_5), 0.1894506 * hw_5);
     rows.inner[0] = _e63;
-    metal::float3 _e70 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.09501251 * hw_5), 0.1894506 * hw_5);
+    metal::float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.09501251 * hw_5), 0.1894506 * hw_5);
     rows.inner[1] = _e70;
-    metal::float3 _e77 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.28160354 * hw_5), 0.18260342 * hw_5);
+    metal::float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.28160354 * hw_5), 0.18260342 * hw_5);
     rows.inner[2] = _e77;
-    metal::float3 _e84 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.28160354 * hw_5), 0.18260342 * hw_5);
+    metal::float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.28160354 * hw_5), 0.18260342 * hw_5);
     rows.inner[3] = _e84;
-    metal::float3 _e91 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.45801678 * hw_5), 0.16915652 * hw_5);
+    metal::float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.45801678 * hw_5), 0.16915652 * hw_5);
     rows.inner[4] = _e91;
-    metal::float3 _e98 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.45801678 * hw_5), 0.16915652 * hw_5);
+    metal::float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.45801678 * hw_5), 0.16915652 * hw_5);
     rows.inner[5] = _e98;
-    metal::float3 _e105 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.61787623 * hw_5), 0.14959599 * hw_5);
+    metal::float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.61787623 * hw_5), 0.14959599 * hw_5);
     rows.inner[6] = _e105;
-    metal::float3 _e112 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.61787623 * hw_5), 0.14959599 * hw_5);
+    metal::float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.61787623 * hw_5), 0.14959599 * hw_5);
     rows.inner[7] = _e112;
-    metal::float3 _e119 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.7554044 * hw_5), 0.12462897 * hw_5);
+    metal::float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.7554044 * hw_5), 0.12462897 * hw_5);
     rows.inner[8] = _e119;
-    metal::float3 _e126 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.7554044 * hw_5), 0.12462897 * hw_5);
+    metal::float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.7554044 * hw_5), 0.12462897 * hw_5);
     rows.inner[9] = _e126;
-    metal::float3 _e133 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.8656312 * hw_5), 0.09515851 * hw_5);
+    metal::float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.8656312 * hw_5), 0.09515851 * hw_5);
     rows.inner[10] = _e133;
-    metal::float3 _e140 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.8656312 * hw_5), 0.09515851 * hw_5);
+    metal::float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.8656312 * hw_5), 0.09515851 * hw_5);
     rows.inner[11] = _e140;
-    metal::float3 _e147 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.944575 * hw_5), 0.062253524 * hw_5);
+    metal::float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.944575 * hw_5), 0.062253524 * hw_5);
     rows.inner[12] = _e147;
-    metal::float3 _e154 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.944575 * hw_5), 0.062253524 * hw_5);
+    metal::float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.944575 * hw_5), 0.062253524 * hw_5);
     rows.inner[13] = _e154;
-    metal::float3 _e161 = airlight_cap_row(s_44, cap_1, graded_7, c_20 - (0.9894009 * hw_5), 0.02715246 * hw_5);
+    metal::float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.9894009 * hw_5), 0.02715246 * hw_5);
     rows.inner[14] = _e161;
-    metal::float3 _e168 = airlight_cap_row(s_44, cap_1, graded_7, c_20 + (0.9894009 * hw_5), 0.02715246 * hw_5);
+    metal::float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.9894009 * hw_5), 0.02715246 * hw_5);
     rows.inner[15] = _e168;
     if (a_25.isotropic) {
         float _e174 = airlight_area_phase(s_44, 0.0);
@@ -8519,18 +8538,17 @@ float airlight_sphere_lobe_node(
     float sign_1,
     float cos_p,
     float big_b,
-    float start_2,
-    float graded_4,
-    float g_27
+    float start_4,
+    float graded_5,
+    float g_28
 ) {
-    metal::float2 _e8 = airlight_cos_sin_half_turn(g_27);
-    metal::float2 _e14 = airlight_cos_sin_half_turn(start_2 + ((graded_4 * _e8.y) / _e8.x));
-    float toward_a = (_e14.x * cos_p) + (_e14.y * big_b);
+    metal::float3 _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
+    float toward_a = (_e8.x * cos_p) + (_e8.y * big_b);
     float root_5 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
     float dist_2 = metal::max((cap_2.dc * toward_a) - root_5, 0.0);
-    float _e43 = airlight_emitted(s_45, root_5 / cap_2.radius);
-    float _e53 = airlight_area_phase(s_45, sign_1 * _e14.x);
-    return ((((_e43 * metal::exp(metal::min(-(s_45.sigma_t) * dist_2, 0.0))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x);
+    float _e37 = airlight_emitted(s_45, root_5 / cap_2.radius);
+    float _e47 = airlight_area_phase(s_45, sign_1 * _e8.x);
+    return (((_e37 * metal::exp(metal::min(-(s_45.sigma_t) * dist_2, 0.0))) * _e47) * _e8.y) * _e8.z;
 }
 
 float airlight_sphere_about_lobe(
@@ -8539,7 +8557,7 @@ float airlight_sphere_about_lobe(
     AirlightCap cap_3,
     float sign_2,
     float cos_p_1,
-    float scale_1
+    float scale_2
 ) {
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
@@ -8547,7 +8565,7 @@ float airlight_sphere_about_lobe(
     uint i_35 = 0u;
     float big_b_1 = {};
     float wpsi = {};
-    float start_3 = {};
+    float start_5 = {};
     float around = {};
     metal::float3 p_7 = sign_2 * a_26.d;
     metal::float3 _e8 = airlight_basis_e1_(p_7);
@@ -8567,8 +8585,8 @@ float airlight_sphere_about_lobe(
         if (metal::all(loop_bound_43 == uint2(0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
         if (!loop_init_42) {
-            uint _e291 = i_35;
-            i_35 = _e291 + 1u;
+            uint _e290 = i_35;
+            i_35 = _e290 + 1u;
         }
         loop_init_42 = false;
         uint _e47 = i_35;
@@ -8595,106 +8613,104 @@ float airlight_sphere_about_lobe(
             float _e81 = big_b_1;
             float _e82 = big_b_1;
             float _e89 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e81 * _e82)), 1.0));
-            start_3 = 0.0;
+            start_5 = 0.0;
             if (!(inside_3)) {
-                start_3 = metal::max(_e78 - _e89, 0.0);
+                start_5 = metal::max(_e78 - _e89, 0.0);
             }
-            float to = _e78 + _e89;
-            float _e97 = start_3;
-            float graded_8 = metal::max(scale_1, _e97);
-            float _e99 = start_3;
-            float _e102 = airlight_atan((to - _e99) / graded_8);
-            float c_21 = 0.5 * _e102;
-            float hw_6 = 0.5 * _e102;
+            float _e96 = start_5;
+            metal::float2 _e98 = airlight_graded_from(scale_2, _e96, _e78 + _e89);
+            float graded_10 = _e98.x;
+            float c_21 = 0.5 * _e98.y;
+            float hw_6 = 0.5 * _e98.y;
             around = 0.0;
-            float _e109 = around;
-            float _e112 = big_b_1;
-            float _e113 = start_3;
-            float _e117 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e112, _e113, graded_8, c_21 - (0.09501251 * hw_6));
-            around = _e109 + ((0.1894506 * hw_6) * _e117);
-            float _e120 = around;
-            float _e123 = big_b_1;
-            float _e124 = start_3;
-            float _e128 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e123, _e124, graded_8, c_21 + (0.09501251 * hw_6));
-            around = _e120 + ((0.1894506 * hw_6) * _e128);
-            float _e131 = around;
-            float _e134 = big_b_1;
-            float _e135 = start_3;
-            float _e139 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e134, _e135, graded_8, c_21 - (0.28160354 * hw_6));
-            around = _e131 + ((0.18260342 * hw_6) * _e139);
-            float _e142 = around;
-            float _e145 = big_b_1;
-            float _e146 = start_3;
-            float _e150 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e145, _e146, graded_8, c_21 + (0.28160354 * hw_6));
-            around = _e142 + ((0.18260342 * hw_6) * _e150);
-            float _e153 = around;
-            float _e156 = big_b_1;
-            float _e157 = start_3;
-            float _e161 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e156, _e157, graded_8, c_21 - (0.45801678 * hw_6));
-            around = _e153 + ((0.16915652 * hw_6) * _e161);
-            float _e164 = around;
-            float _e167 = big_b_1;
-            float _e168 = start_3;
-            float _e172 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e167, _e168, graded_8, c_21 + (0.45801678 * hw_6));
-            around = _e164 + ((0.16915652 * hw_6) * _e172);
-            float _e175 = around;
-            float _e178 = big_b_1;
-            float _e179 = start_3;
-            float _e183 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e178, _e179, graded_8, c_21 - (0.61787623 * hw_6));
-            around = _e175 + ((0.14959599 * hw_6) * _e183);
-            float _e186 = around;
-            float _e189 = big_b_1;
-            float _e190 = start_3;
-            float _e194 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e189, _e190, graded_8, c_21 + (0.61787623 * hw_6));
-            around = _e186 + ((0.14959599 * hw_6) * _e194);
-            float _e197 = around;
-            float _e200 = big_b_1;
-            float _e201 = start_3;
-            float _e205 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e200, _e201, graded_8, c_21 - (0.7554044 * hw_6));
-            around = _e197 + ((0.12462897 * hw_6) * _e205);
-            float _e208 = around;
-            float _e211 = big_b_1;
-            float _e212 = start_3;
-            float _e216 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e211, _e212, graded_8, c_21 + (0.7554044 * hw_6));
-            around = _e208 + ((0.12462897 * hw_6) * _e216);
-            float _e219 = around;
-            float _e222 = big_b_1;
-            float _e223 = start_3;
-            float _e227 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e222, _e223, graded_8, c_21 - (0.8656312 * hw_6));
-            around = _e219 + ((0.09515851 * hw_6) * _e227);
-            float _e230 = around;
-            float _e233 = big_b_1;
-            float _e234 = start_3;
-            float _e238 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e233, _e234, graded_8, c_21 + (0.8656312 * hw_6));
-            around = _e230 + ((0.09515851 * hw_6) * _e238);
-            float _e241 = around;
-            float _e244 = big_b_1;
-            float _e245 = start_3;
-            float _e249 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e244, _e245, graded_8, c_21 - (0.944575 * hw_6));
-            around = _e241 + ((0.062253524 * hw_6) * _e249);
-            float _e252 = around;
-            float _e255 = big_b_1;
-            float _e256 = start_3;
-            float _e260 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e255, _e256, graded_8, c_21 + (0.944575 * hw_6));
-            around = _e252 + ((0.062253524 * hw_6) * _e260);
-            float _e263 = around;
-            float _e266 = big_b_1;
-            float _e267 = start_3;
-            float _e271 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e266, _e267, graded_8, c_21 - (0.9894009 * hw_6));
-            around = _e263 + ((0.02715246 * hw_6) * _e271);
-            float _e274 = around;
-            float _e277 = big_b_1;
-            float _e278 = start_3;
-            float _e282 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e277, _e278, graded_8, c_21 + (0.9894009 * hw_6));
-            around = _e274 + ((0.02715246 * hw_6) * _e282);
-            float _e285 = sum_13;
-            float _e286 = wpsi;
-            float _e287 = around;
-            sum_13 = _e285 + (_e286 * _e287);
+            float _e108 = around;
+            float _e111 = big_b_1;
+            float _e112 = start_5;
+            float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_21 - (0.09501251 * hw_6));
+            around = _e108 + ((0.1894506 * hw_6) * _e116);
+            float _e119 = around;
+            float _e122 = big_b_1;
+            float _e123 = start_5;
+            float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_21 + (0.09501251 * hw_6));
+            around = _e119 + ((0.1894506 * hw_6) * _e127);
+            float _e130 = around;
+            float _e133 = big_b_1;
+            float _e134 = start_5;
+            float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_21 - (0.28160354 * hw_6));
+            around = _e130 + ((0.18260342 * hw_6) * _e138);
+            float _e141 = around;
+            float _e144 = big_b_1;
+            float _e145 = start_5;
+            float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_21 + (0.28160354 * hw_6));
+            around = _e141 + ((0.18260342 * hw_6) * _e149);
+            float _e152 = around;
+            float _e155 = big_b_1;
+            float _e156 = start_5;
+            float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_21 - (0.45801678 * hw_6));
+            around = _e152 + ((0.16915652 * hw_6) * _e160);
+            float _e163 = around;
+            float _e166 = big_b_1;
+            float _e167 = start_5;
+            float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_21 + (0.45801678 * hw_6));
+            around = _e163 + ((0.16915652 * hw_6) * _e171);
+            float _e174 = around;
+            float _e177 = big_b_1;
+            float _e178 = start_5;
+            float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_21 - (0.61787623 * hw_6));
+            around = _e174 + ((0.14959599 * hw_6) * _e182);
+            float _e185 = around;
+            float _e188 = big_b_1;
+            float _e189 = start_5;
+            float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_21 + (0.61787623 * hw_6));
+            around = _e185 + ((0.14959599 * hw_6) * _e193);
+            float _e196 = around;
+            float _e199 = big_b_1;
+            float _e200 = start_5;
+            float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_21 - (0.7554044 * hw_6));
+            around = _e196 + ((0.12462897 * hw_6) * _e204);
+            float _e207 = around;
+            float _e210 = big_b_1;
+            float _e211 = start_5;
+            float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_21 + (0.7554044 * hw_6));
+            around = _e207 + ((0.12462897 * hw_6) * _e215);
+            float _e218 = around;
+            float _e221 = big_b_1;
+            float _e222 = start_5;
+            float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_21 - (0.8656312 * hw_6));
+            around = _e218 + ((0.09515851 * hw_6) * _e226);
+            float _e229 = around;
+            float _e232 = big_b_1;
+            float _e233 = start_5;
+            float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_21 + (0.8656312 * hw_6));
+            around = _e229 + ((0.09515851 * hw_6) * _e237);
+            float _e240 = around;
+            float _e243 = big_b_1;
+            float _e244 = start_5;
+            float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_21 - (0.944575 * hw_6));
+            around = _e240 + ((0.062253524 * hw_6) * _e248);
+            float _e251 = around;
+            float _e254 = big_b_1;
+            float _e255 = start_5;
+            float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_21 + (0.944575 * hw_6));
+            around = _e251 + ((0.062253524 * hw_6) * _e259);
+            float _e262 = around;
+            float _e265 = big_b_1;
+            float _e266 = start_5;
+            float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_21 - (0.9894009 * hw_6));
+            around = _e262 + ((0.02715246 * hw_6) * _e270);
+            float _e273 = around;
+            float _e276 = big_b_1;
+            float _e277 = start_5;
+            float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_21 + (0.9894009 * hw_6));
+            around = _e273 + ((0.02715246 * hw_6) * _e281);
+            float _e284 = sum_13;
+            float _e285 = wpsi;
+            float _e286 = around;
+            sum_13 = _e284 + (_e285 * _e286);
         }
     }
-    float _e293 = sum_13;
-    return _e293;
+    float _e292 = sum_13;
+    return _e292;
 }
 
 float airlight_sphere(
@@ -8969,7 +8985,7 @@ AirlightResult airlight_node_integral(
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
     bool local_193 = {};
-    AirlightCanonical g_28 = {};
+    AirlightCanonical g_29 = {};
     AirlightScene p_8 = n_3.scene;
     bool _e7 = airlight_vec_finite(n_3.scene.light_position);
     if (_e7) {
@@ -8980,13 +8996,13 @@ AirlightResult airlight_node_integral(
     }
     bool _e13 = local_193;
     if (_e13) {
-        g_28 = n_3.canonical;
+        g_29 = n_3.canonical;
         if (!(n_3.exact)) {
             AirlightCanonical _e18 = airlight_canonical(p_8);
             AirlightCanonical _e19 = airlight_refined(p_8, _e18);
-            g_28 = _e19;
+            g_29 = _e19;
         }
-        AirlightCanonical _e20 = g_28;
+        AirlightCanonical _e20 = g_29;
         AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }

@@ -3017,9 +3017,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     let a0_ = (k_4 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
     let c0_ = (k_4 - (sigma_9 * d_el));
-    let scale_2 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if !(!((scale_2 > 0f))) {
-        let _e21 = airlight_is_finite(scale_2);
+    let scale_3 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if !(!((scale_3 > 0f))) {
+        let _e21 = airlight_is_finite(scale_3);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3028,9 +3028,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_36 = (a0_ / scale_2);
-    let b_17 = (b0_ / scale_2);
-    let c_10 = (c0_ / scale_2);
+    let a_36 = (a0_ / scale_3);
+    let b_17 = (b0_ / scale_3);
+    let c_10 = (c0_ / scale_3);
     let disc_1 = ((b_17 * b_17) - ((4f * a_36) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
@@ -6364,56 +6364,56 @@ fn airlight_flat_radial(s_37: AirlightScene, a_20: AirlightArea, above_2: Airlig
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
     let _e8 = airlight_graded_range(s_37, _e7);
-    let graded_5 = _e8.y;
+    let graded_6 = _e8.y;
     let c_16 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_5, (c_16 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
@@ -6584,16 +6584,27 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
     return _e93;
 }
 
-fn airlight_flat_lobe_node(s_38: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_1: f32, graded_2: f32, g_26: f32) -> f32 {
-    let _e7 = airlight_cos_sin_half_turn(g_26);
-    let _e13 = airlight_cos_sin_half_turn((start_1 + ((graded_2 * _e7.y) / _e7.x)));
-    let c_17 = (-(lobe_1.p.z) * (_e13.x - (k_7 * _e13.y)));
+fn airlight_graded_from(scale_1: f32, start_1: f32, to: f32) -> vec2<f32> {
+    let graded_7 = max(scale_1, start_1);
+    let _e6 = airlight_atan(((to - start_1) / graded_7));
+    return vec2<f32>(graded_7, _e6);
+}
+
+fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32> {
+    let _e3 = airlight_cos_sin_half_turn(g_26);
+    let _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    return vec3<f32>(_e9, (graded_2 / (_e3.x * _e3.x)));
+}
+
+fn airlight_flat_lobe_node(s_38: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
+    let _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
+    let c_17 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
     if !((c_17 > 0f)) {
         return 0f;
     }
-    let _e26 = airlight_emitted(s_38, c_17);
-    let _e38 = airlight_area_phase(s_38, (lobe_1.sign * _e13.x));
-    return (((((_e26 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0f))) * _e38) * _e13.y) * graded_2) / (_e7.x * _e7.x));
+    let _e20 = airlight_emitted(s_38, c_17);
+    let _e32 = airlight_area_phase(s_38, (lobe_1.sign * _e7.x));
+    return ((((_e20 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0f))) * _e32) * _e7.y) * _e7.z);
 }
 
 fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
@@ -6606,58 +6617,58 @@ fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline
         return 0f;
     }
     let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
-    let _e40 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
-    let graded_6 = max(lobe_2.scale, _e34);
-    let _e45 = airlight_atan(((_e40 - _e34) / graded_6));
-    let c_18 = (0.5f * _e45);
-    let hw_3 = (0.5f * _e45);
+    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
+    let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
+    let graded_8 = _e42.x;
+    let c_18 = (0.5f * _e42.y);
+    let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_6, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -7000,8 +7011,8 @@ fn airlight_parallelogram(s_42: AirlightScene, a_24: AirlightArea, x_26: vec3<f3
     return _e207;
 }
 
-fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_3: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
-    let _e5 = airlight_graded_node(graded_3, node_2);
+fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+    let _e5 = airlight_graded_node(graded_4, node_2);
     let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
@@ -7024,40 +7035,40 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     let e1d = dot(_e4, a_25.d);
     let e2d = dot(e2_2, a_25.d);
     let _e15 = airlight_graded_range(s_44, 1.5707964f);
-    let graded_7 = _e15.y;
+    let graded_9 = _e15.y;
     let c_20 = (0.5f * _e15.x);
     let hw_5 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_44, cap_1, graded_7, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
     rows[15] = _e168;
     if a_25.isotropic {
         let _e174 = airlight_area_phase(s_44, 0f);
@@ -7233,25 +7244,24 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_25: AirlightArea, cap_1: AirlightC
     return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_45: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_2: f32, graded_4: f32, g_27: f32) -> f32 {
-    let _e8 = airlight_cos_sin_half_turn(g_27);
-    let _e14 = airlight_cos_sin_half_turn((start_2 + ((graded_4 * _e8.y) / _e8.x)));
-    let toward_a = ((_e14.x * cos_p) + (_e14.y * big_b));
+fn airlight_sphere_lobe_node(s_45: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
+    let _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
+    let toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e43 = airlight_emitted(s_45, (root_5 / cap_2.radius));
-    let _e53 = airlight_area_phase(s_45, (sign_1 * _e14.x));
-    return (((((_e43 * exp(min((-(s_45.sigma_t) * dist_2), 0f))) * _e53) * _e14.y) * graded_4) / (_e8.x * _e8.x));
+    let _e37 = airlight_emitted(s_45, (root_5 / cap_2.radius));
+    let _e47 = airlight_area_phase(s_45, (sign_1 * _e8.x));
+    return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_46: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_1: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_46: AirlightScene, a_26: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_2: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
     var i_35: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
-    var start_3: f32;
+    var start_5: f32;
     var around: f32;
 
     let p_7 = (sign_2 * a_26.d);
@@ -7291,110 +7301,108 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_26: AirlightArea, cap_3: Ai
             let _e81 = big_b_1;
             let _e82 = big_b_1;
             let _e89 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e81 * _e82)))), 1f));
-            start_3 = 0f;
+            start_5 = 0f;
             if !(inside_3) {
-                start_3 = max((_e78 - _e89), 0f);
+                start_5 = max((_e78 - _e89), 0f);
             }
-            let to = (_e78 + _e89);
-            let _e97 = start_3;
-            let graded_8 = max(scale_1, _e97);
-            let _e99 = start_3;
-            let _e102 = airlight_atan(((to - _e99) / graded_8));
-            let c_21 = (0.5f * _e102);
-            let hw_6 = (0.5f * _e102);
+            let _e96 = start_5;
+            let _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
+            let graded_10 = _e98.x;
+            let c_21 = (0.5f * _e98.y);
+            let hw_6 = (0.5f * _e98.y);
             around = 0f;
-            let _e109 = around;
-            let _e112 = big_b_1;
-            let _e113 = start_3;
-            let _e117 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e112, _e113, graded_8, (c_21 - (0.09501251f * hw_6)));
-            around = (_e109 + ((0.1894506f * hw_6) * _e117));
-            let _e120 = around;
-            let _e123 = big_b_1;
-            let _e124 = start_3;
-            let _e128 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e123, _e124, graded_8, (c_21 + (0.09501251f * hw_6)));
-            around = (_e120 + ((0.1894506f * hw_6) * _e128));
-            let _e131 = around;
-            let _e134 = big_b_1;
-            let _e135 = start_3;
-            let _e139 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e134, _e135, graded_8, (c_21 - (0.28160354f * hw_6)));
-            around = (_e131 + ((0.18260342f * hw_6) * _e139));
-            let _e142 = around;
-            let _e145 = big_b_1;
-            let _e146 = start_3;
-            let _e150 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e145, _e146, graded_8, (c_21 + (0.28160354f * hw_6)));
-            around = (_e142 + ((0.18260342f * hw_6) * _e150));
-            let _e153 = around;
-            let _e156 = big_b_1;
-            let _e157 = start_3;
-            let _e161 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e156, _e157, graded_8, (c_21 - (0.45801678f * hw_6)));
-            around = (_e153 + ((0.16915652f * hw_6) * _e161));
-            let _e164 = around;
-            let _e167 = big_b_1;
-            let _e168 = start_3;
-            let _e172 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e167, _e168, graded_8, (c_21 + (0.45801678f * hw_6)));
-            around = (_e164 + ((0.16915652f * hw_6) * _e172));
-            let _e175 = around;
-            let _e178 = big_b_1;
-            let _e179 = start_3;
-            let _e183 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e178, _e179, graded_8, (c_21 - (0.61787623f * hw_6)));
-            around = (_e175 + ((0.14959599f * hw_6) * _e183));
-            let _e186 = around;
-            let _e189 = big_b_1;
-            let _e190 = start_3;
-            let _e194 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e189, _e190, graded_8, (c_21 + (0.61787623f * hw_6)));
-            around = (_e186 + ((0.14959599f * hw_6) * _e194));
-            let _e197 = around;
-            let _e200 = big_b_1;
-            let _e201 = start_3;
-            let _e205 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e200, _e201, graded_8, (c_21 - (0.7554044f * hw_6)));
-            around = (_e197 + ((0.12462897f * hw_6) * _e205));
-            let _e208 = around;
-            let _e211 = big_b_1;
-            let _e212 = start_3;
-            let _e216 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e211, _e212, graded_8, (c_21 + (0.7554044f * hw_6)));
-            around = (_e208 + ((0.12462897f * hw_6) * _e216));
-            let _e219 = around;
-            let _e222 = big_b_1;
-            let _e223 = start_3;
-            let _e227 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e222, _e223, graded_8, (c_21 - (0.8656312f * hw_6)));
-            around = (_e219 + ((0.09515851f * hw_6) * _e227));
-            let _e230 = around;
-            let _e233 = big_b_1;
-            let _e234 = start_3;
-            let _e238 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e233, _e234, graded_8, (c_21 + (0.8656312f * hw_6)));
-            around = (_e230 + ((0.09515851f * hw_6) * _e238));
-            let _e241 = around;
-            let _e244 = big_b_1;
-            let _e245 = start_3;
-            let _e249 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e244, _e245, graded_8, (c_21 - (0.944575f * hw_6)));
-            around = (_e241 + ((0.062253524f * hw_6) * _e249));
-            let _e252 = around;
-            let _e255 = big_b_1;
-            let _e256 = start_3;
-            let _e260 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e255, _e256, graded_8, (c_21 + (0.944575f * hw_6)));
-            around = (_e252 + ((0.062253524f * hw_6) * _e260));
-            let _e263 = around;
-            let _e266 = big_b_1;
-            let _e267 = start_3;
-            let _e271 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e266, _e267, graded_8, (c_21 - (0.9894009f * hw_6)));
-            around = (_e263 + ((0.02715246f * hw_6) * _e271));
-            let _e274 = around;
-            let _e277 = big_b_1;
-            let _e278 = start_3;
-            let _e282 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e277, _e278, graded_8, (c_21 + (0.9894009f * hw_6)));
-            around = (_e274 + ((0.02715246f * hw_6) * _e282));
-            let _e285 = sum_13;
-            let _e286 = wpsi;
-            let _e287 = around;
-            sum_13 = (_e285 + (_e286 * _e287));
+            let _e108 = around;
+            let _e111 = big_b_1;
+            let _e112 = start_5;
+            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251f * hw_6)));
+            around = (_e108 + ((0.1894506f * hw_6) * _e116));
+            let _e119 = around;
+            let _e122 = big_b_1;
+            let _e123 = start_5;
+            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251f * hw_6)));
+            around = (_e119 + ((0.1894506f * hw_6) * _e127));
+            let _e130 = around;
+            let _e133 = big_b_1;
+            let _e134 = start_5;
+            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354f * hw_6)));
+            around = (_e130 + ((0.18260342f * hw_6) * _e138));
+            let _e141 = around;
+            let _e144 = big_b_1;
+            let _e145 = start_5;
+            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354f * hw_6)));
+            around = (_e141 + ((0.18260342f * hw_6) * _e149));
+            let _e152 = around;
+            let _e155 = big_b_1;
+            let _e156 = start_5;
+            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678f * hw_6)));
+            around = (_e152 + ((0.16915652f * hw_6) * _e160));
+            let _e163 = around;
+            let _e166 = big_b_1;
+            let _e167 = start_5;
+            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678f * hw_6)));
+            around = (_e163 + ((0.16915652f * hw_6) * _e171));
+            let _e174 = around;
+            let _e177 = big_b_1;
+            let _e178 = start_5;
+            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623f * hw_6)));
+            around = (_e174 + ((0.14959599f * hw_6) * _e182));
+            let _e185 = around;
+            let _e188 = big_b_1;
+            let _e189 = start_5;
+            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623f * hw_6)));
+            around = (_e185 + ((0.14959599f * hw_6) * _e193));
+            let _e196 = around;
+            let _e199 = big_b_1;
+            let _e200 = start_5;
+            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044f * hw_6)));
+            around = (_e196 + ((0.12462897f * hw_6) * _e204));
+            let _e207 = around;
+            let _e210 = big_b_1;
+            let _e211 = start_5;
+            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044f * hw_6)));
+            around = (_e207 + ((0.12462897f * hw_6) * _e215));
+            let _e218 = around;
+            let _e221 = big_b_1;
+            let _e222 = start_5;
+            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312f * hw_6)));
+            around = (_e218 + ((0.09515851f * hw_6) * _e226));
+            let _e229 = around;
+            let _e232 = big_b_1;
+            let _e233 = start_5;
+            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312f * hw_6)));
+            around = (_e229 + ((0.09515851f * hw_6) * _e237));
+            let _e240 = around;
+            let _e243 = big_b_1;
+            let _e244 = start_5;
+            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575f * hw_6)));
+            around = (_e240 + ((0.062253524f * hw_6) * _e248));
+            let _e251 = around;
+            let _e254 = big_b_1;
+            let _e255 = start_5;
+            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575f * hw_6)));
+            around = (_e251 + ((0.062253524f * hw_6) * _e259));
+            let _e262 = around;
+            let _e265 = big_b_1;
+            let _e266 = start_5;
+            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009f * hw_6)));
+            around = (_e262 + ((0.02715246f * hw_6) * _e270));
+            let _e273 = around;
+            let _e276 = big_b_1;
+            let _e277 = start_5;
+            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009f * hw_6)));
+            around = (_e273 + ((0.02715246f * hw_6) * _e281));
+            let _e284 = sum_13;
+            let _e285 = wpsi;
+            let _e286 = around;
+            sum_13 = (_e284 + (_e285 * _e286));
         }
         continuing {
-            let _e291 = i_35;
-            i_35 = (_e291 + 1u);
+            let _e290 = i_35;
+            i_35 = (_e290 + 1u);
         }
     }
-    let _e293 = sum_13;
-    return _e293;
+    let _e292 = sum_13;
+    return _e292;
 }
 
 fn airlight_sphere(s_47: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
@@ -7638,7 +7646,7 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
     var local_193: bool;
-    var g_28: AirlightCanonical;
+    var g_29: AirlightCanonical;
 
     let p_8 = n_3.scene;
     let _e7 = airlight_vec_finite(p_8.light_position);
@@ -7650,13 +7658,13 @@ fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     }
     let _e13 = local_193;
     if _e13 {
-        g_28 = n_3.canonical;
+        g_29 = n_3.canonical;
         if !(n_3.exact) {
             let _e18 = airlight_canonical(p_8);
             let _e19 = airlight_refined(p_8, _e18);
-            g_28 = _e19;
+            g_29 = _e19;
         }
-        let _e20 = g_28;
+        let _e20 = g_29;
         let _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }

@@ -3121,14 +3121,26 @@ fn airlight_sort4(x: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(b.x, min(b.y, b.z), max(b.y, b.z), b.w);
 }
 
-/// One node γ of `airlight_flat_lobe_along`: L_e c^{p−1} e^{−σt z/c} P sin θ dθ/dγ at
-/// θ = start + graded tan γ, c = −(p·n)(cos θ − k sin θ).
-fn airlight_flat_lobe_node(s: AirlightScene, z: f32, lobe: AirlightFlatLobe, k: f32, start: f32, graded: f32, g: f32) -> f32 {
+/// outer.rs `graded_from`'s rule on θ ∈ [start, to] (a phase lobe of scale `scale`): (the scale
+/// g = max(scale, start), the range of γ).
+fn airlight_graded_from(scale: f32, start: f32, to: f32) -> vec2<f32> {
+    let graded = max(scale, start);
+    return vec2<f32>(graded, airlight_atan((to - start) / graded));
+}
+
+/// A node γ of that rule as (cos θ, sin θ, dθ/dγ), θ = start + g tan γ.
+fn airlight_graded_from_node(start: f32, graded: f32, g: f32) -> vec3<f32> {
     let tg = airlight_cos_sin_half_turn(g);
-    let ct = airlight_cos_sin_half_turn(start + graded * tg.y / tg.x);
-    let c = -lobe.p.z * (ct.x - k * ct.y);
+    return vec3<f32>(airlight_cos_sin_half_turn(start + graded * tg.y / tg.x), graded / (tg.x * tg.x));
+}
+
+/// One node γ of `airlight_flat_lobe_along`: L_e c^{p−1} e^{−σt z/c} P sin θ dθ/dγ,
+/// c = −(p·n)(cos θ − k sin θ).
+fn airlight_flat_lobe_node(s: AirlightScene, z: f32, lobe: AirlightFlatLobe, k: f32, start: f32, graded: f32, g: f32) -> f32 {
+    let at = airlight_graded_from_node(start, graded, g);
+    let c = -lobe.p.z * (at.x - k * at.y);
     if (!(c > 0.0)) { return 0.0; }
-    return airlight_emitted(s, c) * exp(min(-s.sigma_t * z / c, 0.0)) * airlight_area_phase(s, lobe.sign * ct.x) * ct.y * graded / (tg.x * tg.x);
+    return airlight_emitted(s, c) * exp(min(-s.sigma_t * z / c, 0.0)) * airlight_area_phase(s, lobe.sign * at.x) * at.y * at.z;
 }
 
 /// The θ integral of `airlight_flat_about_lobe` in the half-plane of azimuth ψ (`cs` = (cos ψ,
@@ -3140,11 +3152,10 @@ fn airlight_flat_lobe_along(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
     let chord = airlight_outline_chord(o, lobe.q, w.xy + k * lobe.p.xy);
     if (!(chord.x < chord.y)) { return 0.0; }
     let start = airlight_atan2_upper(chord.x, lobe.l + k * chord.x);
-    let to = airlight_atan2_upper(chord.y, lobe.l + k * chord.y);
-    let graded = max(lobe.scale, start);
-    let top = airlight_atan((to - start) / graded);
-    let c = 0.5 * top;
-    let hw = 0.5 * top;
+    let range = airlight_graded_from(lobe.scale, start, airlight_atan2_upper(chord.y, lobe.l + k * chord.y));
+    let graded = range.x;
+    let c = 0.5 * range.y;
+    let hw = 0.5 * range.y;
     var sum = 0.0;
 @RADIAL_FLAT_LOBE@    return sum;
 }
@@ -3259,12 +3270,11 @@ fn airlight_sphere_cap(s: AirlightScene, a: AirlightArea, cap: AirlightCap) -> f
 
 /// One node γ of `airlight_sphere_about_lobe`'s θ integral along ψ: L_e c^{p−1} e^{−σt d} P sin θ dθ/dγ.
 fn airlight_sphere_lobe_node(s: AirlightScene, cap: AirlightCap, sign: f32, cos_p: f32, big_b: f32, start: f32, graded: f32, g: f32) -> f32 {
-    let tg = airlight_cos_sin_half_turn(g);
-    let ct = airlight_cos_sin_half_turn(start + graded * tg.y / tg.x);
-    let toward_a = ct.x * cos_p + ct.y * big_b;
+    let at = airlight_graded_from_node(start, graded, g);
+    let toward_a = at.x * cos_p + at.y * big_b;
     let root = sqrt(max(cap.radius * cap.radius - cap.dc * cap.dc * (1.0 - toward_a) * (1.0 + toward_a), 0.0));
     let dist = max(cap.dc * toward_a - root, 0.0);
-    return airlight_emitted(s, root / cap.radius) * exp(min(-s.sigma_t * dist, 0.0)) * airlight_area_phase(s, sign * ct.x) * ct.y * graded / (tg.x * tg.x);
+    return airlight_emitted(s, root / cap.radius) * exp(min(-s.sigma_t * dist, 0.0)) * airlight_area_phase(s, sign * at.x) * at.y * at.z;
 }
 
 /// S(x) of a sphere whose cap holds (or nearly) the direction p = sign·d of a phase lobe of
@@ -3298,11 +3308,10 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
         let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
         var start = 0.0;
         if (!inside) { start = max(mid - spread, 0.0); }
-        let to = mid + spread;
-        let graded = max(scale, start);
-        let top = airlight_atan((to - start) / graded);
-        let c = 0.5 * top;
-        let hw = 0.5 * top;
+        let range = airlight_graded_from(scale, start, mid + spread);
+        let graded = range.x;
+        let c = 0.5 * range.y;
+        let hw = 0.5 * range.y;
         var around = 0.0;
 @RADIAL_LOBE@        sum += wpsi * around;
     }

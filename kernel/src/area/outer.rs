@@ -102,6 +102,19 @@ fn graded_radial<T: Real>(scale: Option<T>, top: T, mut f: impl FnMut(T, T)) {
     }
 }
 
+/// `f(sin θ, cos θ, w)` at the nodes and weights of [`RADIAL`] in `θ ∈ [from, to]`, graded from
+/// `from` by `θ = from + g tan γ`, `g = max(s, from)`: a phase lobe's `P` about its direction is
+/// `s` wide, and its tail at the angle `from` about as wide as `from` (`sphere_about_lobe`,
+/// `flat_about_lobe`).
+fn graded_from<T: Real>(scale: T, from: T, to: T, mut f: impl FnMut(T, T, T)) {
+    let graded = scale.max(from);
+    each_node(&RADIAL, T::zero(), ((to - from) / graded).atan(), |g, w| {
+        let (sg, cg) = sin_cos_turns(g);
+        let (st, ct) = sin_cos_turns(from + graded * sg / cg);
+        f(st, ct, w * graded / (cg * cg));
+    });
+}
+
 /// The azimuths of [`AZIMUTHAL`], once per ray: `(cos ψ, sin ψ, weight)` over the whole circle and
 /// over the half `ψ ∈ [−π/2, π/2]`.
 struct Azimuths<T> {
@@ -461,15 +474,11 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         let Some((ra, rb)) = outline.chord(q, (w[0] + k * p[0], w[1] + k * p[1])) else {
             return T::zero();
         };
-        let (from, to) = (ra.atan2(l + k * ra), rb.atan2(l + k * rb));
-        let graded = scale.max(from);
         let mut sum = T::zero();
-        each_node(&RADIAL, T::zero(), ((to - from) / graded).atan(), |g, w| {
-            let (sg, cg) = sin_cos_turns(g);
-            let (st, ct) = sin_cos_turns(from + graded * sg / cg);
+        graded_from(scale, ra.atan2(l + k * ra), rb.atan2(l + k * rb), |st, ct, w| {
             let c = pn * (ct - k * st);
             if c > T::zero() {
-                sum = sum + w * light.emitted(c) * exp_nonpositive(-light.sigma_t * z / c) * light.phase(sign * ct) * st * graded / (cg * cg);
+                sum = sum + w * light.emitted(c) * exp_nonpositive(-light.sigma_t * z / c) * light.phase(sign * ct) * st;
             }
         });
         sum
@@ -603,16 +612,13 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
         let (mid, spread) = (big_b.atan2(cos_p), (cos_a / cos_p.hypot(big_b)).min(T::one()).acos());
         // θ from its least (0 inside, the near rim outside), graded from there by s (outside by
         // the larger of s and that least θ: the lobe's tail there is as wide as its distance)
-        let (from, to) = if inside { (T::zero(), mid + spread) } else { ((mid - spread).max(T::zero()), mid + spread) };
-        let graded = scale.max(from);
+        let from = if inside { T::zero() } else { (mid - spread).max(T::zero()) };
         let mut around = T::zero();
-        each_node(&RADIAL, T::zero(), ((to - from) / graded).atan(), |g, w| {
-            let (sg, cg) = sin_cos_turns(g);
-            let (st, ct) = sin_cos_turns(from + graded * sg / cg);
+        graded_from(scale, from, mid + spread, |st, ct, w| {
             let toward_a = ct * cos_p + st * big_b;
             let root = (radius * radius - dc * dc * (T::one() - toward_a) * (T::one() + toward_a)).max(T::zero()).sqrt();
             let dist = (dc * toward_a - root).max(T::zero());
-            around = around + w * light.emitted(root / radius) * exp_nonpositive(-light.sigma_t * dist) * light.phase(sign * ct) * st * graded / (cg * cg);
+            around = around + w * light.emitted(root / radius) * exp_nonpositive(-light.sigma_t * dist) * light.phase(sign * ct) * st;
         });
         sum = sum + wpsi * around;
     }
