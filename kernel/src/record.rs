@@ -4,7 +4,7 @@
 
 use crate::light::{AnyDistribution, SpotCone, TwoLobed};
 use crate::phase::{AnyPhase, CornetteShanks, HenyeyGreenstein, Schlick, TwoLobeHenyeyGreenstein};
-use crate::{InputError, Medium, PointLight, Ray, Real, Scene};
+use crate::{Emitter, InputError, Medium, PointLight, Ray, Real, Scene};
 
 /// A scene record: the four parts of a [`Scene`], unchecked.
 #[derive(Clone, Copy, Debug)]
@@ -38,6 +38,15 @@ pub fn cast_light<T: Real, U: Real>(l: &PointLight<T, AnyDistribution<T>>) -> Po
         }
     };
     PointLight { position: cast3::<T, U>(l.position), intensity: cast(l.intensity), distribution }
+}
+
+/// An area light's emitter in precision `U`.
+pub fn cast_emitter<T: Real, U: Real>(e: &Emitter<T>) -> Emitter<U> {
+    match *e {
+        Emitter::Disc { center, normal, radius } => Emitter::Disc { center: cast3::<T, U>(center), normal: cast3::<T, U>(normal), radius: cast(radius) },
+        Emitter::Rectangle { corner, edge_u, edge_v } => Emitter::Rectangle { corner: cast3::<T, U>(corner), edge_u: cast3::<T, U>(edge_u), edge_v: cast3::<T, U>(edge_v) },
+        Emitter::Sphere { center, radius } => Emitter::Sphere { center: cast3::<T, U>(center), radius: cast(radius) },
+    }
 }
 
 /// A phase function in precision `U`.

@@ -289,11 +289,6 @@ fn bounded_sphere_in_forward_fog() {
 #[test]
 fn bounded_flat_emitters_in_forward_fog() {
     use airlight::phase::HenyeyGreenstein as Hg;
-    let to_f32 = |e: Emitter<f64>| match e {
-        Emitter::Disc { center, normal, radius } => Emitter::Disc { center: center.as_vec3(), normal: normal.as_vec3(), radius: radius as f32 },
-        Emitter::Rectangle { corner, edge_u, edge_v } => Emitter::Rectangle { corner: corner.as_vec3(), edge_u: edge_u.as_vec3(), edge_v: edge_v.as_vec3() },
-        Emitter::Sphere { center, radius } => Emitter::Sphere { center: center.as_vec3(), radius: radius as f32 },
-    };
     let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
     let emitters = [
         Emitter::Disc { center: DVec3::new(6.0, 1.5, -0.5), normal: DVec3::new(-1.0, -0.4, 0.1), radius: 0.8 },
@@ -307,7 +302,7 @@ fn bounded_flat_emitters_in_forward_fog() {
                 let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-9).0);
                 let f32_scene = AreaScene::<f32, _>::new(
                     Ray { origin: Vec3::ZERO, dir: towards.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
-                    AreaLight::new(to_f32(emitter), 2.0),
+                    AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&emitter), 2.0),
                     Medium { sigma_s: 0.05, sigma_t: 0.08 },
                     AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
                 )

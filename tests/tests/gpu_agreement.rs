@@ -459,11 +459,6 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
     let (corner, edge_u, edge_v) = (Vec3::new(6.0, 1.0, -1.0), Vec3::new(0.1, 0.0, 1.0), Vec3::new(0.0, 1.2, 0.1));
     let emitters = [("disc", Emitter::Disc { center, normal, radius: 0.8 }), ("rectangle", Emitter::Rectangle { corner, edge_u, edge_v })];
     let rays = [("at", Vec3::new(6.0, 1.5, -0.5)), ("limb", Vec3::new(6.0, 2.25, -0.3)), ("past the limb", Vec3::new(6.0, 2.4, -0.5)), ("beside", Vec3::new(1.0, 0.0, 0.3))];
-    let wide = |e: Emitter<f32>| match e {
-        Emitter::Disc { center, normal, radius } => Emitter::Disc { center: center.as_dvec3(), normal: normal.as_dvec3(), radius: radius as f64 },
-        Emitter::Rectangle { corner, edge_u, edge_v } => Emitter::Rectangle { corner: corner.as_dvec3(), edge_u: edge_u.as_dvec3(), edge_v: edge_v.as_dvec3() },
-        Emitter::Sphere { center, radius } => Emitter::Sphere { center: center.as_dvec3(), radius: radius as f64 },
-    };
     let lights = [(0.9f32, 1u32), (0.95, 1), (0.99, 1), (0.0, 1024)];
     let mut cases = Vec::new();
     for (g, power) in lights {
@@ -478,7 +473,7 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
                 let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
                 let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
                 let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
-                let light = AreaLight { emission, ..AreaLight::new(wide(emitter), 2.0) };
+                let light = AreaLight { emission, ..AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&emitter), 2.0) };
                 let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 })).unwrap();
                 cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} p = {power} {name} {label}")));
             }
