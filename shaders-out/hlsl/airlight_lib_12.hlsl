@@ -610,11 +610,11 @@ float2 airlight_csqrt(float2 z_1)
     }
     const float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
-        return float2(t_4, (z_1.y / (t_4 + t_4)));
+        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_5, (z_1.y / (t_5 + t_5)));
     }
-    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
-    return float2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
+    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
 }
 
 float2 airlight_cos_sin(float x)
@@ -849,8 +849,8 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float _e13 = r2_1;
     const uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    float2 b_14 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
-    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_14);
+    float2 b_15 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
+    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_15);
     const float2 _e33 = airlight_cmul(_e29, _e29);
     const float2 _e35 = airlight_csqrt((float2(1.0, 0.0) - _e33));
     root = _e35;
@@ -860,7 +860,7 @@ float2 airlight_e1_scaled_cf(float2 z_6)
         root = -(_e41);
     }
     float2 _e46 = root;
-    const float2 _e48 = airlight_cmul(b_14, (float2(1.0, 0.0) + _e46));
+    const float2 _e48 = airlight_cmul(b_15, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -935,12 +935,12 @@ float airlight_en_scaled_cf(float x_4, uint n)
     const uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_6 = float(_e2);
-    float b_15 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_30 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
-    float disc = (1.0 - ((4.0 * a_30) / (b_15 * b_15)));
-    t_2 = b_15;
+    float b_16 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
+    float a_31 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float disc = (1.0 - ((4.0 * a_31) / (b_16 * b_16)));
+    t_2 = b_16;
     if ((disc > 0.0)) {
-        t_2 = ((b_15 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_16 * (1.0 + sqrt(disc))) * 0.5);
     }
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1132,11 +1132,11 @@ airlight_ret_airlight_en_scaled airlight_en_scaled(float x_5)
 float airlight_hg_base(float g_2, float om, float op)
 {
     if ((g_2 >= 0.0)) {
-        float a_31 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_31 * a_31));
+        float a_32 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_32 * a_32));
     }
-    float b_16 = (1.0 + g_2);
-    return ((op * -((g_2 + g_2))) + (b_16 * b_16));
+    float b_17 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
 }
 
 float airlight_hg(float g_3, float om_1, float op_1)
@@ -1261,11 +1261,11 @@ float airlight_singular_height(float side, float gap, float sigma)
 
 float airlight_hg_gap(float g_4)
 {
-    float a_32 = abs(g_4);
-    if (!((a_32 > 0.0))) {
+    float a_33 = abs(g_4);
+    if (!((a_33 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_32) * (1.0 - a_32)) / (a_32 + a_32));
+    return (((1.0 - a_33) * (1.0 - a_33)) / (a_33 + a_33));
 }
 
 float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
@@ -1282,8 +1282,8 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
             break;
         }
         case 3u: {
-            float a_33 = abs(p0_3);
-            const float _e19 = airlight_singular_height(p0_3, ((a_33 > 0.0) ? ((1.0 - a_33) / a_33) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_34 = abs(p0_3);
+            const float _e19 = airlight_singular_height(p0_3, ((a_34 > 0.0) ? ((1.0 - a_34) / a_34) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -2302,47 +2302,47 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_9 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_11 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if ((q_9 < 1.0)) {
+    if ((q_11 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_9) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_11) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_9) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_11) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_9) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_11) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_9) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_11) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_9) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_11) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_9) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_11) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_9) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_11) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (true ? ((_e126 * q_9) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (true ? ((_e126 * q_11) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
         float _e137 = aliasing;
-        aliasing = (true ? ((_e137 * q_9) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
+        aliasing = (true ? ((_e137 * q_11) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
         float _e144 = aliasing;
         float _e148 = aliasing;
-        aliasing = (true ? ((_e148 * q_9) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
+        aliasing = (true ? ((_e148 * q_11) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
         float _e155 = aliasing;
         float _e159 = aliasing;
-        aliasing = (true ? ((_e159 * q_9) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
+        aliasing = (true ? ((_e159 * q_11) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
         float _e166 = aliasing;
         float _e170 = aliasing;
-        aliasing = (false ? ((_e170 * q_9) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
+        aliasing = (false ? ((_e170 * q_11) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
         float _e177 = aliasing;
-        return min(((_e177 + (q_9 * truncation)) / m_1[0]), 1.0);
+        return min(((_e177 + (q_11 * truncation)) / m_1[0]), 1.0);
     }
     float _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -2397,8 +2397,8 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
 float airlight_bernstein_rho(float re, float im)
 {
     float im2_ = (im * im);
-    float a_34 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_34 + sqrt(max(((a_34 * a_34) - 1.0), 0.0)));
+    float a_35 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_35 + sqrt(max(((a_35 * a_35) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs)
@@ -2497,8 +2497,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             float _e40 = r_2;
             uint _e41 = i_6;
             const float _e42 = airlight_node(_e8, _e41);
-            float v_8 = (_e39 + (_e40 * _e42));
-            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_8);
+            float v_10 = (_e39 + (_e40 * _e42));
+            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_10);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_6;
@@ -3257,8 +3257,8 @@ float airlight_graded_split(float a_9, float b_8, float3 heights_3)
 {
     bool local_20 = (bool)0;
 
-    float t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    float d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
+    float t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    float d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
     if ((d_2 > 0.0)) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25));
     } else {
@@ -3587,8 +3587,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
     float inv_h = (1.0 / big_h_1);
     float w_4 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
-    float e_9 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_9 * inv_h);
+    float e_12 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_12 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_11, float j_1)
@@ -3632,9 +3632,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return float2(0.0, 0.0);
     }
-    float h_3 = g_13.h;
-    float u0_ = ((g_13.t_lo - g_13.x_h) / h_3);
-    float u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
+    float h_4 = g_13.h;
+    float u0_ = ((g_13.t_lo - g_13.x_h) / h_4);
+    float u1_ = ((g_13.t_hi - g_13.x_h) / h_4);
     if (!(g_13.t_hi_infinite)) {
         const bool _e21 = airlight_is_finite(u1_);
         local_26 = _e21;
@@ -3642,7 +3642,7 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
         local_26 = false;
     }
     bool u1_finite = local_26;
-    float big_h_7 = (s_11.sigma_t * h_3);
+    float big_h_7 = (s_11.sigma_t * h_4);
     const float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
         const float _e29 = airlight_angle_y(u1_);
@@ -3670,7 +3670,7 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
         if (u1_finite) {
             const float _e65 = airlight_atan2_upper(1.0, u1_);
             psi1_1 = _e65;
-            wy = ((g_13.t_hi - g_13.t_lo) / h_3);
+            wy = ((g_13.t_hi - g_13.t_lo) / h_4);
             wx = (1.0 + (u0_ * u1_));
         }
     }
@@ -3716,9 +3716,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             break;
         }
         case 3u: {
-            float a_35 = abs(p0_4);
+            float a_36 = abs(p0_4);
             float _e145 = psi1_1;
-            const float _e146 = airlight_angle_floor(p0_4, ((a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            const float _e146 = airlight_angle_floor(p0_4, ((a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3792,15 +3792,15 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             bool below_1 = (lower <= 1.5707964);
             float _e248 = psi1_1;
             const float2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
-            float cs_2 = _e254.y;
+            float cs_3 = _e254.y;
             float sn = (below_1 ? -(_e254.x) : _e254.x);
             float near_pole = (1.0 + _e254.x);
-            float far_pole = ((cs_2 * cs_2) / near_pole);
+            float far_pole = ((cs_3 * cs_3) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_10 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
-            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
+            float y_10 = (below_1 ? (cs_3 / near_pole) : (near_pole / cs_3));
+            float weight_3 = ((cs_3 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
+            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
             const float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
             float gw = (weight_3 * f_2);
@@ -3845,11 +3845,11 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     }
     if ((s_11.sigma_t > 0.0)) {
         const float _e365 = airlight_hypot_one(u0_);
-        x_12 = (s_11.sigma_t * (h_3 * _e365));
+        x_12 = (s_11.sigma_t * (h_4 * _e365));
     }
     float _e370 = x_12;
     float _e371 = value_1;
-    const float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5));
+    const float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_4, _e370, ((_e371 * hw_1) * 0.5));
     return float2(1.0, _e375);
 }
 
@@ -3874,23 +3874,23 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_36 = (a0_ / scale_3);
-    float b_17 = (b0_ / scale_3);
+    float a_37 = (a0_ / scale_3);
+    float b_18 = (b0_ / scale_3);
     float c_10 = (c0_ / scale_3);
-    float disc_1 = ((b_17 * b_17) - ((4.0 * a_36) * c_10));
+    float disc_1 = ((b_18 * b_18) - ((4.0 * a_37) * c_10));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_17 < 0.0)) {
+    if ((b_18 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_10 = (-0.5 * (b_17 + (_e47 * sqrt(disc_1))));
-    if ((q_10 != 0.0)) {
-        r1_ = (c_10 / q_10);
+    float q_12 = (-0.5 * (b_18 + (_e47 * sqrt(disc_1))));
+    if ((q_12 != 0.0)) {
+        r1_ = (c_10 / q_12);
     }
-    if ((a_36 != 0.0)) {
-        r2_2 = (q_10 / a_36);
+    if ((a_37 != 0.0)) {
+        r2_2 = (q_12 / a_37);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3937,15 +3937,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_37 = (sigma_11 * g_15.d_el);
+    float a_38 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_37 * a_37) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_37) / d_3);
-    if ((a_37 > 0.0)) {
-        y1_1 = (d_3 / (a_37 + root_1));
+    float root_1 = sqrt(((a_38 * a_38) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_38) / d_3);
+    if ((a_38 > 0.0)) {
+        y1_1 = (d_3 / (a_38 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -4107,13 +4107,13 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                         float _e94 = cuts[min(uint((_e90 + 1u)), 3u)];
                         if ((_e89 > _e94)) {
                             uint _e96 = j_2;
-                            float t_7 = cuts[min(uint(_e96), 3u)];
+                            float t_8 = cuts[min(uint(_e96), 3u)];
                             uint _e99 = j_2;
                             uint _e101 = j_2;
                             float _e105 = cuts[min(uint((_e101 + 1u)), 3u)];
                             cuts[min(uint(_e99), 3u)] = _e105;
                             uint _e106 = j_2;
-                            cuts[min(uint((_e106 + 1u)), 3u)] = t_7;
+                            cuts[min(uint((_e106 + 1u)), 3u)] = t_8;
                         }
                     }
                 }
@@ -4331,11 +4331,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     bool local_44 = (bool)0;
     float x_13 = 0.0;
 
-    float h_4 = g_18.h;
-    float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
+    float h_5 = g_18.h;
+    float a_s = ((g_18.x_h - g_18.t_lo) / h_5);
     const float _e8 = airlight_hypot_one(a_s);
     const float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
+    float u_e = ((g_18.t_hi - g_18.x_h) / h_5);
     if (!(g_18.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
         local_43 = _e24;
@@ -4346,7 +4346,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_18.t_hi - g_18.t_lo) / h_4) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_18.t_hi - g_18.t_lo) / h_5) * ((_e9 + v_end) / (_e8 + _e27)));
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
@@ -4380,7 +4380,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float _e66 = x_13;
     const float2 _e67 = airlight_moment_zero_weighted(half_17, _e66);
     const float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
-    const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
+    const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
@@ -4418,7 +4418,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
     }
-    float h_5 = g_19.h;
+    float h_6 = g_19.h;
     float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_19.t_hi_infinite)) {
@@ -4441,7 +4441,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
     }
     if (!(inside_1)) {
         float _e48 = gap_2;
-        local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_49 = (h_6 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_49 = false;
     }
@@ -4451,7 +4451,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
-    if ((h_5 == 0.0)) {
+    if ((h_6 == 0.0)) {
         const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_2;
     }
@@ -4567,9 +4567,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     }
     float t0_1 = g_20.t_lo;
     float t1_1 = g_20.t_hi;
-    float h_6 = g_20.h;
+    float h_7 = g_20.h;
     float x_h_1 = g_20.x_h;
-    float big_h_8 = (s_18.sigma_t * h_6);
+    float big_h_8 = (s_18.sigma_t * h_7);
     const bool _e12 = airlight_isotropic_scene(s_18);
     if (_e12) {
         local_59 = (t0_1 < x_h_1);
@@ -4603,7 +4603,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     }
     bool cut_1 = !(_e12);
     if ((t0_1 < x_h_1)) {
-        float a_s_1 = ((x_h_1 - t0_1) / h_6);
+        float a_s_1 = ((x_h_1 - t0_1) / h_7);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
             local_62 = (t1_1 < x_h_1);
@@ -4615,13 +4615,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
             t_end = t1_1;
         }
         float _e62 = t_end;
-        float a_e = ((x_h_1 - _e62) / h_6);
+        float a_e = ((x_h_1 - _e62) / h_7);
         const float _e65 = airlight_hypot_one(a_s_1);
         const float _e66 = airlight_hypot_one(a_e);
         const float _e67 = airlight_bounded(a_s_1);
         const float _e68 = airlight_bounded(a_e);
         float _e69 = t_end;
-        float dy_1 = (((((_e69 - t0_1) / h_6) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
+        float dy_1 = (((((_e69 - t0_1) / h_7) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         const float _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
@@ -4643,7 +4643,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         AirlightHalf _e106 = half_13;
         const float _e107 = airlight_half(s_18, g_20, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        const float _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, (big_h_8 * _e65), _e107);
+        const float _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
@@ -4661,11 +4661,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     bool _e126 = local_65;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
-        float a_s_2 = ((t_start - x_h_1) / h_6);
+        float a_s_2 = ((t_start - x_h_1) / h_7);
         const float _e130 = airlight_hypot_one(a_s_2);
         const float _e131 = airlight_bounded(a_s_2);
         dy = _e131;
-        float a_e_1 = ((t1_1 - x_h_1) / h_6);
+        float a_e_1 = ((t1_1 - x_h_1) / h_7);
         if (!(g_20.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
             local_66 = _e145;
@@ -4676,7 +4676,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
-            float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
+            float dv_end_1 = (((t1_1 - t_start) / h_7) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
                 local_67 = _e162;
@@ -4739,7 +4739,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         AirlightHalf _e224 = half_14;
         const float _e225 = airlight_half(s_18, g_20, 1.0, _e224, _e12, f_max_7);
         float _e226 = total_3;
-        const float _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        const float _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     float _e236 = total_3;
@@ -4797,8 +4797,8 @@ bool airlight_normalisable(float3 v_2)
 float3 airlight_normalize(float3 v_3)
 {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_7 = (v_3 / (m_8).xxx);
-    return (u_7 / (length(u_7)).xxx);
+    float3 u_9 = (v_3 / (m_8).xxx);
+    return (u_9 / (length(u_9)).xxx);
 }
 
 bool airlight_valid(AirlightScene s_19)
@@ -5327,9 +5327,9 @@ float2 airlight_two_sum(float a_13, float b_10, uint key_1)
     const float _e4 = airlight_opaque((a_13 + b_10), key_1);
     const float _e6 = airlight_opaque((_e4 - a_13), key_1);
     const float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_10 = ((a_13 - _e8) + (b_10 - _e6));
-    const bool _e12 = airlight_is_finite(e_10);
-    return float2(_e4, (_e12 ? e_10 : 0.0));
+    float e_13 = ((a_13 - _e8) + (b_10 - _e6));
+    const bool _e12 = airlight_is_finite(e_13);
+    return float2(_e4, (_e12 ? e_13 : 0.0));
 }
 
 float airlight_split_high(float x_15)
@@ -5344,9 +5344,9 @@ float2 airlight_two_product(float a_14, float b_11, uint key_2)
     float al = (a_14 - _e5);
     const float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    const bool _e17 = airlight_is_finite(e_11);
-    return float2(_e4, (_e17 ? e_11 : 0.0));
+    float e_14 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_14);
+    return float2(_e4, (_e17 ? e_14 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3)
@@ -5424,10 +5424,10 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
         return airlightcanonical_3;
     }
     const float _e93 = airlight_safe_length(dir_2);
-    float h_7 = (_e85 / _e93);
-    const bool _e95 = airlight_is_finite(h_7);
+    float h_8 = (_e85 / _e93);
+    const bool _e95 = airlight_is_finite(h_8);
     if (_e95) {
-        local_129 = (h_7 > 0.0);
+        local_129 = (h_8 > 0.0);
     } else {
         local_129 = false;
     }
@@ -5443,7 +5443,7 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
     const float3 _e113 = airlight_normalize(dir_2);
     const float3 _e114 = airlight_normalize(w_6);
     float3 n_4 = -(cross(_e113, _e114));
-    out_2.h = h_7;
+    out_2.h = h_8;
     float3 _e119 = a_16;
     out_2.d_c = dot(n_4, _e119);
     AirlightCanonical _e121 = out_2;
@@ -6039,10 +6039,10 @@ float airlight_asinh(float x_16)
 {
     float r_4 = (float)0;
 
-    float a_38 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_38));
-    if ((a_38 <= 4096.0)) {
-        const float _e17 = airlight_log1p((a_38 + ((a_38 * a_38) / (1.0 + sqrt((1.0 + (a_38 * a_38)))))));
+    float a_39 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_39));
+    if ((a_39 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_39 + ((a_39 * a_39) / (1.0 + sqrt((1.0 + (a_39 * a_39)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -6070,8 +6070,8 @@ float2 airlight_cos_sin_half_turn(float x_17)
 
 float airlight_acos(float x_18)
 {
-    float a_39 = abs(x_18);
-    const float _e8 = airlight_atan(sqrt(((1.0 - a_39) / (1.0 + a_39))));
+    float a_40 = abs(x_18);
+    const float _e8 = airlight_atan(sqrt(((1.0 - a_40) / (1.0 + a_40))));
     return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -6083,12 +6083,12 @@ float airlight_angle(float c_6, float s_23)
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
 {
-    float a_40 = (cos_a * cos_g);
-    float b_18 = (sin_a * sin_g);
-    if ((b_18 <= abs(a_40))) {
-        return ((a_40 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_41 = (cos_a * cos_g);
+    float b_19 = (sin_a * sin_g);
+    if ((b_19 <= abs(a_41))) {
+        return ((a_41 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    const float _e18 = airlight_acos(clamp((-(a_40) / b_18), -1.0, 1.0));
+    const float _e18 = airlight_acos(clamp((-(a_41) / b_19), -1.0, 1.0));
     return _e18;
 }
 
@@ -6399,33 +6399,33 @@ AirlightOuter airlight_surface(AirlightScene s_25)
             }
             {
                 uint _e339 = i_22;
-                float e_12 = g_22.gamma[min(uint(_e339), 12u)];
-                if (!((e_12 == kinks[0]))) {
-                    local_137 = (e_12 == kinks[1]);
+                float e_15 = g_22.gamma[min(uint(_e339), 12u)];
+                if (!((e_15 == kinks[0]))) {
+                    local_137 = (e_15 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
                 bool _e350 = local_137;
                 if (!(_e350)) {
-                    local_138 = (e_12 == kinks[2]);
+                    local_138 = (e_15 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
                 bool _e357 = local_138;
                 if (!(_e357)) {
-                    local_139 = (e_12 == kinks[3]);
+                    local_139 = (e_15 == kinks[3]);
                 } else {
                     local_139 = true;
                 }
                 bool _e364 = local_139;
                 if (!(_e364)) {
-                    local_140 = (e_12 == kinks[4]);
+                    local_140 = (e_15 == kinks[4]);
                 } else {
                     local_140 = true;
                 }
                 bool _e371 = local_140;
                 if (!(_e371)) {
-                    local_141 = (e_12 == kinks[5]);
+                    local_141 = (e_15 == kinks[5]);
                 } else {
                     local_141 = true;
                 }
@@ -6590,14 +6590,14 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_11 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_13 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_11.k) ? (_e48 / q_11.k) : 1.0);
+    float s2_1 = ((_e51 < q_13.k) ? (_e48 / q_13.k) : 1.0);
     const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -6635,7 +6635,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            const float _e109 = airlight_lobe_piece(q_11, edges_1[min(uint(_e103), 3u)], edges_1[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            const float _e109 = airlight_lobe_piece(q_13, edges_1[min(uint(_e103), 3u)], edges_1[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -6709,11 +6709,11 @@ AirlightOuter airlight_outer(AirlightScene s_26)
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
-    float3 e_13 = (ab_1 / (_e15).xxx);
+    float3 e_16 = (ab_1 / (_e15).xxx);
     const float3 _e41 = airlight_normalize(s_26.dir);
     float3 w0_ = (s_26.light_position - s_26.origin);
-    float cos_a_2 = dot(e_13, _e41);
-    float along_e = dot(e_13, w0_);
+    float cos_a_2 = dot(e_16, _e41);
+    float along_e = dot(e_16, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_5 = ((s_26.flags & 1u) != 0u);
@@ -6724,7 +6724,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
+    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_16 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
         local_147 = (sin_a_1 > 0.0);
@@ -6819,7 +6819,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_13;
+    g_24.e = e_16;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6952,15 +6952,15 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_36 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_21 - float(i_36));
-        float a_41 = g_25.gamma[min(uint(i_36), 12u)];
-        float b_19 = g_25.gamma[min(uint((i_36 + 1u)), 12u)];
-        float w_8 = (b_19 - a_41);
-        float u_8 = (1.0 - t_8);
+        float t_9 = (x_21 - float(i_36));
+        float a_42 = g_25.gamma[min(uint(i_36), 12u)];
+        float b_20 = g_25.gamma[min(uint((i_36 + 1u)), 12u)];
+        float w_8 = (b_20 - a_42);
+        float u_10 = (1.0 - t_9);
         bool smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
         bool smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_41 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
-        jacobian = (((w_8 * 6.0) * t_8) * u_8);
+        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        jacobian = (((w_8 * 6.0) * t_9) * u_10);
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -6968,7 +6968,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_41 + ((w_8 * t_8) * t_8)) : _e58);
+        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6976,7 +6976,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e75 = local_164;
-        jacobian = (_e75 ? (w_8 * (t_8 + t_8)) : _e68);
+        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
             local_165 = !(smooth_b);
@@ -6984,7 +6984,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = (_e85 ? (b_19 - ((w_8 * u_8) * u_8)) : _e77);
+        gamma_1 = (_e85 ? (b_20 - ((w_8 * u_10) * u_10)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -6992,7 +6992,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_166 = false;
         }
         bool _e94 = local_166;
-        jacobian = (_e94 ? (w_8 * (u_8 + u_8)) : _e87);
+        jacobian = (_e94 ? (w_8 * (u_10 + u_10)) : _e87);
         float _e96 = gamma_1;
         if (smooth_a) {
             local_167 = smooth_b;
@@ -7000,7 +7000,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_41 + (w_8 * t_8)) : _e96);
+        gamma_1 = (_e102 ? (a_42 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -7038,9 +7038,9 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         p.t_max = 0.0;
         p.flags = 1u;
         float sin_g_1 = max(_e119.y, 0.0);
-        float h_8 = (g_25.d * sin_g_1);
-        float d_c_2 = ((h_8 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
-        AirlightCanonical exact = ConstructAirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
+        float h_9 = (g_25.d * sin_g_1);
+        float d_c_2 = ((h_9 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
+        AirlightCanonical exact = ConstructAirlightCanonical(h_9, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
         AirlightScene _e206 = p;
         float _e207 = weight;
         float _e210 = jacobian;
@@ -7114,11 +7114,11 @@ float airlight_emitted(AirlightScene s_29, float c_7)
     float base_1 = (float)0;
     float acc_1 = 1.0;
 
-    uint p_2 = airlight_naga_f2u32(s_29.light_param_b);
-    if ((p_2 <= 1u)) {
+    uint p_3 = airlight_naga_f2u32(s_29.light_param_b);
+    if ((p_3 <= 1u)) {
         return s_29.intensity;
     }
-    e_2 = (p_2 - 1u);
+    e_2 = (p_3 - 1u);
     base_1 = c_7;
     uint _e13 = e_2;
     if (((_e13 & 1u) != 0u)) {
@@ -7236,11 +7236,11 @@ float airlight_emitted(AirlightScene s_29, float c_7)
 
 float airlight_emission_scale(AirlightScene s_30)
 {
-    uint p_3 = airlight_naga_f2u32(s_30.light_param_b);
-    if ((p_3 <= 1u)) {
+    uint p_4 = airlight_naga_f2u32(s_30.light_param_b);
+    if ((p_4 <= 1u)) {
         return 0.0;
     }
-    return (2.0 / sqrt(float((p_3 - 1u))));
+    return (2.0 / sqrt(float((p_4 - 1u))));
 }
 
 float2 airlight_graded_range(AirlightScene s_31, float top)
@@ -7313,8 +7313,8 @@ float4 airlight_phase_lobes(AirlightScene s_34)
             break;
         }
         case 3u: {
-            float a_42 = abs(p0_5);
-            const float2 _e21 = airlight_lobe(p0_5, ((a_42 > 0.0) ? ((1.0 - a_42) / a_42) : AIRLIGHT_FLT_MAX));
+            float a_43 = abs(p0_5);
+            const float2 _e21 = airlight_lobe(p0_5, ((a_43 > 0.0) ? ((1.0 - a_43) / a_43) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -7425,7 +7425,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         const AirlightArea airlightarea = _e42;
         return airlightarea;
     }
-    float3 o_6 = s_35.origin;
+    float3 o_7 = s_35.origin;
     const float3 _e45 = airlight_normalize(s_35.dir);
     a_18.d = _e45;
     bool infinite_6 = ((s_35.flags & 1u) != 0u);
@@ -7434,17 +7434,17 @@ AirlightArea airlight_area(AirlightScene s_35)
     size = s_35.light_param_a;
     if ((s_35.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         float3 _e67 = a_18.c;
-        float3 oc = (o_6 - _e67);
-        float b_20 = dot(oc, _e45);
+        float3 oc = (o_7 - _e67);
+        float b_21 = dot(oc, _e45);
         float _e72 = a_18.radius;
         float _e74 = a_18.radius;
         float k_10 = (dot(oc, oc) - (_e72 * _e74));
-        float disc_2 = ((b_20 * b_20) - k_10);
+        float disc_2 = ((b_21 * b_21) - k_10);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_12 = (-(b_20) - (((asuint(b_20) & 2147483648u) != 0u) ? -(root_2) : root_2));
-            cut0_ = q_12;
-            cut1_ = (k_10 / q_12);
+            float q_14 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_14;
+            cut1_ = (k_10 / q_14);
             cut_count = 2u;
         }
     } else {
@@ -7485,7 +7485,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         float3 _e156 = a_18.c;
         float3 _e159 = a_18.n;
         float3 _e162 = a_18.n;
-        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
+        cut0_ = (dot((_e156 - o_7), _e159) / dot(_e45, _e162));
         cut_count = 1u;
     }
     float _e166 = size;
@@ -7496,7 +7496,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         return airlightarea_1;
     }
     float3 _e173 = centre;
-    float3 to_centre = (_e173 - o_6);
+    float3 to_centre = (_e173 - o_7);
     a_18.x_h = dot(to_centre, _e45);
     float _e178 = a_18.x_h;
     const float _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
@@ -7507,18 +7507,18 @@ AirlightArea airlight_area(AirlightScene s_35)
     end_infinite = infinite_6;
     if ((s_35.sigma_t > 0.0)) {
         float3 _e195 = centre;
-        const float _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
+        const float _e199 = airlight_safe_length((_e195 - (o_7 + (t0_2 * _e45))));
         float _e201 = size;
-        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
+        float reach_2 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
         if (!(infinite_6)) {
             float _e210 = t_end_1;
-            local_173 = (reach_1 < _e210);
+            local_173 = (reach_2 < _e210);
         } else {
             local_173 = true;
         }
         bool _e213 = local_173;
         if (_e213) {
-            t_end_1 = reach_1;
+            t_end_1 = reach_2;
             end_infinite = false;
         }
     }
@@ -7553,12 +7553,12 @@ AirlightArea airlight_area(AirlightScene s_35)
         }
         {
             uint _e245 = i_27;
-            float t_9 = cuts_4[min(uint(_e245), 2u)];
+            float t_10 = cuts_4[min(uint(_e245), 2u)];
             uint _e248 = i_27;
             cuts_4[min(uint(_e248), 2u)] = _e217;
-            const bool _e250 = airlight_is_finite(t_9);
+            const bool _e250 = airlight_is_finite(t_10);
             if (_e250) {
-                local_174 = (t_9 >= t0_2);
+                local_174 = (t_10 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -7567,7 +7567,7 @@ AirlightArea airlight_area(AirlightScene s_35)
                 bool _e258 = end_infinite;
                 if (!(_e258)) {
                     float _e262 = t_end_1;
-                    local_176 = (t_9 <= _e262);
+                    local_176 = (t_10 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -7580,7 +7580,7 @@ AirlightArea airlight_area(AirlightScene s_35)
             if (_e267) {
                 uint _e268 = i_27;
                 AirlightArea _e270 = a_18;
-                const float _e272 = airlight_area_theta(_e270, t_9, false);
+                const float _e272 = airlight_area_theta(_e270, t_10, false);
                 cuts_4[min(uint(_e268), 2u)] = _e272;
             }
         }
@@ -7614,12 +7614,12 @@ float airlight_flat_node(AirlightScene s_36, AirlightArea a_19, AirlightAbove ab
     const float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    float2 p_4 = (above_1.off + (r_13 * e_3));
+    float2 p_5 = (above_1.off + (r_13 * e_3));
     float z_19 = above_1.z;
-    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    float dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    const float _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    const float _e50 = airlight_area_phase(s_36, ((((p_5.x * a_19.dirs.x) + (p_5.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
     const float _e52 = airlight_emitted(s_36, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -7716,24 +7716,24 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
         }
         {
             uint _e40 = i_28;
-            float2 a_43 = o.corners[min(uint(_e40), 3u)];
+            float2 a_44 = o.corners[min(uint(_e40), 3u)];
             uint _e43 = i_28;
-            float2 e_14 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_43);
+            float2 e_17 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
             bool _e50 = inside;
             if (_e50) {
-                local_177 = ((((q_4.x - a_43.x) * e_14.y) - ((q_4.y - a_43.y) * e_14.x)) <= 0.0);
+                local_177 = ((((q_4.x - a_44.x) * e_17.y) - ((q_4.y - a_44.y) * e_17.x)) <= 0.0);
             } else {
                 local_177 = false;
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_10 = clamp(((((q_4.x - a_43.x) * e_14.x) + ((q_4.y - a_43.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
-            float2 p_5 = (a_43 + (t_10 * e_14));
-            float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
+            float t_11 = clamp(((((q_4.x - a_44.x) * e_17.x) + ((q_4.y - a_44.y) * e_17.y)) / ((e_17.x * e_17.x) + (e_17.y * e_17.y))), 0.0, 1.0);
+            float2 p_6 = (a_44 + (t_11 * e_17));
+            float dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
                 best = dd;
-                nearest = p_5;
+                nearest = p_6;
             }
         }
     }
@@ -7785,9 +7785,9 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
         {
             uint _e20 = j_5;
             float2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
-            float3 p_6 = (lobe_4.x * a_21.dirs);
+            float3 p_7 = (lobe_4.x * a_21.dirs);
             if ((lobe_4.y > 0.0)) {
-                local_178 = (p_6.z < 0.0);
+                local_178 = (p_7.z < 0.0);
             } else {
                 local_178 = false;
             }
@@ -7799,12 +7799,12 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
             }
             bool _e43 = local_179;
             if (_e43) {
-                float l_4 = (z_11 / -(p_6.z));
-                float2 q_13 = (l_4 * p_6.xy);
-                const float2 _e49 = airlight_outline_nearest(o_2, q_13);
+                float l_4 = (z_11 / -(p_7.z));
+                float2 q_15 = (l_4 * p_7.xy);
+                const float2 _e49 = airlight_outline_nearest(o_2, q_15);
                 float3 to_near = float3(_e49, -(z_11));
-                float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
-                bool on_emitter = all((_e49 == q_13));
+                float cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                bool on_emitter = all((_e49 == q_15));
                 if (!(on_emitter)) {
                     const float _e63 = airlight_acos(cos_1);
                     local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
@@ -7813,7 +7813,7 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
                 }
                 bool _e69 = local_180;
                 if (_e69) {
-                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
+                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_15, on_emitter);
                     return airlightflatlobe;
                 }
             }
@@ -7846,18 +7846,18 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
 
     if ((o_3.radius > 0.0)) {
         float2 qc_1 = (q_7 - o_3.corners[0]);
-        float a_44 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        float b_21 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        float a_45 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        float b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
         float k_11 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        float disc_3 = ((b_21 * b_21) - (a_44 * k_11));
+        float disc_3 = ((b_22 * b_22) - (a_45 * k_11));
         if (!((disc_3 > 0.0))) {
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
-        float t_11 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_11 / a_44);
-        float r2_3 = (k_11 / t_11);
+        float t_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_12 / a_45);
+        float r2_3 = (k_11 / t_12);
         float hi_8 = max(r1_2, r2_3);
         if (!((hi_8 > 0.0))) {
             return (0.0).xx;
@@ -7993,12 +7993,66 @@ float2 airlight_cos_sin_turns(float x_23)
 
 float4 airlight_sort4_(float4 x_24)
 {
-    float4 a_45 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
-    float4 b_22 = float4(min(a_45.x, a_45.z), min(a_45.y, a_45.w), max(a_45.x, a_45.z), max(a_45.y, a_45.w));
-    return float4(b_22.x, min(b_22.y, b_22.z), max(b_22.y, b_22.z), b_22.w);
+    float4 a_46 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
+    float4 b_23 = float4(min(a_46.x, a_46.z), min(a_46.y, a_46.w), max(a_46.x, a_46.z), max(a_46.y, a_46.w));
+    return float4(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
-float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
+float2 airlight_exit_through(float2 exit, float index, float2 a_23, float2 b_14, float2 q_8, float2 e_8)
+{
+    bool local_181 = (bool)0;
+
+    float2 m_12 = float2((b_14.y - a_23.y), (a_23.x - b_14.x));
+    float den_1 = dot(e_8, m_12);
+    float r_14 = (-(dot((q_8 - a_23), m_12)) / den_1);
+    if ((den_1 > 0.0)) {
+        local_181 = (r_14 < exit.x);
+    } else {
+        local_181 = false;
+    }
+    bool _e26 = local_181;
+    return (_e26 ? float2(r_14, index) : exit);
+}
+
+uint airlight_exit_edge(AirlightOutline o_5, float2 q_9, float2 e_9)
+{
+    float2 exit_1 = float2(3.4028235e38, 0.0);
+
+    float2 _e7 = exit_1;
+    const float2 _e13 = airlight_exit_through(_e7, 0.0, o_5.corners[0], o_5.corners[1], q_9, e_9);
+    exit_1 = _e13;
+    float2 _e14 = exit_1;
+    const float2 _e20 = airlight_exit_through(_e14, 1.0, o_5.corners[1], o_5.corners[2], q_9, e_9);
+    exit_1 = _e20;
+    float2 _e21 = exit_1;
+    const float2 _e27 = airlight_exit_through(_e21, 2.0, o_5.corners[2], o_5.corners[3], q_9, e_9);
+    exit_1 = _e27;
+    float2 _e28 = exit_1;
+    const float2 _e34 = airlight_exit_through(_e28, 3.0, o_5.corners[3], o_5.corners[0], q_9, e_9);
+    exit_1 = _e34;
+    float _e36 = exit_1.y;
+    return airlight_naga_f2u32(_e36);
+}
+
+float2 airlight_lobe_half_line(float3 u_6, float3 v_8, float3 p_1, float2 cs_2)
+{
+    float3 w_10 = ((cs_2.x * u_6) + (cs_2.y * v_8));
+    return (w_10.xy + ((w_10.z / -(p_1.z)) * p_1.xy));
+}
+
+float2 airlight_lobe_plane(float3 u_7, float3 v_9, float2 e_10)
+{
+    return float2(((e_10.x * u_7.x) + (e_10.y * u_7.y)), ((e_10.x * v_9.x) + (e_10.y * v_9.y)));
+}
+
+float airlight_wedge_beta(float delta, float h_3, float reach_1)
+{
+    const float2 _e3 = airlight_cos_sin_turns(delta);
+    const float _e10 = airlight_atan2_((h_3 * _e3.y), (reach_1 * max(_e3.x, 0.0)));
+    return _e10;
+}
+
+float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
     uint i_29 = 0u;
@@ -8006,11 +8060,13 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
     float mid = 0.0;
     uint i_31 = 0u;
     uint j_6 = (uint)0;
+    float2 t_4 = (float2)0;
+    uint j_7 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_3.p);
-    float3 v_9 = cross(lobe_3.p, _e5);
-    float2 q_14 = lobe_3.q;
-    if ((o_5.radius > 0.0)) {
+    float3 v_11 = cross(lobe_3.p, _e5);
+    float2 q_16 = lobe_3.q;
+    if ((o_6.radius > 0.0)) {
         if (lobe_3.on_emitter) {
             uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
             bool loop_init_34 = true;
@@ -8031,21 +8087,21 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     uint _e21 = i_29;
                     const float3 _e22 = airlight_azimuths(true, _e21);
                     float _e23 = sum_9;
-                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
+                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
             }
             float _e32 = sum_9;
             return _e32;
         }
-        float2 d_5 = (o_5.corners[0] - q_14);
+        float2 d_5 = (o_6.corners[0] - q_16);
         float dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        float sb_1 = (o_5.radius / dq_2);
-        float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        const float _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        const float _e65 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        float sb_1 = (o_6.radius / dq_2);
+        float cb = (sqrt(((dq_2 - o_6.radius) * (dq_2 + o_6.radius))) / dq_2);
+        const float _e53 = airlight_lobe_azimuth(_e5, v_11, d_5);
+        const float _e65 = airlight_lobe_azimuth(_e5, v_11, float2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
         const float _e67 = airlight_wrap_turn((_e65 - _e53));
-        const float _e79 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        const float _e79 = airlight_lobe_azimuth(_e5, v_11, float2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
         const float _e81 = airlight_wrap_turn((_e79 - _e53));
         float centre_2 = (_e53 + ((_e67 + _e81) * 0.5));
         float half_19 = (abs((_e67 - _e81)) * 0.5);
@@ -8069,7 +8125,7 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                 const float3 _e97 = airlight_azimuths(false, _e96);
                 float _e98 = sum_9;
                 const float2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
+                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e106);
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
         }
@@ -8077,19 +8133,19 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         return _e113;
     }
     if (!(lobe_3.on_emitter)) {
-        const float _e126 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+        const float _e126 = airlight_lobe_azimuth(_e5, v_11, ((0.5 * (o_6.corners[0] + o_6.corners[2])) - q_16));
         mid = _e126;
     }
-    const float _e130 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    const float _e130 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[0] - q_16));
     float _e131 = mid;
     const float _e133 = airlight_wrap_turn((_e130 - _e131));
-    const float _e137 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    const float _e137 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[1] - q_16));
     float _e138 = mid;
     const float _e140 = airlight_wrap_turn((_e137 - _e138));
-    const float _e144 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    const float _e144 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[2] - q_16));
     float _e145 = mid;
     const float _e147 = airlight_wrap_turn((_e144 - _e145));
-    const float _e151 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    const float _e151 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[3] - q_16));
     float _e152 = mid;
     const float _e154 = airlight_wrap_turn((_e151 - _e152));
     const float4 _e156 = airlight_sort4_(float4(_e133, _e140, _e147, _e154));
@@ -8100,8 +8156,8 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
         loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
         if (!loop_init_36) {
-            uint _e211 = i_31;
-            i_31 = (_e211 + 1u);
+            uint _e329 = i_31;
+            i_31 = (_e329 + 1u);
         }
         loop_init_36 = false;
         uint _e163 = i_31;
@@ -8119,35 +8175,91 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             float last_1 = (_e169 + ((_e179 == 3u) ? (_e156.x + 6.2831855) : _e156[min(uint(min((_e170 + 1u), 3u)), 3u)]));
             float c_19 = ((first_2 + last_1) * 0.5);
             float hw_4 = ((last_1 - first_2) * 0.5);
-            j_6 = 0u;
-            uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-            bool loop_init_37 = true;
-            while(true) {
-                if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                if (!loop_init_37) {
-                    uint _e208 = j_6;
-                    j_6 = (_e208 + 1u);
+            if (!(lobe_3.on_emitter)) {
+                j_6 = 0u;
+                uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+                bool loop_init_37 = true;
+                while(true) {
+                    if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+                    loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                    if (!loop_init_37) {
+                        uint _e210 = j_6;
+                        j_6 = (_e210 + 1u);
+                    }
+                    loop_init_37 = false;
+                    uint _e194 = j_6;
+                    if ((_e194 < 12u)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e197 = j_6;
+                        const float2 _e198 = airlight_triangle_rule(_e197);
+                        float _e199 = sum_9;
+                        const float2 _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
+                        const float _e206 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e205);
+                        sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
+                    }
                 }
-                loop_init_37 = false;
-                uint _e192 = j_6;
-                if ((_e192 < 12u)) {
+                continue;
+            }
+            const float2 _e213 = airlight_cos_sin_turns(c_19);
+            const float2 _e214 = airlight_lobe_half_line(_e5, v_11, lobe_3.p, _e213);
+            const uint _e215 = airlight_exit_edge(o_6, q_16, _e214);
+            const float2 _e219 = airlight_lobe_plane(_e5, v_11, (o_6.corners[min(uint(_e215), 3u)] - q_16));
+            const float2 _e227 = airlight_lobe_plane(_e5, v_11, (o_6.corners[min(uint(airlight_naga_mod((_e215 + 1u), 4u)), 3u)] - q_16));
+            t_4 = ((_e227 - _e219) / (sqrt(dot((_e227 - _e219), (_e227 - _e219)))).xx);
+            float _e237 = t_4.y;
+            float _e241 = t_4.x;
+            if ((((_e237 * _e219.x) - (_e241 * _e219.y)) < 0.0)) {
+                float2 _e247 = t_4;
+                t_4 = -(_e247);
+            }
+            float _e250 = t_4.y;
+            float _e252 = t_4.x;
+            float2 n_6 = float2(_e250, -(_e252));
+            float h_10 = dot(n_6, _e219);
+            if (!((h_10 > 0.0))) {
+                continue;
+            }
+            float reach_3 = sqrt(((h_10 * h_10) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
+            const float _e271 = airlight_atan2_(n_6.y, n_6.x);
+            const float _e273 = airlight_wedge_beta((first_2 - _e271), h_10, reach_3);
+            const float _e275 = airlight_wedge_beta((last_1 - _e271), h_10, reach_3);
+            float bc = ((_e273 + _e275) * 0.5);
+            float bw = ((_e275 - _e273) * 0.5);
+            j_7 = 0u;
+            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+            bool loop_init_38 = true;
+            while(true) {
+                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (!loop_init_38) {
+                    uint _e326 = j_7;
+                    j_7 = (_e326 + 1u);
+                }
+                loop_init_38 = false;
+                uint _e284 = j_7;
+                if ((_e284 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e195 = j_6;
-                    const float2 _e196 = airlight_triangle_rule(_e195);
-                    float _e197 = sum_9;
-                    const float2 _e203 = airlight_cos_sin_turns((c_19 + (hw_4 * _e196.x)));
-                    const float _e204 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e203);
-                    sum_9 = (_e197 + ((_e196.y * hw_4) * _e204));
+                    uint _e287 = j_7;
+                    const float2 _e288 = airlight_triangle_rule(_e287);
+                    const float2 _e292 = airlight_cos_sin_turns((bc + (bw * _e288.x)));
+                    float2 _e298 = t_4;
+                    float2 y_13 = (((h_10 * _e292.x) * n_6) + ((reach_3 * _e292.y) * _e298));
+                    float weight_4 = ((h_10 * reach_3) / ((((h_10 * h_10) * _e292.x) * _e292.x) + (((reach_3 * reach_3) * _e292.y) * _e292.y)));
+                    float _e314 = sum_9;
+                    const float _e322 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, (y_13 / (sqrt(dot(y_13, y_13))).xx));
+                    sum_9 = (_e314 + (((_e288.y * bw) * weight_4) * _e322));
                 }
             }
         }
     }
-    float _e213 = sum_9;
-    return _e213;
+    float _e331 = sum_9;
+    return _e331;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -8157,29 +8269,29 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-float airlight_disc(AirlightScene s_41, AirlightArea a_23, float3 x_25)
+float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
 {
-    bool local_181 = (bool)0;
     bool local_182 = (bool)0;
-    float2 u_6 = (0.0).xx;
+    bool local_183 = (bool)0;
+    float2 u_8 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_10 = 0.0;
     uint i_32 = 0u;
-    float2 e_8 = (float2)0;
+    float2 e_11 = (float2)0;
     float r_max_1 = (float)0;
 
-    float3 rel = (x_25 - a_23.c);
-    float z_20 = dot(rel, a_23.n);
+    float3 rel = (x_25 - a_24.c);
+    float z_20 = dot(rel, a_24.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
     }
-    float fx = dot(rel, a_23.a1_);
-    float fy_1 = dot(rel, a_23.a2_);
+    float fx = dot(rel, a_24.a1_);
+    float fy_1 = dot(rel, a_24.a2_);
     float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    float radius_2 = a_23.radius;
+    float radius_2 = a_24.radius;
     float2 zero_1 = (0.0).xx;
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_23, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
+    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_24, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
         const float _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
         return _e34;
@@ -8187,35 +8299,35 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_23, float3 x_25)
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
             const bool _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_182 = _e44;
+            local_183 = _e44;
         } else {
-            local_182 = true;
+            local_183 = true;
         }
-        bool _e46 = local_182;
-        local_181 = _e46;
+        bool _e46 = local_183;
+        local_182 = _e46;
     } else {
-        local_181 = false;
+        local_182 = false;
     }
-    bool inside_2 = local_181;
+    bool inside_2 = local_182;
     const AirlightAbove _e54 = airlight_above(z_20, (0.0).xx);
     above_3 = _e54;
     if (!(inside_2)) {
-        u_6 = float2((-(fx) / rf), (-(fy_1) / rf));
-        float2 _e63 = u_6;
+        u_8 = float2((-(fx) / rf), (-(fy_1) / rf));
+        float2 _e63 = u_8;
         const AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     float k_13 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-    bool loop_init_38 = true;
+    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+    bool loop_init_39 = true;
     while(true) {
-        if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_38) {
+        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_39) {
             uint _e127 = i_32;
             i_32 = (_e127 + 1u);
         }
-        loop_init_38 = false;
+        loop_init_39 = false;
         uint _e73 = i_32;
         if ((_e73 < 32u)) {
         } else {
@@ -8224,23 +8336,23 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_23, float3 x_25)
         {
             uint _e76 = i_32;
             const float3 _e77 = airlight_azimuths(inside_2, _e76);
-            float _e80 = u_6.x;
-            float _e84 = u_6.y;
-            float _e89 = u_6.y;
-            float _e93 = u_6.x;
-            e_8 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            float _e80 = u_8.x;
+            float _e84 = u_8.y;
+            float _e89 = u_8.y;
+            float _e93 = u_8.x;
+            e_11 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_2) {
-                e_8 = _e77.xy;
-                float b_23 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                float root_4 = sqrt(((b_23 * b_23) - k_13));
-                r_max_1 = ((b_23 > 0.0) ? (-(k_13) / (b_23 + root_4)) : (root_4 - b_23));
+                e_11 = _e77.xy;
+                float b_24 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                float root_4 = sqrt(((b_24 * b_24) - k_13));
+                r_max_1 = ((b_24 > 0.0) ? (-(k_13) / (b_24 + root_4)) : (root_4 - b_24));
             }
             float _e118 = sum_10;
             AirlightAbove _e120 = above_3;
-            float2 _e121 = e_8;
+            float2 _e121 = e_11;
             float _e122 = r_max_1;
-            const float _e123 = airlight_flat_radial(s_41, a_23, _e120, _e121, _e122);
+            const float _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -8248,56 +8360,56 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_23, float3 x_25)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_42, AirlightArea a_24, float3 x_26)
+float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
 {
-    float2 q_8 = (float2)0;
-    bool local_183 = (bool)0;
+    float2 q_10 = (float2)0;
+    bool local_184 = (bool)0;
     float sum_11 = 0.0;
     uint i_33 = 0u;
-    uint j_7 = (uint)0;
+    uint j_8 = (uint)0;
 
-    float3 rel_1 = (x_26 - a_24.c);
-    float z_21 = dot(rel_1, a_24.n);
+    float3 rel_1 = (x_26 - a_25.c);
+    float z_21 = dot(rel_1, a_25.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    float2 foot = float2(dot(rel_1, a_24.a1_), dot(rel_1, a_24.a2_));
-    float2 u2_ = float2(dot(a_24.eu, a_24.a1_), dot(a_24.eu, a_24.a2_));
-    float2 v2_ = float2(dot(a_24.ev, a_24.a1_), dot(a_24.ev, a_24.a2_));
+    float2 foot = float2(dot(rel_1, a_25.a1_), dot(rel_1, a_25.a2_));
+    float2 u2_ = float2(dot(a_25.eu, a_25.a1_), dot(a_25.eu, a_25.a2_));
+    float2 v2_ = float2(dot(a_25.ev, a_25.a1_), dot(a_25.ev, a_25.a2_));
     float2 corners[5] = airlight_Constructarray5_float2_((0.0).xx, u2_, (u2_ + v2_), v2_, (0.0).xx);
     float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
     AirlightOutline about_foot = ConstructAirlightOutline(airlight_Constructarray4_float2_((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_24, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
+    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_25, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
     if ((_e69.scale > 0.0)) {
         const float _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
-    q_8 = (_e76.xy + foot);
+    q_10 = (_e76.xy + foot);
     if ((_e76.z > 0.0)) {
         const bool _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_183 = _e89;
+        local_184 = _e89;
     } else {
-        local_183 = false;
+        local_184 = false;
     }
-    bool _e91 = local_183;
+    bool _e91 = local_184;
     if (_e91) {
-        q_8 = foot;
+        q_10 = foot;
     }
-    float2 _e92 = q_8;
+    float2 _e92 = q_10;
     const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-    bool loop_init_39 = true;
+    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+    bool loop_init_40 = true;
     while(true) {
-        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_39) {
+        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_40) {
             uint _e205 = i_33;
             i_33 = (_e205 + 1u);
         }
-        loop_init_39 = false;
+        loop_init_40 = false;
         uint _e102 = i_33;
         if ((_e102 < 4u)) {
         } else {
@@ -8305,51 +8417,51 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_24, float3 x_26)
         }
         {
             uint _e105 = i_33;
-            float2 _e107 = q_8;
+            float2 _e107 = q_10;
             float2 ca = (corners[min(uint(_e105), 4u)] - _e107);
             uint _e109 = i_33;
-            float2 _e113 = q_8;
+            float2 _e113 = q_10;
             float2 cb_1 = (corners[min(uint((_e109 + 1u)), 4u)] - _e113);
             float area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
             if (!((area > thin))) {
                 continue;
             }
-            float2 e_15 = (cb_1 - ca);
-            float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
-            float h_9 = (area / el);
-            float2 m_12 = float2((e_15.y / el), (-(e_15.x) / el));
-            float2 t_12 = (e_15 / (el).xx);
+            float2 e_18 = (cb_1 - ca);
+            float el = sqrt(((e_18.x * e_18.x) + (e_18.y * e_18.y)));
+            float h_11 = (area / el);
+            float2 m_13 = float2((e_18.y / el), (-(e_18.x) / el));
+            float2 t_13 = (e_18 / (el).xx);
             const float _e143 = airlight_narrowed(s_42, _e94.rho0_);
-            float reach_2 = sqrt(((h_9 * h_9) + (_e143 * _e143)));
-            const float _e149 = airlight_atan2_(dot(ca, t_12), reach_2);
-            const float _e151 = airlight_atan2_(dot(cb_1, t_12), reach_2);
-            j_7 = 0u;
-            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-            bool loop_init_40 = true;
+            float reach_4 = sqrt(((h_11 * h_11) + (_e143 * _e143)));
+            const float _e149 = airlight_atan2_(dot(ca, t_13), reach_4);
+            const float _e151 = airlight_atan2_(dot(cb_1, t_13), reach_4);
+            j_8 = 0u;
+            uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+            bool loop_init_41 = true;
             while(true) {
-                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                if (!loop_init_40) {
-                    uint _e202 = j_7;
-                    j_7 = (_e202 + 1u);
+                if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+                if (!loop_init_41) {
+                    uint _e202 = j_8;
+                    j_8 = (_e202 + 1u);
                 }
-                loop_init_40 = false;
-                uint _e154 = j_7;
+                loop_init_41 = false;
+                uint _e154 = j_8;
                 if ((_e154 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = j_7;
+                    uint _e157 = j_8;
                     const float2 _e158 = airlight_triangle_rule(_e157);
                     const float2 _e170 = airlight_cos_sin_half_turn((((0.5 * (_e149 + _e151)) + ((0.5 * (_e151 - _e149)) * _e158.x)) + 1.5707964));
-                    float sigma_13 = ((reach_2 * -(_e170.x)) / _e170.y);
-                    float r2_4 = ((h_9 * h_9) + (sigma_13 * sigma_13));
-                    float r_14 = sqrt(r2_4);
-                    float2 dir_3 = (((h_9 * m_12) + (sigma_13 * t_12)) / (r_14).xx);
+                    float sigma_13 = ((reach_4 * -(_e170.x)) / _e170.y);
+                    float r2_4 = ((h_11 * h_11) + (sigma_13 * sigma_13));
+                    float r_15 = sqrt(r2_4);
+                    float2 dir_3 = (((h_11 * m_13) + (sigma_13 * t_13)) / (r_15).xx);
                     float _e185 = sum_11;
-                    const float _e198 = airlight_flat_radial(s_42, a_24, _e94, dir_3, r_14);
-                    sum_11 = (_e185 + ((((((_e158.y * 0.5) * (_e151 - _e149)) * h_9) * reach_2) / ((_e170.y * _e170.y) * r2_4)) * _e198));
+                    const float _e198 = airlight_flat_radial(s_42, a_25, _e94, dir_3, r_15);
+                    sum_11 = (_e185 + ((((((_e158.y * 0.5) * (_e151 - _e149)) * h_11) * reach_4) / ((_e170.y * _e170.y) * r2_4)) * _e198));
                 }
             }
         }
@@ -8361,13 +8473,13 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_24, float3 x_26)
 float3 airlight_cap_row(AirlightScene s_43, AirlightCap cap, float graded_4, float node_2, float weight_1)
 {
     const float2 _e5 = airlight_graded_node(graded_4, node_2);
-    float w_10 = (weight_1 * _e5.y);
+    float w_11 = (weight_1 * _e5.y);
     const float2 _e9 = airlight_cos_sin_half_turn(_e5.x);
     float sb_2 = (cap.sin_a * _e9.y);
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0.0);
     const float _e28 = airlight_emitted(s_43, _e9.x);
-    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
+    float factor = (((((((w_11 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
     return float3(factor, cb_2, sb_2);
 }
 
@@ -8377,7 +8489,7 @@ airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 a
     return ret;
 }
 
-float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_25, AirlightCap cap_1)
+float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap_1)
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
@@ -8386,9 +8498,9 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_25, AirlightCap cap
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
     float3 e2_2 = cross(cap_1.a, _e4);
-    float ad = dot(cap_1.a, a_25.d);
-    float e1d = dot(_e4, a_25.d);
-    float e2d = dot(e2_2, a_25.d);
+    float ad = dot(cap_1.a, a_26.d);
+    float e1d = dot(_e4, a_26.d);
+    float e2d = dot(e2_2, a_26.d);
     const float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_9 = _e15.y;
     float c_20 = (0.5 * _e15.x);
@@ -8425,7 +8537,7 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_25, AirlightCap cap
     rows[14] = _e161;
     const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
     rows[15] = _e168;
-    if (a_25.isotropic) {
+    if (a_26.isotropic) {
         const float _e174 = airlight_area_phase(s_44, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_12;
@@ -8479,16 +8591,16 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_25, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-    bool loop_init_41 = true;
+    uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+    bool loop_init_42 = true;
     while(true) {
-        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_41) {
+        if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+        if (!loop_init_42) {
             uint _e550 = i_34;
             i_34 = (_e550 + 1u);
         }
-        loop_init_41 = false;
+        loop_init_42 = false;
         uint _e275 = i_34;
         if ((_e275 < 32u)) {
         } else {
@@ -8615,7 +8727,7 @@ float airlight_sphere_lobe_node(AirlightScene s_45, AirlightCap cap_2, float sig
     return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_26, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_2)
+float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_2)
 {
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
@@ -8626,11 +8738,11 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_26, Airlight
     float start_5 = (float)0;
     float around = (float)0;
 
-    float3 p_7 = (sign_2 * a_26.d);
-    const float3 _e8 = airlight_basis_e1_(p_7);
-    float3 v_10 = cross(p_7, _e8);
+    float3 p_8 = (sign_2 * a_27.d);
+    const float3 _e8 = airlight_basis_e1_(p_8);
+    float3 v_12 = cross(p_8, _e8);
     float au = dot(cap_3.a, _e8);
-    float av = dot(cap_3.a, v_10);
+    float av = dot(cap_3.a, v_12);
     bool inside_3 = (cos_p_1 > cap_3.cos_a);
     float sin_p = sqrt(((au * au) + (av * av)));
     if ((sin_p > 0.0)) {
@@ -8638,16 +8750,16 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_26, Airlight
         const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-    bool loop_init_42 = true;
+    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+    bool loop_init_43 = true;
     while(true) {
-        if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_42) {
+        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_43) {
             uint _e290 = i_35;
             i_35 = (_e290 + 1u);
         }
-        loop_init_42 = false;
+        loop_init_43 = false;
         uint _e47 = i_35;
         if ((_e47 < 32u)) {
         } else {
@@ -8782,77 +8894,77 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_47, AirlightArea a_27, float3 x_27)
+float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_8 = 0u;
-    bool local_184 = (bool)0;
+    uint j_9 = 0u;
     bool local_185 = (bool)0;
     bool local_186 = (bool)0;
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
+    bool local_189 = (bool)0;
 
-    float3 v_11 = (a_27.c - x_27);
-    const float _e5 = airlight_safe_length(v_11);
-    if (!((_e5 > a_27.radius))) {
+    float3 v_13 = (a_28.c - x_27);
+    const float _e5 = airlight_safe_length(v_13);
+    if (!((_e5 > a_28.radius))) {
         return 0.0;
     }
-    float sin_a_2 = (a_27.radius / _e5);
-    AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_27.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    float sin_a_2 = (a_28.radius / _e5);
+    AirlightCap cap_4 = ConstructAirlightCap((v_13 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-    bool loop_init_43 = true;
+    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_43) {
-            uint _e92 = j_8;
-            j_8 = (_e92 + 1u);
+        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
+            uint _e92 = j_9;
+            j_9 = (_e92 + 1u);
         }
-        loop_init_43 = false;
-        uint _e32 = j_8;
+        loop_init_44 = false;
+        uint _e32 = j_9;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_8;
-            float2 lobe_5 = ((_e39 == 1u) ? a_27.lobes.zw : a_27.lobes.xy);
-            float c_22 = dot(cap_4.a, (lobe_5.x * a_27.d));
+            uint _e39 = j_9;
+            float2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
+            float c_22 = dot(cap_4.a, (lobe_5.x * a_28.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_184 = (lobe_5.y > 0.0);
-            } else {
-                local_184 = false;
-            }
-            bool _e57 = local_184;
-            if (_e57) {
-                local_185 = (lobe_5.y < (_e23 + _e23));
+                local_185 = (lobe_5.y > 0.0);
             } else {
                 local_185 = false;
             }
-            bool _e64 = local_185;
+            bool _e57 = local_185;
+            if (_e57) {
+                local_186 = (lobe_5.y < (_e23 + _e23));
+            } else {
+                local_186 = false;
+            }
+            bool _e64 = local_186;
             if (_e64) {
                 if (!((c_22 > cap_4.cos_a))) {
                     if ((c_22 > -(cap_4.cos_a))) {
                         const float _e77 = airlight_acos(c_22);
-                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_188 = false;
+                        local_189 = false;
                     }
-                    bool _e84 = local_188;
-                    local_187 = _e84;
+                    bool _e84 = local_189;
+                    local_188 = _e84;
                 } else {
-                    local_187 = true;
+                    local_188 = true;
                 }
-                bool _e86 = local_187;
-                local_186 = _e86;
+                bool _e86 = local_188;
+                local_187 = _e86;
             } else {
-                local_186 = false;
+                local_187 = false;
             }
-            bool _e88 = local_186;
+            bool _e88 = local_187;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -8865,39 +8977,39 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_27, float3 x_27)
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        const float _e100 = airlight_sphere_about_lobe(s_47, a_27, cap_4, _e97, _e98, _e99);
+        const float _e100 = airlight_sphere_about_lobe(s_47, a_28, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    const float _e101 = airlight_sphere_cap(s_47, a_27, cap_4);
+    const float _e101 = airlight_sphere_cap(s_47, a_28, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_28, float3 x_28)
+float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_29, float3 x_28)
 {
     switch(s_48.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_48, a_28, x_28);
+            const float _e4 = airlight_disc(s_48, a_29, x_28);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_48, a_28, x_28);
+            const float _e5 = airlight_parallelogram(s_48, a_29, x_28);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_48, a_28, x_28);
+            const float _e6 = airlight_sphere(s_48, a_29, x_28);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_49, AirlightArea a_29, float theta)
+float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
-    float along = ((a_29.h_eff * _e3.y) / _e3.x);
-    float t_13 = (a_29.x_h + along);
-    float fade = exp(min((-(s_49.sigma_t) * max(((a_29.x_h - s_49.t_min) + along), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_49, a_29, (s_49.origin + (t_13 * a_29.d)));
-    return (((a_29.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    float along = ((a_30.h_eff * _e3.y) / _e3.x);
+    float t_14 = (a_30.x_h + along);
+    float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 AirlightResult airlight_area_light(AirlightScene s_50)
@@ -8906,8 +9018,8 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     uint step_2 = 0u;
     float k_8 = (float)0;
     float gauss_1 = (float)0;
-    uint j_9 = (uint)0;
-    bool local_189 = (bool)0;
+    uint j_10 = (uint)0;
+    bool local_190 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_50);
     if ((_e1.outcome == 1u)) {
@@ -8919,16 +9031,16 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-    bool loop_init_44 = true;
+    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-        if (!loop_init_44) {
+        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_44 = false;
+        loop_init_45 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -8943,33 +9055,33 @@ AirlightResult airlight_area_light(AirlightScene s_50)
             float hw_7 = (0.5 * (_e34 - _e36));
             k_8 = 0.0;
             gauss_1 = 0.0;
-            j_9 = 0u;
-            uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-            bool loop_init_45 = true;
+            j_10 = 0u;
+            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+            bool loop_init_46 = true;
             while(true) {
-                if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_45) {
-                    uint _e82 = j_9;
-                    j_9 = (_e82 + 1u);
+                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_46) {
+                    uint _e82 = j_10;
+                    j_10 = (_e82 + 1u);
                 }
-                loop_init_45 = false;
-                uint _e46 = j_9;
+                loop_init_46 = false;
+                uint _e46 = j_10;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_9;
+                    uint _e49 = j_10;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_9;
+                    uint _e59 = j_10;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_9;
-                        local_189 = (_e66 < 14u);
+                        uint _e66 = j_10;
+                        local_190 = (_e66 < 14u);
                     } else {
-                        local_189 = false;
+                        local_190 = false;
                     }
-                    bool _e70 = local_189;
+                    bool _e70 = local_190;
                     float x_37 = (_e70 ? (c_23 - (hw_7 * node_4.x)) : (c_23 + (hw_7 * node_4.x)));
                     const float _e72 = airlight_area_node(s_50, _e1, x_37);
                     float _e73 = k_8;
@@ -9004,22 +9116,22 @@ AirlightResult airlight_area_light(AirlightScene s_50)
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 {
-    bool local_190 = (bool)0;
     bool local_191 = (bool)0;
+    bool local_192 = (bool)0;
 
     const bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_190 = true;
-    }
-    bool _e10 = local_190;
-    if (!(_e10)) {
-        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_191 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_191 = true;
     }
-    bool _e18 = local_191;
+    bool _e10 = local_191;
+    if (!(_e10)) {
+        local_192 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_192 = true;
+    }
+    bool _e18 = local_192;
     if (_e18) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
@@ -9031,15 +9143,15 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_192 = (bool)0;
+    bool local_193 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_192 = true;
+        local_193 = true;
     }
-    bool _e11 = local_192;
+    bool _e11 = local_193;
     if (_e11) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_13;
@@ -9051,27 +9163,27 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_3)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_193 = (bool)0;
+    bool local_194 = (bool)0;
     AirlightCanonical g_29 = (AirlightCanonical)0;
 
-    AirlightScene p_8 = n_3.scene;
-    const bool _e7 = airlight_vec_finite(p_8.light_position);
+    AirlightScene p_9 = n_3.scene;
+    const bool _e7 = airlight_vec_finite(p_9.light_position);
     if (_e7) {
-        const bool _e11 = airlight_vec_finite(p_8.dir);
-        local_193 = _e11;
+        const bool _e11 = airlight_vec_finite(p_9.dir);
+        local_194 = _e11;
     } else {
-        local_193 = false;
+        local_194 = false;
     }
-    bool _e13 = local_193;
+    bool _e13 = local_194;
     if (_e13) {
         g_29 = n_3.canonical;
         if (!(n_3.exact)) {
-            const AirlightCanonical _e18 = airlight_canonical(p_8);
-            const AirlightCanonical _e19 = airlight_refined(p_8, _e18);
+            const AirlightCanonical _e18 = airlight_canonical(p_9);
+            const AirlightCanonical _e19 = airlight_refined(p_9, _e18);
             g_29 = _e19;
         }
         AirlightCanonical _e20 = g_29;
-        const AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
+        const AirlightResult _e21 = airlight_in_scatter_canonical(p_9, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -9080,32 +9192,32 @@ AirlightResult airlight_node_integral(AirlightNode n_3)
     return airlightresult_15;
 }
 
-AirlightResult airlight_point_integral(AirlightScene p_1)
+AirlightResult airlight_point_integral(AirlightScene p_2)
 {
     const AirlightCanonical _e1 = airlight_no_canonical();
-    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_1, 1.0, _e1, false));
+    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_2, 1.0, _e1, false));
     const AirlightResult airlightresult_16 = _e5;
     return airlightresult_16;
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 {
-    bool local_194 = (bool)0;
     bool local_195 = (bool)0;
+    bool local_196 = (bool)0;
 
     const bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_194 = true;
-    }
-    bool _e10 = local_194;
-    if (!(_e10)) {
-        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_195 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_195 = true;
     }
-    bool _e18 = local_195;
+    bool _e10 = local_195;
+    if (!(_e10)) {
+        local_196 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_196 = true;
+    }
+    bool _e18 = local_196;
     if (_e18) {
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
@@ -9117,22 +9229,22 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_53)
 {
-    bool local_196 = (bool)0;
     bool local_197 = (bool)0;
+    bool local_198 = (bool)0;
 
     const bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_196 = true;
-    }
-    bool _e10 = local_196;
-    if (!(_e10)) {
-        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_197 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_197 = true;
     }
-    bool _e18 = local_197;
+    bool _e10 = local_197;
+    if (!(_e10)) {
+        local_198 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_198 = true;
+    }
+    bool _e18 = local_198;
     if (_e18) {
         const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_19;
@@ -9164,10 +9276,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     uint step_3 = 0u;
     float k_9 = (float)0;
     float gauss_2 = (float)0;
-    uint j_10 = (uint)0;
-    bool local_198 = (bool)0;
-    float f = (float)0;
+    uint j_11 = (uint)0;
     bool local_199 = (bool)0;
+    float f = (float)0;
+    bool local_200 = (bool)0;
 
     const bool _e1 = airlight_valid(s_54);
     if (!(_e1)) {
@@ -9191,16 +9303,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-    bool loop_init_46 = true;
+    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+    bool loop_init_47 = true;
     while(true) {
-        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-        if (!loop_init_46) {
+        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+        if (!loop_init_47) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_46 = false;
+        loop_init_47 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -9215,35 +9327,35 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
             float hw_8 = (0.5 * (_e49 - _e51));
             k_9 = 0.0;
             gauss_2 = 0.0;
-            j_10 = 0u;
-            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_47 = true;
+            j_11 = 0u;
+            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+            bool loop_init_48 = true;
             while(true) {
-                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_47) {
-                    uint _e121 = j_10;
-                    j_10 = (_e121 + 1u);
+                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+                if (!loop_init_48) {
+                    uint _e121 = j_11;
+                    j_11 = (_e121 + 1u);
                 }
-                loop_init_47 = false;
-                uint _e61 = j_10;
+                loop_init_48 = false;
+                uint _e61 = j_11;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_10;
+                    uint _e64 = j_11;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_10;
+                    uint _e74 = j_11;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_10;
-                        local_198 = (_e81 < 6u);
+                        uint _e81 = j_11;
+                        local_199 = (_e81 < 6u);
                     } else {
-                        local_198 = false;
+                        local_199 = false;
                     }
-                    bool _e85 = local_198;
-                    float w_11 = (_e85 ? (c_24 - (hw_8 * node_5.x)) : (c_24 + (hw_8 * node_5.x)));
-                    const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
+                    bool _e85 = local_199;
+                    float w_12 = (_e85 ? (c_24 - (hw_8 * node_5.x)) : (c_24 + (hw_8 * node_5.x)));
+                    const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_12);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         const AirlightResult _e93 = airlight_node_integral(_e87);
@@ -9252,11 +9364,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
                             return airlightresult_27;
                         }
                         if ((s_54.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_200 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_199 = false;
+                            local_200 = false;
                         }
-                        bool _e106 = local_199;
+                        bool _e106 = local_200;
                         if (_e106) {
                             const AirlightResult airlightresult_28 = _e93;
                             return airlightresult_28;

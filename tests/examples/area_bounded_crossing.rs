@@ -2,7 +2,8 @@
 //! that cross a rectangle's plane just inside or outside its corners and the middles of its
 //! edges, in Henyey–Greenstein fog of `g` = 0.95 and 0.99: there the phase lobe's point `q_L`
 //! (where the ray's line meets the plane) lies next to the edge, and the emitter is taken about
-//! it (`flat_about_lobe`). Relative error against the nested construction at 1e-10
+//! it (`flat_about_lobe`; docs/DESIGN.md §12 gives what this prints and what is not yet met).
+//! Relative error against the nested construction at 1e-10
 //! (`AreaScene::in_scatter_counted`), by default and with the ray integral to 1e-7 (what is left
 //! then is the emitter's rules'); crossing points `offset` inside (> 0) or outside (< 0) along a
 //! direction from the corner or edge point.

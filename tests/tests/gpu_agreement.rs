@@ -479,6 +479,21 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
             }
         }
     }
+    // the rectangle in g = 0.99 fog on rays crossing its plane just inside an edge's middle and a
+    // corner (tests/area.rs bounded_rectangle_with_the_lobe_next_to_an_edge)
+    let rectangle = AreaLight::new(Emitter::Rectangle { corner, edge_u, edge_v }, 2.0);
+    for (label, inside, inward) in [("inside an edge", corner + 0.5 * edge_u, edge_v), ("inside a corner", corner, edge_u + edge_v)] {
+        for offset in [0.0005f32, 0.002] {
+            let dir = inside + inward.normalize() * offset;
+            let medium = Medium { sigma_s: 0.05f32, sigma_t: 0.08 };
+            let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, rectangle, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99 })).unwrap();
+            let light = AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&rectangle.emitter), 2.0);
+            let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
+            let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
+            let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99f32 as f64 })).unwrap();
+            cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.99 rectangle, crossing {offset} {label}")));
+        }
+    }
     cases
 }
 

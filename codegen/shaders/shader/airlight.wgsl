@@ -3207,12 +3207,78 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         let last = mid + select(psi[min(i + 1u, 3u)], psi.x + 2.0 * AIRLIGHT_PI, i == 3u);
         let c = (first + last) * 0.5;
         let hw = (last - first) * 0.5;
+        if (!lobe.on_emitter) {
+            for (var j = 0u; j < 12u; j++) {
+                let node = airlight_triangle_rule(j);
+                sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
+            }
+            continue;
+        }
+        // q_L on the emitter: the edge the wedge's chords end on, in the lobe's plane the line
+        // h n + σ t (tan(ψ − ψ_n) = σ/h), taken as σ = D tan β, D = hypot(h, L s)
+        let edge = airlight_exit_edge(o, q, airlight_lobe_half_line(u, v, lobe.p, airlight_cos_sin_turns(c)));
+        let ya = airlight_lobe_plane(u, v, o.corners[edge] - q);
+        let yb = airlight_lobe_plane(u, v, o.corners[(edge + 1u) % 4u] - q);
+        var t = (yb - ya) / sqrt(dot(yb - ya, yb - ya));
+        if (t.y * ya.x - t.x * ya.y < 0.0) { t = -t; }
+        let n = vec2<f32>(t.y, -t.x);
+        let h = dot(n, ya);
+        // q_L on that edge: the chords have no length
+        if (!(h > 0.0)) { continue; }
+        let reach = sqrt(h * h + lobe.l * lobe.scale * lobe.l * lobe.scale);
+        let psi_n = airlight_atan2(n.y, n.x);
+        let beta_first = airlight_wedge_beta(first - psi_n, h, reach);
+        let beta_last = airlight_wedge_beta(last - psi_n, h, reach);
+        let bc = (beta_first + beta_last) * 0.5;
+        let bw = (beta_last - beta_first) * 0.5;
         for (var j = 0u; j < 12u; j++) {
             let node = airlight_triangle_rule(j);
-            sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
+            let cs = airlight_cos_sin_turns(bc + bw * node.x);
+            let y = h * cs.x * n + reach * cs.y * t;
+            let weight = h * reach / (h * h * cs.x * cs.x + reach * reach * cs.y * cs.y);
+            sum += node.y * bw * weight * airlight_flat_lobe_along(s, z, o, lobe, u, v, y / sqrt(dot(y, y)));
         }
     }
     return sum;
+}
+
+/// The direction w_ψ + k p of the half-line in which the half-plane of azimuth ψ about p
+/// (`cs` = (cos ψ, sin ψ)) meets the plane (outer.rs `flat_about_lobe`'s `half_line`).
+fn airlight_lobe_half_line(u: vec3<f32>, v: vec3<f32>, p: vec3<f32>, cs: vec2<f32>) -> vec2<f32> {
+    let w = cs.x * u + cs.y * v;
+    return w.xy + w.z / -p.z * p.xy;
+}
+
+/// A point e of the plane (about q_L) in the plane normal to p: (e·u, e·v), whose angle is the
+/// azimuth of its half-plane (outer.rs `flat_about_lobe`'s `lobe_plane`).
+fn airlight_lobe_plane(u: vec3<f32>, v: vec3<f32>, e: vec2<f32>) -> vec2<f32> {
+    return vec2<f32>(e.x * u.x + e.y * u.y, e.x * v.x + e.y * v.y);
+}
+
+/// β of a wedge's end at ψ − ψ_n = `delta`: tan β = (h/D) tan(ψ − ψ_n), |ψ − ψ_n| ≤ π/2.
+fn airlight_wedge_beta(delta: f32, h: f32, reach: f32) -> f32 {
+    let cs = airlight_cos_sin_turns(delta);
+    return airlight_atan2(h * cs.y, reach * max(cs.x, 0.0));
+}
+
+/// The edge (its first corner's index) by which q + r e leaves a parallelogram holding q
+/// (outer.rs `polygon_chord`'s far end), written out edge by edge.
+fn airlight_exit_edge(o: AirlightOutline, q: vec2<f32>, e: vec2<f32>) -> u32 {
+    var exit = vec2<f32>(AIRLIGHT_FLT_MAX, 0.0);
+    exit = airlight_exit_through(exit, 0.0, o.corners[0], o.corners[1], q, e);
+    exit = airlight_exit_through(exit, 1.0, o.corners[1], o.corners[2], q, e);
+    exit = airlight_exit_through(exit, 2.0, o.corners[2], o.corners[3], q, e);
+    exit = airlight_exit_through(exit, 3.0, o.corners[3], o.corners[0], q, e);
+    return u32(exit.y);
+}
+
+/// (r, edge) of the nearer exit of q + r e: the one so far or that through the edge a → b
+/// (index `index`) if q + r e leaves its half-plane sooner.
+fn airlight_exit_through(exit: vec2<f32>, index: f32, a: vec2<f32>, b: vec2<f32>, q: vec2<f32>, e: vec2<f32>) -> vec2<f32> {
+    let m = vec2<f32>(b.y - a.y, a.x - b.x);
+    let den = dot(e, m);
+    let r = -dot(q - a, m) / den;
+    return select(exit, vec2<f32>(r, index), den > 0.0 && r < exit.x);
 }
 
 /// The cap a sphere subtends from x (outer.rs `Cap`): its centre's unit direction `a` at

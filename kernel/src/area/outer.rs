@@ -363,23 +363,7 @@ impl<T: Real> Outline<T> {
                 let (lo, hi) = (r1.min(r2), r1.max(r2));
                 (hi > T::zero()).then(|| (lo.max(T::zero()), hi))
             }
-            Outline::Polygon(corners) => {
-                // clipped by each edge's half-plane (Cyrus–Beck)
-                let (mut lo, mut hi) = (T::zero(), T::infinity());
-                for i in 0..4 {
-                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
-                    let m = (b.1 - a.1, a.0 - b.0);
-                    let (num, den) = ((q.0 - a.0) * m.0 + (q.1 - a.1) * m.1, e.0 * m.0 + e.1 * m.1);
-                    if den > T::zero() {
-                        hi = hi.min(-num / den);
-                    } else if den < T::zero() {
-                        lo = lo.max(-num / den);
-                    } else if num > T::zero() {
-                        return None;
-                    }
-                }
-                (lo < hi).then_some((lo, hi))
-            }
+            Outline::Polygon(corners) => polygon_chord(&corners, q, e).map(|(chord, _)| chord),
         }
     }
 
@@ -417,6 +401,30 @@ impl<T: Real> Outline<T> {
             }
         }
     }
+}
+
+/// [`Outline::chord`] of a parallelogram (corners counter-clockwise), clipped by each edge's
+/// half-plane (Cyrus–Beck), with the edges its ends lie on (the first corner's index of each;
+/// 4 where an end is the half-line's start).
+fn polygon_chord<T: Real>(corners: &[(T, T); 4], q: (T, T), e: (T, T)) -> Option<((T, T), (usize, usize))> {
+    let (mut lo, mut hi, mut edges) = (T::zero(), T::infinity(), (4, 4));
+    for i in 0..4 {
+        let (a, b) = (corners[i], corners[(i + 1) % 4]);
+        let m = (b.1 - a.1, a.0 - b.0);
+        let (num, den) = ((q.0 - a.0) * m.0 + (q.1 - a.1) * m.1, e.0 * m.0 + e.1 * m.1);
+        if den > T::zero() {
+            if -num / den < hi {
+                (hi, edges.1) = (-num / den, i);
+            }
+        } else if den < T::zero() {
+            if -num / den > lo {
+                (lo, edges.0) = (-num / den, i);
+            }
+        } else if num > T::zero() {
+            return None;
+        }
+    }
+    (lo < hi).then_some(((lo, hi), edges))
 }
 
 /// A phase lobe pointing at a flat emitter: its direction `p = sign·d` in the plane's coordinates
@@ -461,17 +469,23 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
 /// ([`AZIMUTHAL`]) if `q_L` is on a disc, else over the wedge of the disc's tangents from it
 /// (`ψ = ψ_m + Ψ sin φ`, the chords close like a square root there); over the wedges between a
 /// parallelogram's corners seen from `q_L` (its chords' ends stay on one edge each) by
-/// [`TRIANGLE_AZIMUTHAL`].
+/// [`TRIANGLE_AZIMUTHAL`], in `ψ` off the emitter and on it in the angle `β` of the edge the
+/// wedge's chords end on, as [`parallelogram`]'s triangles (docs/DESIGN.md §12).
 fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, outline: &Outline<T>, lobe: &FlatLobe<T>) -> T {
     let FlatLobe { p, sign, scale, l, q, on_emitter } = *lobe;
     let (u, v) = basis(p);
     let pn = -p[2];
     // a direction in the plane as the azimuth ψ of the half-plane it lies in
     let azimuth = |e: (T, T)| (e.0 * v[0] + e.1 * v[1]).atan2(e.0 * u[0] + e.1 * u[1]);
-    let along = |cos: T, sin: T| {
+    // the half-plane of (cos ψ, sin ψ): k and the direction w_ψ + k p of its half-line
+    let half_line = |cos: T, sin: T| {
         let w = [cos * u[0] + sin * v[0], cos * u[1] + sin * v[1], cos * u[2] + sin * v[2]];
         let k = w[2] / pn;
-        let Some((ra, rb)) = outline.chord(q, (w[0] + k * p[0], w[1] + k * p[1])) else {
+        (k, (w[0] + k * p[0], w[1] + k * p[1]))
+    };
+    let along = |cos: T, sin: T| {
+        let (k, e) = half_line(cos, sin);
+        let Some((ra, rb)) = outline.chord(q, e) else {
             return T::zero();
         };
         let mut sum = T::zero();
@@ -511,11 +525,52 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
             let wedges = if on_emitter { 4 } else { 3 };
+            // a point e of the plane (about q_L) in the plane normal to p: its angle is the
+            // azimuth ψ of its half-plane, its length about L θ
+            let lobe_plane = |e: (T, T)| (e.0 * u[0] + e.1 * u[1], e.0 * v[0] + e.1 * v[1]);
             for i in 0..wedges {
-                let (from, to) = (psi[i], if i == 3 { psi[0] + T::PI() + T::PI() } else { psi[i + 1] });
-                each_node(&TRIANGLE_AZIMUTHAL, mid + from, mid + to, |a, w| {
-                    let (s, c) = sin_cos_turns(a);
-                    sum = sum + w * along(c, s);
+                let (from, to) = (mid + psi[i], mid + if i == 3 { psi[0] + T::PI() + T::PI() } else { psi[i + 1] });
+                if !on_emitter {
+                    each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
+                        let (s, c) = sin_cos_turns(a);
+                        sum = sum + w * along(c, s);
+                    });
+                    continue;
+                }
+                // q_L on the emitter: the wedge's chords end on the edge between its corners, in
+                // the lobe's plane the line h n + σ t, on which tan(ψ − ψ_n) = σ/h; they turn as a
+                // parallelogram's triangles do (a lobe's footprint L s in place of ρ₀ min(1, s)),
+                // so σ = D tan β, D = hypot(h, L s)
+                let (sm, cm) = sin_cos_turns(T::lit(0.5) * (from + to));
+                let Some((_, (_, edge))) = polygon_chord(&corners, q, half_line(cm, sm).1) else {
+                    continue;
+                };
+                let (a, b) = (corners[edge % 4], corners[(edge + 1) % 4]);
+                let (ya, yb) = (lobe_plane((a.0 - q.0, a.1 - q.1)), lobe_plane((b.0 - q.0, b.1 - q.1)));
+                let len = (yb.0 - ya.0).hypot(yb.1 - ya.1);
+                // t along the edge, n = (t.1, −t.0) towards it from q_L: ψ increases with σ
+                let mut t = ((yb.0 - ya.0) / len, (yb.1 - ya.1) / len);
+                if t.1 * ya.0 - t.0 * ya.1 < T::zero() {
+                    t = (-t.0, -t.1);
+                }
+                let n = (t.1, -t.0);
+                let h = n.0 * ya.0 + n.1 * ya.1;
+                if !(h > T::zero()) {
+                    // q_L on that edge: the chords have no length
+                    continue;
+                }
+                let reach = h.hypot(l * scale);
+                let psi_n = n.1.atan2(n.0);
+                // β of the wedge's ends: tan β = (h/D) tan(ψ − ψ_n), |ψ − ψ_n| ≤ π/2
+                let beta = |psi: T| {
+                    let (s, c) = sin_cos_turns(wrap(psi - psi_n));
+                    (h * s).atan2(reach * c.max(T::zero()))
+                };
+                each_node(&TRIANGLE_AZIMUTHAL, beta(from), beta(to), |b, w| {
+                    let (sb, cb) = sin_cos_turns(b);
+                    let (y0, y1) = (h * cb * n.0 + reach * sb * t.0, h * cb * n.1 + reach * sb * t.1);
+                    let r = y0.hypot(y1);
+                    sum = sum + w * h * reach / (h * h * cb * cb + reach * reach * sb * sb) * along(y0 / r, y1 / r);
                 });
             }
         }
@@ -728,3 +783,4 @@ where
         (self.medium.sigma_s * value, panels)
     }
 }
+
