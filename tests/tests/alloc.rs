@@ -5,10 +5,10 @@
 //! distribution, docs/DESIGN.md §3 extremes included) between two readings of the counter.
 //!
 //! The scenes are built *before* the first reading; only evaluation is counted, and only on the
-//! thread that evaluates (the kernel starts none): libtest's main thread, which waits for the
-//! test on a channel, allocated once on a loaded CI machine while the test ran (its waiting
-//! context is made on first use), so the allocator counts while a flag of the calling thread
-//! is set, never elsewhere.
+//! thread that evaluates (the kernel starts none): on a loaded CI machine the process once
+//! allocated while the test ran, presumably libtest's main thread, which waits for the test on a
+//! channel (its waiting context is made on first use), so the allocator counts while a flag of
+//! the calling thread is set, never elsewhere.
 
 use airlight::glam::{DVec3, Vec3};
 use airlight::{in_scatter_unchecked, Expansion};
