@@ -259,6 +259,16 @@ struct AirlightFlatLobe {
     int _end_pad_2;
 };
 
+struct AirlightEdgeRule {
+    float h;
+    int _pad1_0;
+    float2 t;
+    float reach;
+    float first;
+    float last;
+    int _end_pad_0;
+};
+
 struct AirlightCap {
     float3 a;
     float dc;
@@ -610,11 +620,11 @@ float2 airlight_csqrt(float2 z_1)
     }
     const float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
-        return float2(t_5, (z_1.y / (t_5 + t_5)));
+        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_4, (z_1.y / (t_4 + t_4)));
     }
-    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
-    return float2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
+    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
 }
 
 float2 airlight_cos_sin(float x)
@@ -1199,11 +1209,11 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             return _e34;
         }
         case 2u: {
-            float width_1 = (p0_2 - p1_2);
-            if ((width_1 <= AIRLIGHT_FLT_EPS)) {
-                return ((c >= (p1_2 + (width_1 * 0.5))) ? 1.0 : 0.0);
+            float width_2 = (p0_2 - p1_2);
+            if ((width_2 <= AIRLIGHT_FLT_EPS)) {
+                return ((c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_30 = clamp(((c - p1_2) / width_1), 0.0, 1.0);
+            float x_30 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
             return ((x_30 * x_30) * (3.0 - (2.0 * x_30)));
         }
         default: {
@@ -2076,35 +2086,35 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_)
         return 1.0;
     }
     float measured = sqrt((last / before));
-    float q_11 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_9 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if ((q_11 < 1.0)) {
+    if ((q_9 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_11) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_9) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_11) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_9) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_11) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_9) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_11) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_9) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_11) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_9) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_11) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_9) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_11) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_9) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (false ? ((_e126 * q_11) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (false ? ((_e126 * q_9) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
-        return min(((_e133 + (q_11 * truncation)) / m_1[0]), 1.0);
+        return min(((_e133 + (q_9 * truncation)) / m_1[0]), 1.0);
     }
     float _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -2251,8 +2261,8 @@ AirlightPanel airlight_v_panel(AirlightScene s_6, AirlightCanonical g_8, float s
             float _e40 = r_2;
             uint _e41 = i_6;
             const float _e42 = airlight_node(_e8, _e41);
-            float v_10 = (_e39 + (_e40 * _e42));
-            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_10);
+            float v_8 = (_e39 + (_e40 * _e42));
+            const float2 _e48 = airlight_integrand_over(s_6, g_8, (half_6.second ? -(sigma_4) : sigma_4), v_8);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_6;
@@ -2799,8 +2809,8 @@ float airlight_graded_split(float a_9, float b_8, float3 heights_3)
 {
     bool local_20 = (bool)0;
 
-    float t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    float d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
+    float t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    float d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
     if ((d_2 > 0.0)) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25));
     } else {
@@ -3015,13 +3025,13 @@ float airlight_integrate_piece(AirlightScene s_10, AirlightCanonical g_12, float
                         continue;
                     }
                     const float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid_1 = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
+                    float mid = ((_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5)));
                     a_10 = wa;
-                    b_9 = mid_1;
+                    b_9 = mid;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid_1;
+                    next_a = mid;
                     next_b = wb;
                     break;
                 }
@@ -3123,8 +3133,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
     float inv_h = (1.0 / big_h_1);
     float w_4 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
-    float e_12 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_12 * inv_h);
+    float e_9 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_9 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_11, float j_1)
@@ -3168,9 +3178,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     if ((s_11.light_kind == AIRLIGHT_LIGHT_SPOT)) {
         return float2(0.0, 0.0);
     }
-    float h_4 = g_13.h;
-    float u0_ = ((g_13.t_lo - g_13.x_h) / h_4);
-    float u1_ = ((g_13.t_hi - g_13.x_h) / h_4);
+    float h_3 = g_13.h;
+    float u0_ = ((g_13.t_lo - g_13.x_h) / h_3);
+    float u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
     if (!(g_13.t_hi_infinite)) {
         const bool _e21 = airlight_is_finite(u1_);
         local_26 = _e21;
@@ -3178,7 +3188,7 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
         local_26 = false;
     }
     bool u1_finite = local_26;
-    float big_h_7 = (s_11.sigma_t * h_4);
+    float big_h_7 = (s_11.sigma_t * h_3);
     const float _e26 = airlight_angle_y(u0_);
     if (u1_finite) {
         const float _e29 = airlight_angle_y(u1_);
@@ -3206,7 +3216,7 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
         if (u1_finite) {
             const float _e65 = airlight_atan2_upper(1.0, u1_);
             psi1_1 = _e65;
-            wy = ((g_13.t_hi - g_13.t_lo) / h_4);
+            wy = ((g_13.t_hi - g_13.t_lo) / h_3);
             wx = (1.0 + (u0_ * u1_));
         }
     }
@@ -3328,15 +3338,15 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             bool below_1 = (lower <= 1.5707964);
             float _e248 = psi1_1;
             const float2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
-            float cs_3 = _e254.y;
+            float cs_2 = _e254.y;
             float sn = (below_1 ? -(_e254.x) : _e254.x);
             float near_pole = (1.0 + _e254.x);
-            float far_pole = ((cs_3 * cs_3) / near_pole);
+            float far_pole = ((cs_2 * cs_2) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_10 = (below_1 ? (cs_3 / near_pole) : (near_pole / cs_3));
-            float weight_3 = ((cs_3 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
+            float y_10 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
+            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
+            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             const float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
             float gw = (weight_3 * f_2);
@@ -3381,11 +3391,11 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
     }
     if ((s_11.sigma_t > 0.0)) {
         const float _e365 = airlight_hypot_one(u0_);
-        x_12 = (s_11.sigma_t * (h_4 * _e365));
+        x_12 = (s_11.sigma_t * (h_3 * _e365));
     }
     float _e370 = x_12;
     float _e371 = value_1;
-    const float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_4, _e370, ((_e371 * hw_1) * 0.5));
+    const float _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5));
     return float2(1.0, _e375);
 }
 
@@ -3421,12 +3431,12 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_12 = (-0.5 * (b_18 + (_e47 * sqrt(disc_1))));
-    if ((q_12 != 0.0)) {
-        r1_ = (c_10 / q_12);
+    float q_10 = (-0.5 * (b_18 + (_e47 * sqrt(disc_1))));
+    if ((q_10 != 0.0)) {
+        r1_ = (c_10 / q_10);
     }
     if ((a_37 != 0.0)) {
-        r2_2 = (q_12 / a_37);
+        r2_2 = (q_10 / a_37);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3557,10 +3567,10 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
         k_out = s_12.light_param_b;
         float _e25 = k_in;
         float _e26 = k_out;
-        float width_2 = (_e25 - _e26);
-        if ((width_2 <= AIRLIGHT_FLT_EPS)) {
+        float width_3 = (_e25 - _e26);
+        if ((width_3 <= AIRLIGHT_FLT_EPS)) {
             float _e30 = k_out;
-            k_in = (_e30 + (width_2 * 0.5));
+            k_in = (_e30 + (width_3 * 0.5));
             float _e34 = k_in;
             k_out = _e34;
         }
@@ -3643,13 +3653,13 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                         float _e94 = cuts[min(uint((_e90 + 1u)), 3u)];
                         if ((_e89 > _e94)) {
                             uint _e96 = j_2;
-                            float t_8 = cuts[min(uint(_e96), 3u)];
+                            float t_7 = cuts[min(uint(_e96), 3u)];
                             uint _e99 = j_2;
                             uint _e101 = j_2;
                             float _e105 = cuts[min(uint((_e101 + 1u)), 3u)];
                             cuts[min(uint(_e99), 3u)] = _e105;
                             uint _e106 = j_2;
-                            cuts[min(uint((_e106 + 1u)), 3u)] = t_8;
+                            cuts[min(uint((_e106 + 1u)), 3u)] = t_7;
                         }
                     }
                 }
@@ -3867,11 +3877,11 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     bool local_44 = (bool)0;
     float x_13 = 0.0;
 
-    float h_5 = g_18.h;
-    float a_s = ((g_18.x_h - g_18.t_lo) / h_5);
+    float h_4 = g_18.h;
+    float a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     const float _e8 = airlight_hypot_one(a_s);
     const float _e9 = airlight_bounded(a_s);
-    float u_e = ((g_18.t_hi - g_18.x_h) / h_5);
+    float u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if (!(g_18.t_hi_infinite)) {
         const bool _e24 = airlight_is_finite(u_e);
         local_43 = _e24;
@@ -3882,7 +3892,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     if (_e26) {
         const float _e27 = airlight_hypot_one(u_e);
         float v_end = (u_e + _e27);
-        float dv_end = (((g_18.t_hi - g_18.t_lo) / h_5) * ((_e9 + v_end) / (_e8 + _e27)));
+        float dv_end = (((g_18.t_hi - g_18.t_lo) / h_4) * ((_e9 + v_end) / (_e8 + _e27)));
         const bool _e37 = airlight_is_finite(v_end);
         if (_e37) {
             const bool _e40 = airlight_is_finite(dv_end);
@@ -3916,7 +3926,7 @@ float airlight_whole_line(AirlightScene s_14, AirlightCanonical g_18, float big_
     float _e66 = x_13;
     const float2 _e67 = airlight_moment_zero_weighted(half_17, _e66);
     const float _e73 = airlight_integrand(s_14, g_18, -1.0, 0.0);
-    const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, _e67.y, (_e73 * _e67.x));
+    const float _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
@@ -3954,7 +3964,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
         const AirlightResult airlightresult = ConstructAirlightResult(0.0, 0u);
         return airlightresult;
     }
-    float h_6 = g_19.h;
+    float h_5 = g_19.h;
     float x_h = g_19.x_h;
     if ((t0_ <= x_h)) {
         if (!(g_19.t_hi_infinite)) {
@@ -3977,7 +3987,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
     }
     if (!(inside_1)) {
         float _e48 = gap_2;
-        local_49 = (h_6 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_49 = false;
     }
@@ -3987,7 +3997,7 @@ AirlightResult airlight_limits(AirlightScene s_15, AirlightCanonical g_19)
         const AirlightResult airlightresult_1 = ConstructAirlightResult(max(_e56, 0.0), AIRLIGHT_STATUS_OK);
         return airlightresult_1;
     }
-    if ((h_6 == 0.0)) {
+    if ((h_5 == 0.0)) {
         const AirlightResult airlightresult_2 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_2;
     }
@@ -4103,9 +4113,9 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     }
     float t0_1 = g_20.t_lo;
     float t1_1 = g_20.t_hi;
-    float h_7 = g_20.h;
+    float h_6 = g_20.h;
     float x_h_1 = g_20.x_h;
-    float big_h_8 = (s_18.sigma_t * h_7);
+    float big_h_8 = (s_18.sigma_t * h_6);
     const bool _e12 = airlight_isotropic_scene(s_18);
     if (_e12) {
         local_59 = (t0_1 < x_h_1);
@@ -4139,7 +4149,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     }
     bool cut_1 = !(_e12);
     if ((t0_1 < x_h_1)) {
-        float a_s_1 = ((x_h_1 - t0_1) / h_7);
+        float a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if (!(g_20.t_hi_infinite)) {
             local_62 = (t1_1 < x_h_1);
@@ -4151,13 +4161,13 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
             t_end = t1_1;
         }
         float _e62 = t_end;
-        float a_e = ((x_h_1 - _e62) / h_7);
+        float a_e = ((x_h_1 - _e62) / h_6);
         const float _e65 = airlight_hypot_one(a_s_1);
         const float _e66 = airlight_hypot_one(a_e);
         const float _e67 = airlight_bounded(a_s_1);
         const float _e68 = airlight_bounded(a_e);
         float _e69 = t_end;
-        float dy_1 = (((((_e69 - t0_1) / h_7) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
+        float dy_1 = (((((_e69 - t0_1) / h_6) * (1.0 + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         const float _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = ConstructAirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if (cut_1) {
@@ -4179,7 +4189,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         AirlightHalf _e106 = half_13;
         const float _e107 = airlight_half(s_18, g_20, -1.0, _e106, _e12, f_max_7);
         float _e108 = total_3;
-        const float _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, (big_h_8 * _e65), _e107);
+        const float _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if (!(g_20.t_hi_infinite)) {
@@ -4197,11 +4207,11 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
     bool _e126 = local_65;
     if (_e126) {
         float t_start = max(t0_1, x_h_1);
-        float a_s_2 = ((t_start - x_h_1) / h_7);
+        float a_s_2 = ((t_start - x_h_1) / h_6);
         const float _e130 = airlight_hypot_one(a_s_2);
         const float _e131 = airlight_bounded(a_s_2);
         dy = _e131;
-        float a_e_1 = ((t1_1 - x_h_1) / h_7);
+        float a_e_1 = ((t1_1 - x_h_1) / h_6);
         if (!(g_20.t_hi_infinite)) {
             const bool _e145 = airlight_is_finite(a_e_1);
             local_66 = _e145;
@@ -4212,7 +4222,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         if (_e147) {
             const float _e148 = airlight_bounded(a_e_1);
             const float _e152 = airlight_hypot_one(a_e_1);
-            float dv_end_1 = (((t1_1 - t_start) / h_7) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
+            float dv_end_1 = (((t1_1 - t_start) / h_6) * (1.0 + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if ((_e148 > 0.0)) {
                 const bool _e162 = airlight_is_finite(dv_end_1);
                 local_67 = _e162;
@@ -4275,7 +4285,7 @@ AirlightResult airlight_in_scatter_canonical(AirlightScene s_18, AirlightCanonic
         AirlightHalf _e224 = half_14;
         const float _e225 = airlight_half(s_18, g_20, 1.0, _e224, _e12, f_max_7);
         float _e226 = total_3;
-        const float _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        const float _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     float _e236 = total_3;
@@ -4333,8 +4343,8 @@ bool airlight_normalisable(float3 v_2)
 float3 airlight_normalize(float3 v_3)
 {
     float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_9 = (v_3 / (m_8).xxx);
-    return (u_9 / (length(u_9)).xxx);
+    float3 u_7 = (v_3 / (m_8).xxx);
+    return (u_7 / (length(u_7)).xxx);
 }
 
 bool airlight_valid(AirlightScene s_19)
@@ -4863,9 +4873,9 @@ float2 airlight_two_sum(float a_13, float b_10, uint key_1)
     const float _e4 = airlight_opaque((a_13 + b_10), key_1);
     const float _e6 = airlight_opaque((_e4 - a_13), key_1);
     const float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_13 = ((a_13 - _e8) + (b_10 - _e6));
-    const bool _e12 = airlight_is_finite(e_13);
-    return float2(_e4, (_e12 ? e_13 : 0.0));
+    float e_10 = ((a_13 - _e8) + (b_10 - _e6));
+    const bool _e12 = airlight_is_finite(e_10);
+    return float2(_e4, (_e12 ? e_10 : 0.0));
 }
 
 float airlight_split_high(float x_15)
@@ -4880,9 +4890,9 @@ float2 airlight_two_product(float a_14, float b_11, uint key_2)
     float al = (a_14 - _e5);
     const float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_14 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    const bool _e17 = airlight_is_finite(e_14);
-    return float2(_e4, (_e17 ? e_14 : 0.0));
+    float e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_11);
+    return float2(_e4, (_e17 ? e_11 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3)
@@ -4960,10 +4970,10 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
         return airlightcanonical_3;
     }
     const float _e93 = airlight_safe_length(dir_2);
-    float h_8 = (_e85 / _e93);
-    const bool _e95 = airlight_is_finite(h_8);
+    float h_7 = (_e85 / _e93);
+    const bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
-        local_129 = (h_8 > 0.0);
+        local_129 = (h_7 > 0.0);
     } else {
         local_129 = false;
     }
@@ -4979,7 +4989,7 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
     const float3 _e113 = airlight_normalize(dir_2);
     const float3 _e114 = airlight_normalize(w_6);
     float3 n_4 = -(cross(_e113, _e114));
-    out_2.h = h_8;
+    out_2.h = h_7;
     float3 _e119 = a_16;
     out_2.d_c = dot(n_4, _e119);
     AirlightCanonical _e121 = out_2;
@@ -5461,9 +5471,9 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             }
             AirlightPanelList _e30 = list_1;
             const float4 _e32 = airlight_list_get(_e30, _e9.worst);
-            float mid_2 = (0.5 * (_e32.x + _e32.y));
-            if ((mid_2 > _e32.x)) {
-                local_133 = (mid_2 < _e32.y);
+            float mid_1 = (0.5 * (_e32.x + _e32.y));
+            if ((mid_1 > _e32.x)) {
+                local_133 = (mid_1 < _e32.y);
             } else {
                 local_133 = false;
             }
@@ -5472,7 +5482,7 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
                 airlight_list_set(list_1, _e9.worst, float4(_e32.xyz, 0.0));
                 continue;
             }
-            const AirlightSplit airlightsplit = ConstructAirlightSplit(true, _e32.x, mid_2, _e32.y, _e9.worst);
+            const AirlightSplit airlightsplit = ConstructAirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
             return airlightsplit;
         }
     }
@@ -5775,15 +5785,15 @@ AirlightOuter airlight_surface(AirlightScene s_25)
         float _e163 = g_22.alpha_r;
         cuts_2[4] = _e163;
         if ((s_25.brdf_exponent > 1.0)) {
-            float width_3 = (1.0 / sqrt(s_25.brdf_exponent));
+            float width_4 = (1.0 / sqrt(s_25.brdf_exponent));
             float _e173 = g_22.alpha_r;
-            cuts_2[5] = (_e173 - (1.5 * width_3));
+            cuts_2[5] = (_e173 - (1.5 * width_4));
             float _e179 = g_22.alpha_r;
-            cuts_2[6] = (_e179 + (1.5 * width_3));
+            cuts_2[6] = (_e179 + (1.5 * width_4));
             float _e185 = g_22.alpha_r;
-            cuts_2[7] = (_e185 - (4.0 * width_3));
+            cuts_2[7] = (_e185 - (4.0 * width_4));
             float _e191 = g_22.alpha_r;
-            cuts_2[8] = (_e191 + (4.0 * width_3));
+            cuts_2[8] = (_e191 + (4.0 * width_4));
         }
         float3 meet = cross(_e37, _e111);
         const float _e196 = airlight_safe_length(meet);
@@ -5935,33 +5945,33 @@ AirlightOuter airlight_surface(AirlightScene s_25)
             }
             {
                 uint _e339 = i_22;
-                float e_15 = g_22.gamma[min(uint(_e339), 12u)];
-                if (!((e_15 == kinks[0]))) {
-                    local_137 = (e_15 == kinks[1]);
+                float e_12 = g_22.gamma[min(uint(_e339), 12u)];
+                if (!((e_12 == kinks[0]))) {
+                    local_137 = (e_12 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
                 bool _e350 = local_137;
                 if (!(_e350)) {
-                    local_138 = (e_15 == kinks[2]);
+                    local_138 = (e_12 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
                 bool _e357 = local_138;
                 if (!(_e357)) {
-                    local_139 = (e_15 == kinks[3]);
+                    local_139 = (e_12 == kinks[3]);
                 } else {
                     local_139 = true;
                 }
                 bool _e364 = local_139;
                 if (!(_e364)) {
-                    local_140 = (e_15 == kinks[4]);
+                    local_140 = (e_12 == kinks[4]);
                 } else {
                     local_140 = true;
                 }
                 bool _e371 = local_140;
                 if (!(_e371)) {
-                    local_141 = (e_15 == kinks[5]);
+                    local_141 = (e_12 == kinks[5]);
                 } else {
                     local_141 = true;
                 }
@@ -6126,14 +6136,14 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_13 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_11 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_13.k) ? (_e48 / q_13.k) : 1.0);
+    float s2_1 = ((_e51 < q_11.k) ? (_e48 / q_11.k) : 1.0);
     const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -6171,7 +6181,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            const float _e109 = airlight_lobe_piece(q_13, edges_1[min(uint(_e103), 3u)], edges_1[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            const float _e109 = airlight_lobe_piece(q_11, edges_1[min(uint(_e103), 3u)], edges_1[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -6245,11 +6255,11 @@ AirlightOuter airlight_outer(AirlightScene s_26)
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
-    float3 e_16 = (ab_1 / (_e15).xxx);
+    float3 e_13 = (ab_1 / (_e15).xxx);
     const float3 _e41 = airlight_normalize(s_26.dir);
     float3 w0_ = (s_26.light_position - s_26.origin);
-    float cos_a_2 = dot(e_16, _e41);
-    float along_e = dot(e_16, w0_);
+    float cos_a_2 = dot(e_13, _e41);
+    float along_e = dot(e_13, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_5 = ((s_26.flags & 1u) != 0u);
@@ -6260,7 +6270,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_16 * _e70)));
+    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
         local_147 = (sin_a_1 > 0.0);
@@ -6355,7 +6365,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_16;
+    g_24.e = e_13;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6487,16 +6497,16 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_36 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_21 - float(i_36));
-        float a_42 = g_25.gamma[min(uint(i_36), 12u)];
-        float b_20 = g_25.gamma[min(uint((i_36 + 1u)), 12u)];
+        uint i_37 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_21 - float(i_37));
+        float a_42 = g_25.gamma[min(uint(i_37), 12u)];
+        float b_20 = g_25.gamma[min(uint((i_37 + 1u)), 12u)];
         float w_8 = (b_20 - a_42);
-        float u_10 = (1.0 - t_9);
-        bool smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
-        jacobian = (((w_8 * 6.0) * t_9) * u_10);
+        float u_8 = (1.0 - t_8);
+        bool smooth_a = (((g_25.smooth_edges >> i_37) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_37 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
+        jacobian = (((w_8 * 6.0) * t_8) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -6504,7 +6514,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_9) * t_9)) : _e58);
+        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_8) * t_8)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6512,7 +6522,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e75 = local_164;
-        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
+        jacobian = (_e75 ? (w_8 * (t_8 + t_8)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
             local_165 = !(smooth_b);
@@ -6520,7 +6530,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = (_e85 ? (b_20 - ((w_8 * u_10) * u_10)) : _e77);
+        gamma_1 = (_e85 ? (b_20 - ((w_8 * u_8) * u_8)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -6528,7 +6538,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_166 = false;
         }
         bool _e94 = local_166;
-        jacobian = (_e94 ? (w_8 * (u_10 + u_10)) : _e87);
+        jacobian = (_e94 ? (w_8 * (u_8 + u_8)) : _e87);
         float _e96 = gamma_1;
         if (smooth_a) {
             local_167 = smooth_b;
@@ -6536,7 +6546,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_42 + (w_8 * t_9)) : _e96);
+        gamma_1 = (_e102 ? (a_42 + (w_8 * t_8)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -6574,9 +6584,9 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         p.t_max = 0.0;
         p.flags = 1u;
         float sin_g_1 = max(_e119.y, 0.0);
-        float h_9 = (g_25.d * sin_g_1);
-        float d_c_2 = ((h_9 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
-        AirlightCanonical exact = ConstructAirlightCanonical(h_9, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
+        float h_8 = (g_25.d * sin_g_1);
+        float d_c_2 = ((h_8 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0);
+        AirlightCanonical exact = ConstructAirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0.0, 0.0, true);
         AirlightScene _e206 = p;
         float _e207 = weight;
         float _e210 = jacobian;
@@ -6634,8 +6644,8 @@ airlight_ret_Constructarray12_float2_ airlight_Constructarray12_float2_(float2 a
 
 float2 airlight_triangle_rule(uint i_26)
 {
-    float2 rule_1[12] = airlight_Constructarray12_float2_(float2(-0.12523341, 0.24914704), float2(0.12523341, 0.24914704), float2(-0.3678315, 0.23349254), float2(0.3678315, 0.23349254), float2(-0.58731794, 0.20316742), float2(0.58731794, 0.20316742), float2(-0.76990265, 0.16007833), float2(0.76990265, 0.16007833), float2(-0.9041172, 0.10693932), float2(0.9041172, 0.10693932), float2(-0.98156065, 0.047175337), float2(0.98156065, 0.047175337));
-    return rule_1[min(uint(i_26), 11u)];
+    float2 rule_2[12] = airlight_Constructarray12_float2_(float2(-0.12523341, 0.24914704), float2(0.12523341, 0.24914704), float2(-0.3678315, 0.23349254), float2(0.3678315, 0.23349254), float2(-0.58731794, 0.20316742), float2(0.58731794, 0.20316742), float2(-0.76990265, 0.16007833), float2(0.76990265, 0.16007833), float2(-0.9041172, 0.10693932), float2(0.9041172, 0.10693932), float2(-0.98156065, 0.047175337), float2(0.98156065, 0.047175337));
+    return rule_2[min(uint(i_26), 11u)];
 }
 
 float airlight_area_phase(AirlightScene s_28, float mu_2)
@@ -6650,11 +6660,11 @@ float airlight_emitted(AirlightScene s_29, float c_7)
     float base_1 = (float)0;
     float acc_1 = 1.0;
 
-    uint p_3 = airlight_naga_f2u32(s_29.light_param_b);
-    if ((p_3 <= 1u)) {
+    uint p_2 = airlight_naga_f2u32(s_29.light_param_b);
+    if ((p_2 <= 1u)) {
         return s_29.intensity;
     }
-    e_2 = (p_3 - 1u);
+    e_2 = (p_2 - 1u);
     base_1 = c_7;
     uint _e13 = e_2;
     if (((_e13 & 1u) != 0u)) {
@@ -6772,11 +6782,11 @@ float airlight_emitted(AirlightScene s_29, float c_7)
 
 float airlight_emission_scale(AirlightScene s_30)
 {
-    uint p_4 = airlight_naga_f2u32(s_30.light_param_b);
-    if ((p_4 <= 1u)) {
+    uint p_3 = airlight_naga_f2u32(s_30.light_param_b);
+    if ((p_3 <= 1u)) {
         return 0.0;
     }
-    return (2.0 / sqrt(float((p_4 - 1u))));
+    return (2.0 / sqrt(float((p_3 - 1u))));
 }
 
 float2 airlight_graded_range(AirlightScene s_31, float top)
@@ -6961,7 +6971,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         const AirlightArea airlightarea = _e42;
         return airlightarea;
     }
-    float3 o_7 = s_35.origin;
+    float3 o_6 = s_35.origin;
     const float3 _e45 = airlight_normalize(s_35.dir);
     a_18.d = _e45;
     bool infinite_6 = ((s_35.flags & 1u) != 0u);
@@ -6970,7 +6980,7 @@ AirlightArea airlight_area(AirlightScene s_35)
     size = s_35.light_param_a;
     if ((s_35.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         float3 _e67 = a_18.c;
-        float3 oc = (o_7 - _e67);
+        float3 oc = (o_6 - _e67);
         float b_21 = dot(oc, _e45);
         float _e72 = a_18.radius;
         float _e74 = a_18.radius;
@@ -6978,9 +6988,9 @@ AirlightArea airlight_area(AirlightScene s_35)
         float disc_2 = ((b_21 * b_21) - k_10);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_14 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
-            cut0_ = q_14;
-            cut1_ = (k_10 / q_14);
+            float q_12 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_12;
+            cut1_ = (k_10 / q_12);
             cut_count = 2u;
         }
     } else {
@@ -7021,7 +7031,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         float3 _e156 = a_18.c;
         float3 _e159 = a_18.n;
         float3 _e162 = a_18.n;
-        cut0_ = (dot((_e156 - o_7), _e159) / dot(_e45, _e162));
+        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
         cut_count = 1u;
     }
     float _e166 = size;
@@ -7032,7 +7042,7 @@ AirlightArea airlight_area(AirlightScene s_35)
         return airlightarea_1;
     }
     float3 _e173 = centre;
-    float3 to_centre = (_e173 - o_7);
+    float3 to_centre = (_e173 - o_6);
     a_18.x_h = dot(to_centre, _e45);
     float _e178 = a_18.x_h;
     const float _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
@@ -7043,18 +7053,18 @@ AirlightArea airlight_area(AirlightScene s_35)
     end_infinite = infinite_6;
     if ((s_35.sigma_t > 0.0)) {
         float3 _e195 = centre;
-        const float _e199 = airlight_safe_length((_e195 - (o_7 + (t0_2 * _e45))));
+        const float _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
         float _e201 = size;
-        float reach_2 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
+        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
         if (!(infinite_6)) {
             float _e210 = t_end_1;
-            local_173 = (reach_2 < _e210);
+            local_173 = (reach_1 < _e210);
         } else {
             local_173 = true;
         }
         bool _e213 = local_173;
         if (_e213) {
-            t_end_1 = reach_2;
+            t_end_1 = reach_1;
             end_infinite = false;
         }
     }
@@ -7089,12 +7099,12 @@ AirlightArea airlight_area(AirlightScene s_35)
         }
         {
             uint _e245 = i_27;
-            float t_10 = cuts_4[min(uint(_e245), 2u)];
+            float t_9 = cuts_4[min(uint(_e245), 2u)];
             uint _e248 = i_27;
             cuts_4[min(uint(_e248), 2u)] = _e217;
-            const bool _e250 = airlight_is_finite(t_10);
+            const bool _e250 = airlight_is_finite(t_9);
             if (_e250) {
-                local_174 = (t_10 >= t0_2);
+                local_174 = (t_9 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -7103,7 +7113,7 @@ AirlightArea airlight_area(AirlightScene s_35)
                 bool _e258 = end_infinite;
                 if (!(_e258)) {
                     float _e262 = t_end_1;
-                    local_176 = (t_10 <= _e262);
+                    local_176 = (t_9 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -7116,7 +7126,7 @@ AirlightArea airlight_area(AirlightScene s_35)
             if (_e267) {
                 uint _e268 = i_27;
                 AirlightArea _e270 = a_18;
-                const float _e272 = airlight_area_theta(_e270, t_10, false);
+                const float _e272 = airlight_area_theta(_e270, t_9, false);
                 cuts_4[min(uint(_e268), 2u)] = _e272;
             }
         }
@@ -7150,12 +7160,12 @@ float airlight_flat_node(AirlightScene s_36, AirlightArea a_19, AirlightAbove ab
     const float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    float2 p_5 = (above_1.off + (r_13 * e_3));
+    float2 p_4 = (above_1.off + (r_13 * e_3));
     float z_19 = above_1.z;
-    float dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
+    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    const float _e50 = airlight_area_phase(s_36, ((((p_5.x * a_19.dirs.x) + (p_5.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    const float _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
     const float _e52 = airlight_emitted(s_36, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -7254,22 +7264,22 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
             uint _e40 = i_28;
             float2 a_44 = o.corners[min(uint(_e40), 3u)];
             uint _e43 = i_28;
-            float2 e_17 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
+            float2 e_14 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
             bool _e50 = inside;
             if (_e50) {
-                local_177 = ((((q_4.x - a_44.x) * e_17.y) - ((q_4.y - a_44.y) * e_17.x)) <= 0.0);
+                local_177 = ((((q_4.x - a_44.x) * e_14.y) - ((q_4.y - a_44.y) * e_14.x)) <= 0.0);
             } else {
                 local_177 = false;
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_11 = clamp(((((q_4.x - a_44.x) * e_17.x) + ((q_4.y - a_44.y) * e_17.y)) / ((e_17.x * e_17.x) + (e_17.y * e_17.y))), 0.0, 1.0);
-            float2 p_6 = (a_44 + (t_11 * e_17));
-            float dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
+            float t_10 = clamp(((((q_4.x - a_44.x) * e_14.x) + ((q_4.y - a_44.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
+            float2 p_5 = (a_44 + (t_10 * e_14));
+            float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
                 best = dd;
-                nearest = p_6;
+                nearest = p_5;
             }
         }
     }
@@ -7321,9 +7331,9 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
         {
             uint _e20 = j_5;
             float2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
-            float3 p_7 = (lobe_4.x * a_21.dirs);
+            float3 p_6 = (lobe_4.x * a_21.dirs);
             if ((lobe_4.y > 0.0)) {
-                local_178 = (p_7.z < 0.0);
+                local_178 = (p_6.z < 0.0);
             } else {
                 local_178 = false;
             }
@@ -7335,12 +7345,12 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
             }
             bool _e43 = local_179;
             if (_e43) {
-                float l_4 = (z_11 / -(p_7.z));
-                float2 q_15 = (l_4 * p_7.xy);
-                const float2 _e49 = airlight_outline_nearest(o_2, q_15);
+                float l_4 = (z_11 / -(p_6.z));
+                float2 q_13 = (l_4 * p_6.xy);
+                const float2 _e49 = airlight_outline_nearest(o_2, q_13);
                 float3 to_near = float3(_e49, -(z_11));
-                float cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1.0);
-                bool on_emitter = all((_e49 == q_15));
+                float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                bool on_emitter = all((_e49 == q_13));
                 if (!(on_emitter)) {
                     const float _e63 = airlight_acos(cos_1);
                     local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
@@ -7349,7 +7359,7 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
                 }
                 bool _e69 = local_180;
                 if (_e69) {
-                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_15, on_emitter);
+                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                     return airlightflatlobe;
                 }
             }
@@ -7391,9 +7401,9 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
-        float t_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_12 / a_45);
-        float r2_3 = (k_11 / t_12);
+        float t_11 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_11 / a_45);
+        float r2_3 = (k_11 / t_11);
         float hi_8 = max(r1_2, r2_3);
         if (!((hi_8 > 0.0))) {
             return (0.0).xx;
@@ -7527,6 +7537,41 @@ float2 airlight_cos_sin_turns(float x_23)
     return float2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
 
+AirlightEdgeRule ConstructAirlightEdgeRule(float arg0, float2 arg1, float arg2, float arg3, float arg4) {
+    AirlightEdgeRule ret = (AirlightEdgeRule)0;
+    ret.h = arg0;
+    ret.t = arg1;
+    ret.reach = arg2;
+    ret.first = arg3;
+    ret.last = arg4;
+    return ret;
+}
+
+AirlightEdgeRule airlight_edge_rule(float2 a_23, float2 b_14, float width_1)
+{
+    float2 e_15 = (b_14 - a_23);
+    float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
+    float2 t_12 = (e_15 / (el).xx);
+    float h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
+    float reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
+    const float _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
+    const float _e29 = airlight_atan2_(dot(b_14, t_12), reach_2);
+    const AirlightEdgeRule airlightedgerule = ConstructAirlightEdgeRule(h_9, t_12, reach_2, _e27, _e29);
+    return airlightedgerule;
+}
+
+float4 airlight_edge_node(AirlightEdgeRule rule_1, uint j_6)
+{
+    const float2 _e2 = airlight_triangle_rule(j_6);
+    float hw_4 = (0.5 * (rule_1.last - rule_1.first));
+    const float2 _e18 = airlight_cos_sin_half_turn((((0.5 * (rule_1.first + rule_1.last)) + (hw_4 * _e2.x)) + 1.5707964));
+    float sigma_13 = ((rule_1.reach * -(_e18.x)) / _e18.y);
+    float r2_4 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
+    float r_14 = sqrt(r2_4);
+    float2 m_12 = float2(rule_1.t.y, -(rule_1.t.x));
+    return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_14).xx), r_14, ((((_e2.y * hw_4) * rule_1.h) * rule_1.reach) / ((_e18.y * _e18.y) * r2_4)));
+}
+
 float4 airlight_sort4_(float4 x_24)
 {
     float4 a_46 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
@@ -7534,75 +7579,22 @@ float4 airlight_sort4_(float4 x_24)
     return float4(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
-float2 airlight_exit_through(float2 exit, float index, float2 a_23, float2 b_14, float2 q_8, float2 e_8)
-{
-    bool local_181 = (bool)0;
-
-    float2 m_12 = float2((b_14.y - a_23.y), (a_23.x - b_14.x));
-    float den_1 = dot(e_8, m_12);
-    float r_14 = (-(dot((q_8 - a_23), m_12)) / den_1);
-    if ((den_1 > 0.0)) {
-        local_181 = (r_14 < exit.x);
-    } else {
-        local_181 = false;
-    }
-    bool _e26 = local_181;
-    return (_e26 ? float2(r_14, index) : exit);
-}
-
-uint airlight_exit_edge(AirlightOutline o_5, float2 q_9, float2 e_9)
-{
-    float2 exit_1 = float2(3.4028235e38, 0.0);
-
-    float2 _e7 = exit_1;
-    const float2 _e13 = airlight_exit_through(_e7, 0.0, o_5.corners[0], o_5.corners[1], q_9, e_9);
-    exit_1 = _e13;
-    float2 _e14 = exit_1;
-    const float2 _e20 = airlight_exit_through(_e14, 1.0, o_5.corners[1], o_5.corners[2], q_9, e_9);
-    exit_1 = _e20;
-    float2 _e21 = exit_1;
-    const float2 _e27 = airlight_exit_through(_e21, 2.0, o_5.corners[2], o_5.corners[3], q_9, e_9);
-    exit_1 = _e27;
-    float2 _e28 = exit_1;
-    const float2 _e34 = airlight_exit_through(_e28, 3.0, o_5.corners[3], o_5.corners[0], q_9, e_9);
-    exit_1 = _e34;
-    float _e36 = exit_1.y;
-    return airlight_naga_f2u32(_e36);
-}
-
-float2 airlight_lobe_half_line(float3 u_6, float3 v_8, float3 p_1, float2 cs_2)
-{
-    float3 w_10 = ((cs_2.x * u_6) + (cs_2.y * v_8));
-    return (w_10.xy + ((w_10.z / -(p_1.z)) * p_1.xy));
-}
-
-float2 airlight_lobe_plane(float3 u_7, float3 v_9, float2 e_10)
-{
-    return float2(((e_10.x * u_7.x) + (e_10.y * u_7.y)), ((e_10.x * v_9.x) + (e_10.y * v_9.y)));
-}
-
-float airlight_wedge_beta(float delta, float h_3, float reach_1)
-{
-    const float2 _e3 = airlight_cos_sin_turns(delta);
-    const float _e10 = airlight_atan2_((h_3 * _e3.y), (reach_1 * max(_e3.x, 0.0)));
-    return _e10;
-}
-
-float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3)
+float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
     uint i_29 = 0u;
     uint i_30 = 0u;
-    float mid = 0.0;
     uint i_31 = 0u;
-    uint j_6 = (uint)0;
-    float2 t_4 = (float2)0;
+    float2 ya = (float2)0;
+    float2 yb = (float2)0;
     uint j_7 = (uint)0;
+    uint i_32 = 0u;
+    uint j_8 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_3.p);
-    float3 v_11 = cross(lobe_3.p, _e5);
-    float2 q_16 = lobe_3.q;
-    if ((o_6.radius > 0.0)) {
+    float3 v_9 = cross(lobe_3.p, _e5);
+    float2 q_14 = lobe_3.q;
+    if ((o_5.radius > 0.0)) {
         if (lobe_3.on_emitter) {
             uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
             bool loop_init_34 = true;
@@ -7623,21 +7615,21 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     uint _e21 = i_29;
                     const float3 _e22 = airlight_azimuths(true, _e21);
                     float _e23 = sum_9;
-                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e22.xy);
+                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
             }
             float _e32 = sum_9;
             return _e32;
         }
-        float2 d_5 = (o_6.corners[0] - q_16);
+        float2 d_5 = (o_5.corners[0] - q_14);
         float dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        float sb_1 = (o_6.radius / dq_2);
-        float cb = (sqrt(((dq_2 - o_6.radius) * (dq_2 + o_6.radius))) / dq_2);
-        const float _e53 = airlight_lobe_azimuth(_e5, v_11, d_5);
-        const float _e65 = airlight_lobe_azimuth(_e5, v_11, float2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        float sb_1 = (o_5.radius / dq_2);
+        float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
+        const float _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        const float _e65 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
         const float _e67 = airlight_wrap_turn((_e65 - _e53));
-        const float _e79 = airlight_lobe_azimuth(_e5, v_11, float2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        const float _e79 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
         const float _e81 = airlight_wrap_turn((_e79 - _e53));
         float centre_2 = (_e53 + ((_e67 + _e81) * 0.5));
         float half_19 = (abs((_e67 - _e81)) * 0.5);
@@ -7661,141 +7653,143 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                 const float3 _e97 = airlight_azimuths(false, _e96);
                 float _e98 = sum_9;
                 const float2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e106);
+                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
         }
         float _e113 = sum_9;
         return _e113;
     }
-    if (!(lobe_3.on_emitter)) {
-        const float _e126 = airlight_lobe_azimuth(_e5, v_11, ((0.5 * (o_6.corners[0] + o_6.corners[2])) - q_16));
-        mid = _e126;
-    }
-    const float _e130 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[0] - q_16));
-    float _e131 = mid;
-    const float _e133 = airlight_wrap_turn((_e130 - _e131));
-    const float _e137 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[1] - q_16));
-    float _e138 = mid;
-    const float _e140 = airlight_wrap_turn((_e137 - _e138));
-    const float _e144 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[2] - q_16));
-    float _e145 = mid;
-    const float _e147 = airlight_wrap_turn((_e144 - _e145));
-    const float _e151 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[3] - q_16));
-    float _e152 = mid;
-    const float _e154 = airlight_wrap_turn((_e151 - _e152));
-    const float4 _e156 = airlight_sort4_(float4(_e133, _e140, _e147, _e154));
-    uint wedges = (lobe_3.on_emitter ? 4u : 3u);
-    uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-    bool loop_init_36 = true;
-    while(true) {
-        if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_36) {
-            uint _e329 = i_31;
-            i_31 = (_e329 + 1u);
-        }
-        loop_init_36 = false;
-        uint _e163 = i_31;
-        if ((_e163 < wedges)) {
-        } else {
-            break;
-        }
-        {
-            float _e165 = mid;
-            uint _e166 = i_31;
-            float first_2 = (_e165 + _e156[min(uint(_e166), 3u)]);
-            float _e169 = mid;
-            uint _e170 = i_31;
-            uint _e179 = i_31;
-            float last_1 = (_e169 + ((_e179 == 3u) ? (_e156.x + 6.2831855) : _e156[min(uint(min((_e170 + 1u), 3u)), 3u)]));
-            float c_19 = ((first_2 + last_1) * 0.5);
-            float hw_4 = ((last_1 - first_2) * 0.5);
-            if (!(lobe_3.on_emitter)) {
-                j_6 = 0u;
+    if (lobe_3.on_emitter) {
+        uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+        bool loop_init_36 = true;
+        while(true) {
+            if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+            if (!loop_init_36) {
+                uint _e186 = i_31;
+                i_31 = (_e186 + 1u);
+            }
+            loop_init_36 = false;
+            uint _e117 = i_31;
+            if ((_e117 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e121 = i_31;
+                float2 ea = (o_5.corners[min(uint(_e121), 3u)] - q_14);
+                uint _e125 = i_31;
+                float2 eb = (o_5.corners[min(uint(airlight_naga_mod((_e125 + 1u), 4u)), 3u)] - q_14);
+                ya = float2(dot(ea, _e5.xy), dot(ea, v_9.xy));
+                yb = float2(dot(eb, _e5.xy), dot(eb, v_9.xy));
+                float _e145 = ya.x;
+                float _e147 = yb.y;
+                float _e150 = ya.y;
+                float _e152 = yb.x;
+                float area = ((_e145 * _e147) - (_e150 * _e152));
+                if (!((abs(area) > 0.0))) {
+                    continue;
+                }
+                if ((area < 0.0)) {
+                    float2 swap = ya;
+                    float2 _e162 = yb;
+                    ya = _e162;
+                    yb = swap;
+                }
+                float2 _e163 = ya;
+                float2 _e164 = yb;
+                const AirlightEdgeRule _e168 = airlight_edge_rule(_e163, _e164, (lobe_3.l * lobe_3.scale));
+                j_7 = 0u;
                 uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
                 bool loop_init_37 = true;
                 while(true) {
                     if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
                     loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
                     if (!loop_init_37) {
-                        uint _e210 = j_6;
-                        j_6 = (_e210 + 1u);
+                        uint _e183 = j_7;
+                        j_7 = (_e183 + 1u);
                     }
                     loop_init_37 = false;
-                    uint _e194 = j_6;
-                    if ((_e194 < 12u)) {
+                    uint _e171 = j_7;
+                    if ((_e171 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e197 = j_6;
-                        const float2 _e198 = airlight_triangle_rule(_e197);
-                        float _e199 = sum_9;
-                        const float2 _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                        const float _e206 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e205);
-                        sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
+                        uint _e174 = j_7;
+                        const float4 _e175 = airlight_edge_node(_e168, _e174);
+                        float _e176 = sum_9;
+                        const float _e179 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e175.xy);
+                        sum_9 = (_e176 + (_e175.w * _e179));
                     }
                 }
-                continue;
             }
-            const float2 _e213 = airlight_cos_sin_turns(c_19);
-            const float2 _e214 = airlight_lobe_half_line(_e5, v_11, lobe_3.p, _e213);
-            const uint _e215 = airlight_exit_edge(o_6, q_16, _e214);
-            const float2 _e219 = airlight_lobe_plane(_e5, v_11, (o_6.corners[min(uint(_e215), 3u)] - q_16));
-            const float2 _e227 = airlight_lobe_plane(_e5, v_11, (o_6.corners[min(uint(airlight_naga_mod((_e215 + 1u), 4u)), 3u)] - q_16));
-            t_4 = ((_e227 - _e219) / (sqrt(dot((_e227 - _e219), (_e227 - _e219)))).xx);
-            float _e237 = t_4.y;
-            float _e241 = t_4.x;
-            if ((((_e237 * _e219.x) - (_e241 * _e219.y)) < 0.0)) {
-                float2 _e247 = t_4;
-                t_4 = -(_e247);
-            }
-            float _e250 = t_4.y;
-            float _e252 = t_4.x;
-            float2 n_6 = float2(_e250, -(_e252));
-            float h_10 = dot(n_6, _e219);
-            if (!((h_10 > 0.0))) {
-                continue;
-            }
-            float reach_3 = sqrt(((h_10 * h_10) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
-            const float _e271 = airlight_atan2_(n_6.y, n_6.x);
-            const float _e273 = airlight_wedge_beta((first_2 - _e271), h_10, reach_3);
-            const float _e275 = airlight_wedge_beta((last_1 - _e271), h_10, reach_3);
-            float bc = ((_e273 + _e275) * 0.5);
-            float bw = ((_e275 - _e273) * 0.5);
-            j_7 = 0u;
-            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-            bool loop_init_38 = true;
+        }
+        float _e188 = sum_9;
+        return _e188;
+    }
+    const float _e197 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    const float _e201 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    const float _e203 = airlight_wrap_turn((_e201 - _e197));
+    const float _e207 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    const float _e209 = airlight_wrap_turn((_e207 - _e197));
+    const float _e213 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    const float _e215 = airlight_wrap_turn((_e213 - _e197));
+    const float _e219 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    const float _e221 = airlight_wrap_turn((_e219 - _e197));
+    const float4 _e223 = airlight_sort4_(float4(_e203, _e209, _e215, _e221));
+    uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+    bool loop_init_38 = true;
+    while(true) {
+        if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_38) {
+            uint _e269 = i_32;
+            i_32 = (_e269 + 1u);
+        }
+        loop_init_38 = false;
+        uint _e226 = i_32;
+        if ((_e226 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e229 = i_32;
+            uint _e231 = i_32;
+            float c_19 = (_e197 + ((_e223[min(uint(_e229), 3u)] + _e223[min(uint((_e231 + 1u)), 3u)]) * 0.5));
+            uint _e239 = i_32;
+            uint _e243 = i_32;
+            float hw_5 = ((_e223[min(uint((_e239 + 1u)), 3u)] - _e223[min(uint(_e243), 3u)]) * 0.5);
+            j_8 = 0u;
+            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+            bool loop_init_39 = true;
             while(true) {
-                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-                if (!loop_init_38) {
-                    uint _e326 = j_7;
-                    j_7 = (_e326 + 1u);
+                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (!loop_init_39) {
+                    uint _e266 = j_8;
+                    j_8 = (_e266 + 1u);
                 }
-                loop_init_38 = false;
-                uint _e284 = j_7;
-                if ((_e284 < 12u)) {
+                loop_init_39 = false;
+                uint _e250 = j_8;
+                if ((_e250 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e287 = j_7;
-                    const float2 _e288 = airlight_triangle_rule(_e287);
-                    const float2 _e292 = airlight_cos_sin_turns((bc + (bw * _e288.x)));
-                    float2 _e298 = t_4;
-                    float2 y_13 = (((h_10 * _e292.x) * n_6) + ((reach_3 * _e292.y) * _e298));
-                    float weight_4 = ((h_10 * reach_3) / ((((h_10 * h_10) * _e292.x) * _e292.x) + (((reach_3 * reach_3) * _e292.y) * _e292.y)));
-                    float _e314 = sum_9;
-                    const float _e322 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, (y_13 / (sqrt(dot(y_13, y_13))).xx));
-                    sum_9 = (_e314 + (((_e288.y * bw) * weight_4) * _e322));
+                    uint _e253 = j_8;
+                    const float2 _e254 = airlight_triangle_rule(_e253);
+                    float _e255 = sum_9;
+                    const float2 _e261 = airlight_cos_sin_turns((c_19 + (hw_5 * _e254.x)));
+                    const float _e262 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e261);
+                    sum_9 = (_e255 + ((_e254.y * hw_5) * _e262));
                 }
             }
         }
     }
-    float _e331 = sum_9;
-    return _e331;
+    float _e271 = sum_9;
+    return _e271;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -7807,13 +7801,13 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
 
 float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
 {
+    bool local_181 = (bool)0;
     bool local_182 = (bool)0;
-    bool local_183 = (bool)0;
-    float2 u_8 = (0.0).xx;
+    float2 u_6 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_10 = 0.0;
-    uint i_32 = 0u;
-    float2 e_11 = (float2)0;
+    uint i_33 = 0u;
+    float2 e_8 = (float2)0;
     float r_max_1 = (float)0;
 
     float3 rel = (x_25 - a_24.c);
@@ -7835,58 +7829,58 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
             const bool _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_183 = _e44;
+            local_182 = _e44;
         } else {
-            local_183 = true;
+            local_182 = true;
         }
-        bool _e46 = local_183;
-        local_182 = _e46;
+        bool _e46 = local_182;
+        local_181 = _e46;
     } else {
-        local_182 = false;
+        local_181 = false;
     }
-    bool inside_2 = local_182;
+    bool inside_2 = local_181;
     const AirlightAbove _e54 = airlight_above(z_20, (0.0).xx);
     above_3 = _e54;
     if (!(inside_2)) {
-        u_8 = float2((-(fx) / rf), (-(fy_1) / rf));
-        float2 _e63 = u_8;
+        u_6 = float2((-(fx) / rf), (-(fy_1) / rf));
+        float2 _e63 = u_6;
         const AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     float k_13 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-    bool loop_init_39 = true;
+    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+    bool loop_init_40 = true;
     while(true) {
-        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_39) {
-            uint _e127 = i_32;
-            i_32 = (_e127 + 1u);
+        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_40) {
+            uint _e127 = i_33;
+            i_33 = (_e127 + 1u);
         }
-        loop_init_39 = false;
-        uint _e73 = i_32;
+        loop_init_40 = false;
+        uint _e73 = i_33;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_32;
+            uint _e76 = i_33;
             const float3 _e77 = airlight_azimuths(inside_2, _e76);
-            float _e80 = u_8.x;
-            float _e84 = u_8.y;
-            float _e89 = u_8.y;
-            float _e93 = u_8.x;
-            e_11 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            float _e80 = u_6.x;
+            float _e84 = u_6.y;
+            float _e89 = u_6.y;
+            float _e93 = u_6.x;
+            e_8 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_2) {
-                e_11 = _e77.xy;
+                e_8 = _e77.xy;
                 float b_24 = ((fx * _e77.x) + (fy_1 * _e77.y));
                 float root_4 = sqrt(((b_24 * b_24) - k_13));
                 r_max_1 = ((b_24 > 0.0) ? (-(k_13) / (b_24 + root_4)) : (root_4 - b_24));
             }
             float _e118 = sum_10;
             AirlightAbove _e120 = above_3;
-            float2 _e121 = e_11;
+            float2 _e121 = e_8;
             float _e122 = r_max_1;
             const float _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
@@ -7898,11 +7892,11 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
 
 float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
 {
-    float2 q_10 = (float2)0;
-    bool local_184 = (bool)0;
+    float2 q_8 = (float2)0;
+    bool local_183 = (bool)0;
     float sum_11 = 0.0;
-    uint i_33 = 0u;
-    uint j_8 = (uint)0;
+    uint i_34 = 0u;
+    uint j_9 = (uint)0;
 
     float3 rel_1 = (x_26 - a_25.c);
     float z_21 = dot(rel_1, a_25.n);
@@ -7922,100 +7916,87 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
-    q_10 = (_e76.xy + foot);
+    q_8 = (_e76.xy + foot);
     if ((_e76.z > 0.0)) {
         const bool _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_184 = _e89;
+        local_183 = _e89;
     } else {
-        local_184 = false;
+        local_183 = false;
     }
-    bool _e91 = local_184;
+    bool _e91 = local_183;
     if (_e91) {
-        q_10 = foot;
+        q_8 = foot;
     }
-    float2 _e92 = q_10;
+    float2 _e92 = q_8;
     const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-    bool loop_init_40 = true;
+    const float _e99 = airlight_narrowed(s_42, _e94.rho0_);
+    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+    bool loop_init_41 = true;
     while(true) {
-        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_40) {
-            uint _e205 = i_33;
-            i_33 = (_e205 + 1u);
+        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_41) {
+            uint _e145 = i_34;
+            i_34 = (_e145 + 1u);
         }
-        loop_init_40 = false;
-        uint _e102 = i_33;
-        if ((_e102 < 4u)) {
+        loop_init_41 = false;
+        uint _e104 = i_34;
+        if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e105 = i_33;
-            float2 _e107 = q_10;
-            float2 ca = (corners[min(uint(_e105), 4u)] - _e107);
-            uint _e109 = i_33;
-            float2 _e113 = q_10;
-            float2 cb_1 = (corners[min(uint((_e109 + 1u)), 4u)] - _e113);
-            float area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
-            if (!((area > thin))) {
+            uint _e107 = i_34;
+            float2 _e109 = q_8;
+            float2 ca = (corners[min(uint(_e107), 4u)] - _e109);
+            uint _e111 = i_34;
+            float2 _e115 = q_8;
+            float2 cb_1 = (corners[min(uint((_e111 + 1u)), 4u)] - _e115);
+            if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
-            float2 e_18 = (cb_1 - ca);
-            float el = sqrt(((e_18.x * e_18.x) + (e_18.y * e_18.y)));
-            float h_11 = (area / el);
-            float2 m_13 = float2((e_18.y / el), (-(e_18.x) / el));
-            float2 t_13 = (e_18 / (el).xx);
-            const float _e143 = airlight_narrowed(s_42, _e94.rho0_);
-            float reach_4 = sqrt(((h_11 * h_11) + (_e143 * _e143)));
-            const float _e149 = airlight_atan2_(dot(ca, t_13), reach_4);
-            const float _e151 = airlight_atan2_(dot(cb_1, t_13), reach_4);
-            j_8 = 0u;
-            uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-            bool loop_init_41 = true;
+            const AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
+            j_9 = 0u;
+            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+            bool loop_init_42 = true;
             while(true) {
-                if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-                if (!loop_init_41) {
-                    uint _e202 = j_8;
-                    j_8 = (_e202 + 1u);
+                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                if (!loop_init_42) {
+                    uint _e142 = j_9;
+                    j_9 = (_e142 + 1u);
                 }
-                loop_init_41 = false;
-                uint _e154 = j_8;
-                if ((_e154 < 12u)) {
+                loop_init_42 = false;
+                uint _e129 = j_9;
+                if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = j_8;
-                    const float2 _e158 = airlight_triangle_rule(_e157);
-                    const float2 _e170 = airlight_cos_sin_half_turn((((0.5 * (_e149 + _e151)) + ((0.5 * (_e151 - _e149)) * _e158.x)) + 1.5707964));
-                    float sigma_13 = ((reach_4 * -(_e170.x)) / _e170.y);
-                    float r2_4 = ((h_11 * h_11) + (sigma_13 * sigma_13));
-                    float r_15 = sqrt(r2_4);
-                    float2 dir_3 = (((h_11 * m_13) + (sigma_13 * t_13)) / (r_15).xx);
-                    float _e185 = sum_11;
-                    const float _e198 = airlight_flat_radial(s_42, a_25, _e94, dir_3, r_15);
-                    sum_11 = (_e185 + ((((((_e158.y * 0.5) * (_e151 - _e149)) * h_11) * reach_4) / ((_e170.y * _e170.y) * r2_4)) * _e198));
+                    uint _e132 = j_9;
+                    const float4 _e133 = airlight_edge_node(_e126, _e132);
+                    float _e134 = sum_11;
+                    const float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
+                    sum_11 = (_e134 + (_e133.w * _e138));
                 }
             }
         }
     }
-    float _e207 = sum_11;
-    return _e207;
+    float _e147 = sum_11;
+    return _e147;
 }
 
 float3 airlight_cap_row(AirlightScene s_43, AirlightCap cap, float graded_4, float node_2, float weight_1)
 {
     const float2 _e5 = airlight_graded_node(graded_4, node_2);
-    float w_11 = (weight_1 * _e5.y);
+    float w_10 = (weight_1 * _e5.y);
     const float2 _e9 = airlight_cos_sin_half_turn(_e5.x);
     float sb_2 = (cap.sin_a * _e9.y);
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0.0);
     const float _e28 = airlight_emitted(s_43, _e9.x);
-    float factor = (((((((w_11 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
+    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
     return float3(factor, cb_2, sb_2);
 }
 
@@ -8029,7 +8010,7 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
-    uint i_34 = 0u;
+    uint i_35 = 0u;
     float at_2 = (float)0;
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
@@ -8040,38 +8021,38 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
     const float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_9 = _e15.y;
     float c_20 = (0.5 * _e15.x);
-    float hw_5 = (0.5 * _e15.x);
-    const float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    float hw_6 = (0.5 * _e15.x);
+    const float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251 * hw_6)), (0.1894506 * hw_6));
     rows[0] = _e63;
-    const float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251 * hw_5)), (0.1894506 * hw_5));
+    const float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251 * hw_6)), (0.1894506 * hw_6));
     rows[1] = _e70;
-    const float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354 * hw_6)), (0.18260342 * hw_6));
     rows[2] = _e77;
-    const float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354 * hw_5)), (0.18260342 * hw_5));
+    const float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354 * hw_6)), (0.18260342 * hw_6));
     rows[3] = _e84;
-    const float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678 * hw_6)), (0.16915652 * hw_6));
     rows[4] = _e91;
-    const float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678 * hw_5)), (0.16915652 * hw_5));
+    const float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678 * hw_6)), (0.16915652 * hw_6));
     rows[5] = _e98;
-    const float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623 * hw_6)), (0.14959599 * hw_6));
     rows[6] = _e105;
-    const float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623 * hw_5)), (0.14959599 * hw_5));
+    const float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623 * hw_6)), (0.14959599 * hw_6));
     rows[7] = _e112;
-    const float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044 * hw_6)), (0.12462897 * hw_6));
     rows[8] = _e119;
-    const float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044 * hw_5)), (0.12462897 * hw_5));
+    const float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044 * hw_6)), (0.12462897 * hw_6));
     rows[9] = _e126;
-    const float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312 * hw_6)), (0.09515851 * hw_6));
     rows[10] = _e133;
-    const float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312 * hw_5)), (0.09515851 * hw_5));
+    const float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312 * hw_6)), (0.09515851 * hw_6));
     rows[11] = _e140;
-    const float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575 * hw_6)), (0.062253524 * hw_6));
     rows[12] = _e147;
-    const float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575 * hw_5)), (0.062253524 * hw_5));
+    const float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575 * hw_6)), (0.062253524 * hw_6));
     rows[13] = _e154;
-    const float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009 * hw_6)), (0.02715246 * hw_6));
     rows[14] = _e161;
-    const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009 * hw_5)), (0.02715246 * hw_5));
+    const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009 * hw_6)), (0.02715246 * hw_6));
     rows[15] = _e168;
     if (a_26.isotropic) {
         const float _e174 = airlight_area_phase(s_44, 0.0);
@@ -8127,23 +8108,23 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-    bool loop_init_42 = true;
+    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+    bool loop_init_43 = true;
     while(true) {
-        if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_42) {
-            uint _e550 = i_34;
-            i_34 = (_e550 + 1u);
+        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_43) {
+            uint _e550 = i_35;
+            i_35 = (_e550 + 1u);
         }
-        loop_init_42 = false;
-        uint _e275 = i_34;
+        loop_init_43 = false;
+        uint _e275 = i_35;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_34;
+            uint _e279 = i_35;
             const float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -8268,17 +8249,17 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_35 = 0u;
+    uint i_36 = 0u;
     float big_b_1 = (float)0;
     float wpsi = (float)0;
     float start_5 = (float)0;
     float around = (float)0;
 
-    float3 p_8 = (sign_2 * a_27.d);
-    const float3 _e8 = airlight_basis_e1_(p_8);
-    float3 v_12 = cross(p_8, _e8);
+    float3 p_7 = (sign_2 * a_27.d);
+    const float3 _e8 = airlight_basis_e1_(p_7);
+    float3 v_10 = cross(p_7, _e8);
     float au = dot(cap_3.a, _e8);
-    float av = dot(cap_3.a, v_12);
+    float av = dot(cap_3.a, v_10);
     bool inside_3 = (cos_p_1 > cap_3.cos_a);
     float sin_p = sqrt(((au * au) + (av * av)));
     if ((sin_p > 0.0)) {
@@ -8286,23 +8267,23 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
         const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-    bool loop_init_43 = true;
+    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_43) {
-            uint _e290 = i_35;
-            i_35 = (_e290 + 1u);
+        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
+            uint _e290 = i_36;
+            i_36 = (_e290 + 1u);
         }
-        loop_init_43 = false;
-        uint _e47 = i_35;
+        loop_init_44 = false;
+        uint _e47 = i_36;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_35;
+            uint _e50 = i_36;
             const float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -8328,88 +8309,88 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
             const float2 _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
             float graded_10 = _e98.x;
             float c_21 = (0.5 * _e98.y);
-            float hw_6 = (0.5 * _e98.y);
+            float hw_7 = (0.5 * _e98.y);
             around = 0.0;
             float _e108 = around;
             float _e111 = big_b_1;
             float _e112 = start_5;
-            const float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251 * hw_6)));
-            around = (_e108 + ((0.1894506 * hw_6) * _e116));
+            const float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251 * hw_7)));
+            around = (_e108 + ((0.1894506 * hw_7) * _e116));
             float _e119 = around;
             float _e122 = big_b_1;
             float _e123 = start_5;
-            const float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251 * hw_6)));
-            around = (_e119 + ((0.1894506 * hw_6) * _e127));
+            const float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251 * hw_7)));
+            around = (_e119 + ((0.1894506 * hw_7) * _e127));
             float _e130 = around;
             float _e133 = big_b_1;
             float _e134 = start_5;
-            const float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354 * hw_6)));
-            around = (_e130 + ((0.18260342 * hw_6) * _e138));
+            const float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354 * hw_7)));
+            around = (_e130 + ((0.18260342 * hw_7) * _e138));
             float _e141 = around;
             float _e144 = big_b_1;
             float _e145 = start_5;
-            const float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354 * hw_6)));
-            around = (_e141 + ((0.18260342 * hw_6) * _e149));
+            const float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354 * hw_7)));
+            around = (_e141 + ((0.18260342 * hw_7) * _e149));
             float _e152 = around;
             float _e155 = big_b_1;
             float _e156 = start_5;
-            const float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678 * hw_6)));
-            around = (_e152 + ((0.16915652 * hw_6) * _e160));
+            const float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678 * hw_7)));
+            around = (_e152 + ((0.16915652 * hw_7) * _e160));
             float _e163 = around;
             float _e166 = big_b_1;
             float _e167 = start_5;
-            const float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678 * hw_6)));
-            around = (_e163 + ((0.16915652 * hw_6) * _e171));
+            const float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678 * hw_7)));
+            around = (_e163 + ((0.16915652 * hw_7) * _e171));
             float _e174 = around;
             float _e177 = big_b_1;
             float _e178 = start_5;
-            const float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623 * hw_6)));
-            around = (_e174 + ((0.14959599 * hw_6) * _e182));
+            const float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623 * hw_7)));
+            around = (_e174 + ((0.14959599 * hw_7) * _e182));
             float _e185 = around;
             float _e188 = big_b_1;
             float _e189 = start_5;
-            const float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623 * hw_6)));
-            around = (_e185 + ((0.14959599 * hw_6) * _e193));
+            const float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623 * hw_7)));
+            around = (_e185 + ((0.14959599 * hw_7) * _e193));
             float _e196 = around;
             float _e199 = big_b_1;
             float _e200 = start_5;
-            const float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044 * hw_6)));
-            around = (_e196 + ((0.12462897 * hw_6) * _e204));
+            const float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044 * hw_7)));
+            around = (_e196 + ((0.12462897 * hw_7) * _e204));
             float _e207 = around;
             float _e210 = big_b_1;
             float _e211 = start_5;
-            const float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044 * hw_6)));
-            around = (_e207 + ((0.12462897 * hw_6) * _e215));
+            const float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044 * hw_7)));
+            around = (_e207 + ((0.12462897 * hw_7) * _e215));
             float _e218 = around;
             float _e221 = big_b_1;
             float _e222 = start_5;
-            const float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312 * hw_6)));
-            around = (_e218 + ((0.09515851 * hw_6) * _e226));
+            const float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312 * hw_7)));
+            around = (_e218 + ((0.09515851 * hw_7) * _e226));
             float _e229 = around;
             float _e232 = big_b_1;
             float _e233 = start_5;
-            const float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312 * hw_6)));
-            around = (_e229 + ((0.09515851 * hw_6) * _e237));
+            const float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312 * hw_7)));
+            around = (_e229 + ((0.09515851 * hw_7) * _e237));
             float _e240 = around;
             float _e243 = big_b_1;
             float _e244 = start_5;
-            const float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575 * hw_6)));
-            around = (_e240 + ((0.062253524 * hw_6) * _e248));
+            const float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575 * hw_7)));
+            around = (_e240 + ((0.062253524 * hw_7) * _e248));
             float _e251 = around;
             float _e254 = big_b_1;
             float _e255 = start_5;
-            const float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575 * hw_6)));
-            around = (_e251 + ((0.062253524 * hw_6) * _e259));
+            const float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575 * hw_7)));
+            around = (_e251 + ((0.062253524 * hw_7) * _e259));
             float _e262 = around;
             float _e265 = big_b_1;
             float _e266 = start_5;
-            const float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009 * hw_6)));
-            around = (_e262 + ((0.02715246 * hw_6) * _e270));
+            const float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009 * hw_7)));
+            around = (_e262 + ((0.02715246 * hw_7) * _e270));
             float _e273 = around;
             float _e276 = big_b_1;
             float _e277 = start_5;
-            const float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009 * hw_6)));
-            around = (_e273 + ((0.02715246 * hw_6) * _e281));
+            const float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009 * hw_7)));
+            around = (_e273 + ((0.02715246 * hw_7) * _e281));
             float _e284 = sum_13;
             float _e285 = wpsi;
             float _e286 = around;
@@ -8435,72 +8416,72 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_9 = 0u;
+    uint j_10 = 0u;
+    bool local_184 = (bool)0;
     bool local_185 = (bool)0;
     bool local_186 = (bool)0;
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
-    bool local_189 = (bool)0;
 
-    float3 v_13 = (a_28.c - x_27);
-    const float _e5 = airlight_safe_length(v_13);
+    float3 v_11 = (a_28.c - x_27);
+    const float _e5 = airlight_safe_length(v_11);
     if (!((_e5 > a_28.radius))) {
         return 0.0;
     }
     float sin_a_2 = (a_28.radius / _e5);
-    AirlightCap cap_4 = ConstructAirlightCap((v_13 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-    bool loop_init_44 = true;
+    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-        if (!loop_init_44) {
-            uint _e92 = j_9;
-            j_9 = (_e92 + 1u);
+        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
+            uint _e92 = j_10;
+            j_10 = (_e92 + 1u);
         }
-        loop_init_44 = false;
-        uint _e32 = j_9;
+        loop_init_45 = false;
+        uint _e32 = j_10;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_9;
+            uint _e39 = j_10;
             float2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
             float c_22 = dot(cap_4.a, (lobe_5.x * a_28.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_185 = (lobe_5.y > 0.0);
+                local_184 = (lobe_5.y > 0.0);
+            } else {
+                local_184 = false;
+            }
+            bool _e57 = local_184;
+            if (_e57) {
+                local_185 = (lobe_5.y < (_e23 + _e23));
             } else {
                 local_185 = false;
             }
-            bool _e57 = local_185;
-            if (_e57) {
-                local_186 = (lobe_5.y < (_e23 + _e23));
-            } else {
-                local_186 = false;
-            }
-            bool _e64 = local_186;
+            bool _e64 = local_185;
             if (_e64) {
                 if (!((c_22 > cap_4.cos_a))) {
                     if ((c_22 > -(cap_4.cos_a))) {
                         const float _e77 = airlight_acos(c_22);
-                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_189 = false;
+                        local_188 = false;
                     }
-                    bool _e84 = local_189;
-                    local_188 = _e84;
+                    bool _e84 = local_188;
+                    local_187 = _e84;
                 } else {
-                    local_188 = true;
+                    local_187 = true;
                 }
-                bool _e86 = local_188;
-                local_187 = _e86;
+                bool _e86 = local_187;
+                local_186 = _e86;
             } else {
-                local_187 = false;
+                local_186 = false;
             }
-            bool _e88 = local_187;
+            bool _e88 = local_186;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -8542,9 +8523,9 @@ float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
     float along = ((a_30.h_eff * _e3.y) / _e3.x);
-    float t_14 = (a_30.x_h + along);
+    float t_13 = (a_30.x_h + along);
     float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_13 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -8554,8 +8535,8 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     uint step_2 = 0u;
     float k_8 = (float)0;
     float gauss_1 = (float)0;
-    uint j_10 = (uint)0;
-    bool local_190 = (bool)0;
+    uint j_11 = (uint)0;
+    bool local_189 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_50);
     if ((_e1.outcome == 1u)) {
@@ -8567,16 +8548,16 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+    bool loop_init_46 = true;
     while(true) {
-        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
+        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+        if (!loop_init_46) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_45 = false;
+        loop_init_46 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -8588,37 +8569,37 @@ AirlightResult airlight_area_light(AirlightScene s_50)
             float c_23 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_7 = (0.5 * (_e34 - _e36));
+            float hw_8 = (0.5 * (_e34 - _e36));
             k_8 = 0.0;
             gauss_1 = 0.0;
-            j_10 = 0u;
-            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-            bool loop_init_46 = true;
+            j_11 = 0u;
+            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+            bool loop_init_47 = true;
             while(true) {
-                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_46) {
-                    uint _e82 = j_10;
-                    j_10 = (_e82 + 1u);
+                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_47) {
+                    uint _e82 = j_11;
+                    j_11 = (_e82 + 1u);
                 }
-                loop_init_46 = false;
-                uint _e46 = j_10;
+                loop_init_47 = false;
+                uint _e46 = j_11;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_10;
+                    uint _e49 = j_11;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_10;
+                    uint _e59 = j_11;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_10;
-                        local_190 = (_e66 < 14u);
+                        uint _e66 = j_11;
+                        local_189 = (_e66 < 14u);
                     } else {
-                        local_190 = false;
+                        local_189 = false;
                     }
-                    bool _e70 = local_190;
-                    float x_37 = (_e70 ? (c_23 - (hw_7 * node_4.x)) : (c_23 + (hw_7 * node_4.x)));
+                    bool _e70 = local_189;
+                    float x_37 = (_e70 ? (c_23 - (hw_8 * node_4.x)) : (c_23 + (hw_8 * node_4.x)));
                     const float _e72 = airlight_area_node(s_50, _e1, x_37);
                     float _e73 = k_8;
                     k_8 = (_e73 + (node_4.y * _e72));
@@ -8629,7 +8610,7 @@ AirlightResult airlight_area_light(AirlightScene s_50)
             AirlightAdaptive _e84 = st_1;
             float _e85 = k_8;
             float _e87 = gauss_1;
-            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_7), (_e87 * hw_7), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_8), (_e87 * hw_8), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -8652,22 +8633,22 @@ AirlightResult airlight_area_light(AirlightScene s_50)
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 {
+    bool local_190 = (bool)0;
     bool local_191 = (bool)0;
-    bool local_192 = (bool)0;
 
     const bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_191 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_190 = true;
+    }
+    bool _e10 = local_190;
+    if (!(_e10)) {
+        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_191 = true;
     }
-    bool _e10 = local_191;
-    if (!(_e10)) {
-        local_192 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_192 = true;
-    }
-    bool _e18 = local_192;
+    bool _e18 = local_191;
     if (_e18) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
@@ -8679,15 +8660,15 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_193 = (bool)0;
+    bool local_192 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_193 = true;
+        local_192 = true;
     }
-    bool _e11 = local_193;
+    bool _e11 = local_192;
     if (_e11) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_13;
@@ -8699,27 +8680,27 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
 AirlightResult airlight_node_integral(AirlightNode n_3)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_194 = (bool)0;
+    bool local_193 = (bool)0;
     AirlightCanonical g_29 = (AirlightCanonical)0;
 
-    AirlightScene p_9 = n_3.scene;
-    const bool _e7 = airlight_vec_finite(p_9.light_position);
+    AirlightScene p_8 = n_3.scene;
+    const bool _e7 = airlight_vec_finite(p_8.light_position);
     if (_e7) {
-        const bool _e11 = airlight_vec_finite(p_9.dir);
-        local_194 = _e11;
+        const bool _e11 = airlight_vec_finite(p_8.dir);
+        local_193 = _e11;
     } else {
-        local_194 = false;
+        local_193 = false;
     }
-    bool _e13 = local_194;
+    bool _e13 = local_193;
     if (_e13) {
         g_29 = n_3.canonical;
         if (!(n_3.exact)) {
-            const AirlightCanonical _e18 = airlight_canonical(p_9);
-            const AirlightCanonical _e19 = airlight_refined(p_9, _e18);
+            const AirlightCanonical _e18 = airlight_canonical(p_8);
+            const AirlightCanonical _e19 = airlight_refined(p_8, _e18);
             g_29 = _e19;
         }
         AirlightCanonical _e20 = g_29;
-        const AirlightResult _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        const AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -8728,32 +8709,32 @@ AirlightResult airlight_node_integral(AirlightNode n_3)
     return airlightresult_15;
 }
 
-AirlightResult airlight_point_integral(AirlightScene p_2)
+AirlightResult airlight_point_integral(AirlightScene p_1)
 {
     const AirlightCanonical _e1 = airlight_no_canonical();
-    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_2, 1.0, _e1, false));
+    const AirlightResult _e5 = airlight_node_integral(ConstructAirlightNode(p_1, 1.0, _e1, false));
     const AirlightResult airlightresult_16 = _e5;
     return airlightresult_16;
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 {
+    bool local_194 = (bool)0;
     bool local_195 = (bool)0;
-    bool local_196 = (bool)0;
 
     const bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_195 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_194 = true;
+    }
+    bool _e10 = local_194;
+    if (!(_e10)) {
+        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
-    bool _e10 = local_195;
-    if (!(_e10)) {
-        local_196 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_196 = true;
-    }
-    bool _e18 = local_196;
+    bool _e18 = local_195;
     if (_e18) {
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
@@ -8765,22 +8746,22 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_53)
 {
+    bool local_196 = (bool)0;
     bool local_197 = (bool)0;
-    bool local_198 = (bool)0;
 
     const bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_197 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_196 = true;
+    }
+    bool _e10 = local_196;
+    if (!(_e10)) {
+        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_197 = true;
     }
-    bool _e10 = local_197;
-    if (!(_e10)) {
-        local_198 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_198 = true;
-    }
-    bool _e18 = local_198;
+    bool _e18 = local_197;
     if (_e18) {
         const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_19;
@@ -8812,10 +8793,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     uint step_3 = 0u;
     float k_9 = (float)0;
     float gauss_2 = (float)0;
-    uint j_11 = (uint)0;
-    bool local_199 = (bool)0;
+    uint j_12 = (uint)0;
+    bool local_198 = (bool)0;
     float f = (float)0;
-    bool local_200 = (bool)0;
+    bool local_199 = (bool)0;
 
     const bool _e1 = airlight_valid(s_54);
     if (!(_e1)) {
@@ -8839,16 +8820,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-    bool loop_init_47 = true;
+    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-        if (!loop_init_47) {
+        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_47 = false;
+        loop_init_48 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -8860,38 +8841,38 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
             float c_24 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_8 = (0.5 * (_e49 - _e51));
+            float hw_9 = (0.5 * (_e49 - _e51));
             k_9 = 0.0;
             gauss_2 = 0.0;
-            j_11 = 0u;
-            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-            bool loop_init_48 = true;
+            j_12 = 0u;
+            uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+            bool loop_init_49 = true;
             while(true) {
-                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_48) {
-                    uint _e121 = j_11;
-                    j_11 = (_e121 + 1u);
+                if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+                if (!loop_init_49) {
+                    uint _e121 = j_12;
+                    j_12 = (_e121 + 1u);
                 }
-                loop_init_48 = false;
-                uint _e61 = j_11;
+                loop_init_49 = false;
+                uint _e61 = j_12;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_11;
+                    uint _e64 = j_12;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_11;
+                    uint _e74 = j_12;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_11;
-                        local_199 = (_e81 < 6u);
+                        uint _e81 = j_12;
+                        local_198 = (_e81 < 6u);
                     } else {
-                        local_199 = false;
+                        local_198 = false;
                     }
-                    bool _e85 = local_199;
-                    float w_12 = (_e85 ? (c_24 - (hw_8 * node_5.x)) : (c_24 + (hw_8 * node_5.x)));
-                    const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_12);
+                    bool _e85 = local_198;
+                    float w_11 = (_e85 ? (c_24 - (hw_9 * node_5.x)) : (c_24 + (hw_9 * node_5.x)));
+                    const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         const AirlightResult _e93 = airlight_node_integral(_e87);
@@ -8900,11 +8881,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
                             return airlightresult_27;
                         }
                         if ((s_54.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_200 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_200 = false;
+                            local_199 = false;
                         }
-                        bool _e106 = local_200;
+                        bool _e106 = local_199;
                         if (_e106) {
                             const AirlightResult airlightresult_28 = _e93;
                             return airlightresult_28;
@@ -8922,7 +8903,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
             AirlightAdaptive _e123 = st_2;
             float _e124 = k_9;
             float _e126 = gauss_2;
-            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_8), (_e126 * hw_8), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_9), (_e126 * hw_9), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

@@ -219,6 +219,14 @@ struct AirlightFlatLobe {
     on_emitter: bool,
 }
 
+struct AirlightEdgeRule {
+    h: f32,
+    t: vec2<f32>,
+    reach: f32,
+    first: f32,
+    last: f32,
+}
+
 struct AirlightCap {
     a: vec3<f32>,
     dc: f32,
@@ -442,11 +450,11 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_5 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_5, (z_1.y / (t_5 + t_5)));
+        let t_4 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_4, (z_1.y / (t_4 + t_4)));
     }
-    let t_6 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_6 + t_6)), select(-(t_6), t_6, (z_1.y >= 0f)));
+    let t_5 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_5 + t_5)), select(-(t_5), t_5, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -974,11 +982,11 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             return _e34;
         }
         case 2u: {
-            let width_1 = (p0_2 - p1_2);
-            if (width_1 <= AIRLIGHT_FLT_EPS) {
-                return select(0f, 1f, (c >= (p1_2 + (width_1 * 0.5f))));
+            let width_2 = (p0_2 - p1_2);
+            if (width_2 <= AIRLIGHT_FLT_EPS) {
+                return select(0f, 1f, (c >= (p1_2 + (width_2 * 0.5f))));
             }
-            let x_30 = clamp(((c - p1_2) / width_1), 0f, 1f);
+            let x_30 = clamp(((c - p1_2) / width_2), 0f, 1f);
             return ((x_30 * x_30) * (3f - (2f * x_30)));
         }
         default: {
@@ -1787,35 +1795,35 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
         return 1f;
     }
     let measured = sqrt((last / before));
-    let q_11 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_9 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if (q_11 < 1f) {
+    if (q_9 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_11) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_9) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_11) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_9) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_11) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_9) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_11) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_9) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_11) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_9) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_11) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_9) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_11) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_9) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_11) + abs(m_1[7])), false);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_9) + abs(m_1[7])), false);
         let _e133 = aliasing;
-        return min(((_e133 + (q_11 * truncation)) / m_1[0]), 1f);
+        return min(((_e133 + (q_9 * truncation)) / m_1[0]), 1f);
     }
     let _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -1932,8 +1940,8 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e40 = r_2;
             let _e41 = i_6;
             let _e42 = airlight_node(_e8, _e41);
-            let v_10 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_10);
+            let v_8 = (_e39 + (_e40 * _e42));
+            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_8);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_6;
@@ -2462,8 +2470,8 @@ fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, hal
 fn airlight_graded_split(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
     var local_20: bool;
 
-    let t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    let d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
+    let t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    let d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
     if (d_2 > 0f) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25f));
     } else {
@@ -2648,13 +2656,13 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                         continue;
                     }
                     let _e212 = airlight_graded_split(wa, wb, _e10);
-                    let mid_1 = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
+                    let mid = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
                     a_10 = wa;
-                    b_9 = mid_1;
+                    b_9 = mid;
                     let _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid_1;
+                    next_a = mid;
                     next_b = wb;
                     break;
                 }
@@ -2752,8 +2760,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_4 = (v_s + inv_h);
     let r_11 = ((1f + (w_4 * w_4)) / (1f + (v_s * v_s)));
-    let e_12 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_12 * inv_h);
+    let e_9 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_9 * inv_h);
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_11: f32, j_1: f32) -> f32 {
@@ -2795,9 +2803,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     if (s_11.light_kind == AIRLIGHT_LIGHT_SPOT) {
         return vec2<f32>(0f, 0f);
     }
-    let h_4 = g_13.h;
-    let u0_ = ((g_13.t_lo - g_13.x_h) / h_4);
-    let u1_ = ((g_13.t_hi - g_13.x_h) / h_4);
+    let h_3 = g_13.h;
+    let u0_ = ((g_13.t_lo - g_13.x_h) / h_3);
+    let u1_ = ((g_13.t_hi - g_13.x_h) / h_3);
     if !(g_13.t_hi_infinite) {
         let _e21 = airlight_is_finite(u1_);
         local_26 = _e21;
@@ -2805,7 +2813,7 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
         local_26 = false;
     }
     let u1_finite = local_26;
-    let big_h_7 = (s_11.sigma_t * h_4);
+    let big_h_7 = (s_11.sigma_t * h_3);
     let _e26 = airlight_angle_y(u0_);
     if u1_finite {
         let _e29 = airlight_angle_y(u1_);
@@ -2833,7 +2841,7 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
         if u1_finite {
             let _e65 = airlight_atan2_upper(1f, u1_);
             psi1_1 = _e65;
-            wy = ((g_13.t_hi - g_13.t_lo) / h_4);
+            wy = ((g_13.t_hi - g_13.t_lo) / h_3);
             wx = (1f + (u0_ * u1_));
         }
     }
@@ -2941,15 +2949,15 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let below_1 = (lower <= 1.5707964f);
             let _e248 = psi1_1;
             let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
-            let cs_3 = _e254.y;
+            let cs_2 = _e254.y;
             let sn = select(_e254.x, -(_e254.x), below_1);
             let near_pole = (1f + _e254.x);
-            let far_pole = ((cs_3 * cs_3) / near_pole);
+            let far_pole = ((cs_2 * cs_2) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_10 = select((near_pole / cs_3), (cs_3 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_3 > 0f));
-            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
+            let y_10 = select((near_pole / cs_2), (cs_2 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_2 > 0f));
+            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
             let gw = (weight_3 * f_2);
@@ -2998,11 +3006,11 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
     }
     if (s_11.sigma_t > 0f) {
         let _e365 = airlight_hypot_one(u0_);
-        x_12 = (s_11.sigma_t * (h_4 * _e365));
+        x_12 = (s_11.sigma_t * (h_3 * _e365));
     }
     let _e370 = x_12;
     let _e371 = value_1;
-    let _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_4, _e370, ((_e371 * hw_1) * 0.5f));
+    let _e375 = airlight_weighted(s_11.sigma_s, s_11.intensity, h_3, _e370, ((_e371 * hw_1) * 0.5f));
     return vec2<f32>(1f, _e375);
 }
 
@@ -3037,12 +3045,12 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
         sb = -1f;
     }
     let _e47 = sb;
-    let q_12 = (-0.5f * (b_18 + (_e47 * sqrt(disc_1))));
-    if (q_12 != 0f) {
-        r1_ = (c_10 / q_12);
+    let q_10 = (-0.5f * (b_18 + (_e47 * sqrt(disc_1))));
+    if (q_10 != 0f) {
+        r1_ = (c_10 / q_10);
     }
     if (a_37 != 0f) {
-        r2_2 = (q_12 / a_37);
+        r2_2 = (q_10 / a_37);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3164,10 +3172,10 @@ fn airlight_half(s_12: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, ha
         k_out = s_12.light_param_b;
         let _e25 = k_in;
         let _e26 = k_out;
-        let width_2 = (_e25 - _e26);
-        if (width_2 <= AIRLIGHT_FLT_EPS) {
+        let width_3 = (_e25 - _e26);
+        if (width_3 <= AIRLIGHT_FLT_EPS) {
             let _e30 = k_out;
-            k_in = (_e30 + (width_2 * 0.5f));
+            k_in = (_e30 + (width_3 * 0.5f));
             let _e34 = k_in;
             k_out = _e34;
         }
@@ -3227,13 +3235,13 @@ fn airlight_half(s_12: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, ha
                         let _e94 = cuts[(_e90 + 1u)];
                         if (_e89 > _e94) {
                             let _e96 = j_2;
-                            let t_8 = cuts[_e96];
+                            let t_7 = cuts[_e96];
                             let _e99 = j_2;
                             let _e101 = j_2;
                             let _e105 = cuts[(_e101 + 1u)];
                             cuts[_e99] = _e105;
                             let _e106 = j_2;
-                            cuts[(_e106 + 1u)] = t_8;
+                            cuts[(_e106 + 1u)] = t_7;
                         }
                     }
                     continuing {
@@ -3434,11 +3442,11 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     var local_44: bool;
     var x_13: f32 = 0f;
 
-    let h_5 = g_18.h;
-    let a_s = ((g_18.x_h - g_18.t_lo) / h_5);
+    let h_4 = g_18.h;
+    let a_s = ((g_18.x_h - g_18.t_lo) / h_4);
     let _e8 = airlight_hypot_one(a_s);
     let _e9 = airlight_bounded(a_s);
-    let u_e = ((g_18.t_hi - g_18.x_h) / h_5);
+    let u_e = ((g_18.t_hi - g_18.x_h) / h_4);
     if !(g_18.t_hi_infinite) {
         let _e24 = airlight_is_finite(u_e);
         local_43 = _e24;
@@ -3449,7 +3457,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     if _e26 {
         let _e27 = airlight_hypot_one(u_e);
         let v_end = (u_e + _e27);
-        let dv_end = (((g_18.t_hi - g_18.t_lo) / h_5) * ((_e9 + v_end) / (_e8 + _e27)));
+        let dv_end = (((g_18.t_hi - g_18.t_lo) / h_4) * ((_e9 + v_end) / (_e8 + _e27)));
         let _e37 = airlight_is_finite(v_end);
         if _e37 {
             let _e40 = airlight_is_finite(dv_end);
@@ -3483,7 +3491,7 @@ fn airlight_whole_line(s_14: AirlightScene, g_18: AirlightCanonical, big_h_3: f3
     let _e66 = x_13;
     let _e67 = airlight_moment_zero_weighted(half_17, _e66);
     let _e73 = airlight_integrand(s_14, g_18, -1f, 0f);
-    let _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_5, _e67.y, (_e73 * _e67.x));
+    let _e76 = airlight_weighted(s_14.sigma_s, s_14.intensity, h_4, _e67.y, (_e73 * _e67.x));
     return _e76;
 }
 
@@ -3512,7 +3520,7 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     if _e21 {
         return AirlightResult(0f, 0u);
     }
-    let h_6 = g_19.h;
+    let h_5 = g_19.h;
     let x_h = g_19.x_h;
     if (t0_ <= x_h) {
         if !(g_19.t_hi_infinite) {
@@ -3535,7 +3543,7 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
     }
     if !(inside_1) {
         let _e48 = gap_2;
-        local_49 = (h_6 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
+        local_49 = (h_5 <= ((_e48 * AIRLIGHT_FLT_EPS) * AIRLIGHT_FLT_EPS));
     } else {
         local_49 = false;
     }
@@ -3544,7 +3552,7 @@ fn airlight_limits(s_15: AirlightScene, g_19: AirlightCanonical) -> AirlightResu
         let _e56 = airlight_on_line(s_15, g_19);
         return AirlightResult(max(_e56, 0f), AIRLIGHT_STATUS_OK);
     }
-    if (h_6 == 0f) {
+    if (h_5 == 0f) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return AirlightResult(0f, 3u);
@@ -3654,9 +3662,9 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
     }
     let t0_1 = g_20.t_lo;
     let t1_1 = g_20.t_hi;
-    let h_7 = g_20.h;
+    let h_6 = g_20.h;
     let x_h_1 = g_20.x_h;
-    let big_h_8 = (s_18.sigma_t * h_7);
+    let big_h_8 = (s_18.sigma_t * h_6);
     let _e12 = airlight_isotropic_scene(s_18);
     if _e12 {
         local_59 = (t0_1 < x_h_1);
@@ -3688,7 +3696,7 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
     }
     let cut_1 = !(_e12);
     if (t0_1 < x_h_1) {
-        let a_s_1 = ((x_h_1 - t0_1) / h_7);
+        let a_s_1 = ((x_h_1 - t0_1) / h_6);
         t_end = x_h_1;
         if !(g_20.t_hi_infinite) {
             local_62 = (t1_1 < x_h_1);
@@ -3700,13 +3708,13 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
             t_end = t1_1;
         }
         let _e62 = t_end;
-        let a_e = ((x_h_1 - _e62) / h_7);
+        let a_e = ((x_h_1 - _e62) / h_6);
         let _e65 = airlight_hypot_one(a_s_1);
         let _e66 = airlight_hypot_one(a_e);
         let _e67 = airlight_bounded(a_s_1);
         let _e68 = airlight_bounded(a_e);
         let _e69 = t_end;
-        let dy_1 = (((((_e69 - t0_1) / h_7) * (1f + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
+        let dy_1 = (((((_e69 - t0_1) / h_6) * (1f + ((a_s_1 + a_e) / (_e65 + _e66)))) * _e67) * _e68);
         let _e82 = airlight_optical(big_h_8, dy_1, false);
         half_13 = AirlightHalf(false, _e82, _e67, _e68, dy_1, dy_1, false);
         if cut_1 {
@@ -3728,7 +3736,7 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
         let _e106 = half_13;
         let _e107 = airlight_half(s_18, g_20, -1f, _e106, _e12, (&f_max_7));
         let _e108 = total_3;
-        let _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, (big_h_8 * _e65), _e107);
+        let _e112 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, (big_h_8 * _e65), _e107);
         total_3 = (_e108 + _e112);
     }
     if !(g_20.t_hi_infinite) {
@@ -3746,11 +3754,11 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
     let _e126 = local_65;
     if _e126 {
         let t_start = max(t0_1, x_h_1);
-        let a_s_2 = ((t_start - x_h_1) / h_7);
+        let a_s_2 = ((t_start - x_h_1) / h_6);
         let _e130 = airlight_hypot_one(a_s_2);
         let _e131 = airlight_bounded(a_s_2);
         dy = _e131;
-        let a_e_1 = ((t1_1 - x_h_1) / h_7);
+        let a_e_1 = ((t1_1 - x_h_1) / h_6);
         if !(g_20.t_hi_infinite) {
             let _e145 = airlight_is_finite(a_e_1);
             local_66 = _e145;
@@ -3761,7 +3769,7 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
         if _e147 {
             let _e148 = airlight_bounded(a_e_1);
             let _e152 = airlight_hypot_one(a_e_1);
-            let dv_end_1 = (((t1_1 - t_start) / h_7) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
+            let dv_end_1 = (((t1_1 - t_start) / h_6) * (1f + ((a_s_2 + a_e_1) / (_e130 + _e152))));
             if (_e148 > 0f) {
                 let _e162 = airlight_is_finite(dv_end_1);
                 local_67 = _e162;
@@ -3824,7 +3832,7 @@ fn airlight_in_scatter_canonical(s_18: AirlightScene, g_20: AirlightCanonical) -
         let _e224 = half_14;
         let _e225 = airlight_half(s_18, g_20, 1f, _e224, _e12, (&f_max_7));
         let _e226 = total_3;
-        let _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_7, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
+        let _e234 = airlight_weighted(s_18.sigma_s, s_18.intensity, h_6, ((s_18.sigma_t * (t_start - t0_1)) + (big_h_8 * _e130)), _e225);
         total_3 = (_e226 + _e234);
     }
     let _e236 = total_3;
@@ -3877,8 +3885,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_9 = (v_3 / vec3(m_8));
-    return (u_9 / vec3(length(u_9)));
+    let u_7 = (v_3 / vec3(m_8));
+    return (u_7 / vec3(length(u_7)));
 }
 
 fn airlight_valid(s_19: AirlightScene) -> bool {
@@ -4383,9 +4391,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_13 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_13);
-    return vec2<f32>(_e4, select(0f, e_13, _e12));
+    let e_10 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_10);
+    return vec2<f32>(_e4, select(0f, e_10, _e12));
 }
 
 fn airlight_split_high(x_15: f32) -> f32 {
@@ -4398,9 +4406,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_14 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_14);
-    return vec2<f32>(_e4, select(0f, e_14, _e17));
+    let e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_11);
+    return vec2<f32>(_e4, select(0f, e_11, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4472,10 +4480,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         return _e92;
     }
     let _e93 = airlight_safe_length(dir_2);
-    let h_8 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_8);
+    let h_7 = (_e85 / _e93);
+    let _e95 = airlight_is_finite(h_7);
     if _e95 {
-        local_129 = (h_8 > 0f);
+        local_129 = (h_7 > 0f);
     } else {
         local_129 = false;
     }
@@ -4490,7 +4498,7 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_6);
     let n_4 = -(cross(_e113, _e114));
-    out_2.h = h_8;
+    out_2.h = h_7;
     let _e119 = a_16;
     out_2.d_c = dot(n_4, _e119);
     let _e121 = out_2;
@@ -4917,9 +4925,9 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             }
             let _e30 = (*list_1);
             let _e32 = airlight_list_get(_e30, _e9.worst);
-            let mid_2 = (0.5f * (_e32.x + _e32.y));
-            if (mid_2 > _e32.x) {
-                local_133 = (mid_2 < _e32.y);
+            let mid_1 = (0.5f * (_e32.x + _e32.y));
+            if (mid_1 > _e32.x) {
+                local_133 = (mid_1 < _e32.y);
             } else {
                 local_133 = false;
             }
@@ -4928,7 +4936,7 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
             }
-            return AirlightSplit(true, _e32.x, mid_2, _e32.y, _e9.worst);
+            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
         }
         continuing {
             let _e57 = tries;
@@ -5144,15 +5152,15 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e163 = g_22.alpha_r;
         cuts_2[4] = _e163;
         if (s_25.brdf_exponent > 1f) {
-            let width_3 = (1f / sqrt(s_25.brdf_exponent));
+            let width_4 = (1f / sqrt(s_25.brdf_exponent));
             let _e173 = g_22.alpha_r;
-            cuts_2[5] = (_e173 - (1.5f * width_3));
+            cuts_2[5] = (_e173 - (1.5f * width_4));
             let _e179 = g_22.alpha_r;
-            cuts_2[6] = (_e179 + (1.5f * width_3));
+            cuts_2[6] = (_e179 + (1.5f * width_4));
             let _e185 = g_22.alpha_r;
-            cuts_2[7] = (_e185 - (4f * width_3));
+            cuts_2[7] = (_e185 - (4f * width_4));
             let _e191 = g_22.alpha_r;
-            cuts_2[8] = (_e191 + (4f * width_3));
+            cuts_2[8] = (_e191 + (4f * width_4));
         }
         let meet = cross(_e37, _e111);
         let _e196 = airlight_safe_length(meet);
@@ -5277,33 +5285,33 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             }
             {
                 let _e339 = i_22;
-                let e_15 = g_22.gamma[_e339];
-                if !((e_15 == kinks[0])) {
-                    local_137 = (e_15 == kinks[1]);
+                let e_12 = g_22.gamma[_e339];
+                if !((e_12 == kinks[0])) {
+                    local_137 = (e_12 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
                 let _e350 = local_137;
                 if !(_e350) {
-                    local_138 = (e_15 == kinks[2]);
+                    local_138 = (e_12 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
                 let _e357 = local_138;
                 if !(_e357) {
-                    local_139 = (e_15 == kinks[3]);
+                    local_139 = (e_12 == kinks[3]);
                 } else {
                     local_139 = true;
                 }
                 let _e364 = local_139;
                 if !(_e364) {
-                    local_140 = (e_15 == kinks[4]);
+                    local_140 = (e_12 == kinks[4]);
                 } else {
                     local_140 = true;
                 }
                 let _e371 = local_140;
                 if !(_e371) {
-                    local_141 = (e_15 == kinks[5]);
+                    local_141 = (e_12 == kinks[5]);
                 } else {
                     local_141 = true;
                 }
@@ -5441,14 +5449,14 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_23.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_13 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    let q_11 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if (exponent_1 > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     let _e48 = reach;
     let _e51 = reach;
-    let s2_1 = select(1f, (_e48 / q_13.k), (_e51 < q_13.k));
+    let s2_1 = select(1f, (_e48 / q_11.k), (_e51 < q_11.k));
     let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
@@ -5477,7 +5485,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_13, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_11, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5545,11 +5553,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         let _e37 = g_24;
         return _e37;
     }
-    let e_16 = (ab_1 / vec3(_e15));
+    let e_13 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_26.dir);
     let w0_ = (s_26.light_position - s_26.origin);
-    let cos_a_2 = dot(e_16, _e41);
-    let along_e = dot(e_16, w0_);
+    let cos_a_2 = dot(e_13, _e41);
+    let along_e = dot(e_13, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_5 = ((s_26.flags & 1u) != 0u);
@@ -5560,7 +5568,7 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_16 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
         local_147 = (sin_a_1 > 0f);
@@ -5654,7 +5662,7 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_16;
+    g_24.e = e_13;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -5768,16 +5776,16 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_36 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_9 = (x_21 - f32(i_36));
-        let a_42 = g_25.gamma[i_36];
-        let b_20 = g_25.gamma[(i_36 + 1u)];
+        let i_37 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_21 - f32(i_37));
+        let a_42 = g_25.gamma[i_37];
+        let b_20 = g_25.gamma[(i_37 + 1u)];
         let w_8 = (b_20 - a_42);
-        let u_10 = (1f - t_9);
-        let smooth_a = (((g_25.smooth_edges >> i_36) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_36 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
-        jacobian = (((w_8 * 6f) * t_9) * u_10);
+        let u_8 = (1f - t_8);
+        let smooth_a = (((g_25.smooth_edges >> i_37) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_37 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3f - t_8) - t_8)));
+        jacobian = (((w_8 * 6f) * t_8) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
             local_163 = !(smooth_a);
@@ -5785,7 +5793,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_42 + ((w_8 * t_9) * t_9)), _e66);
+        gamma_1 = select(_e58, (a_42 + ((w_8 * t_8) * t_8)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -5793,7 +5801,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_164 = false;
         }
         let _e75 = local_164;
-        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
+        jacobian = select(_e68, (w_8 * (t_8 + t_8)), _e75);
         let _e77 = gamma_1;
         if smooth_a {
             local_165 = !(smooth_b);
@@ -5801,7 +5809,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_165 = false;
         }
         let _e85 = local_165;
-        gamma_1 = select(_e77, (b_20 - ((w_8 * u_10) * u_10)), _e85);
+        gamma_1 = select(_e77, (b_20 - ((w_8 * u_8) * u_8)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_166 = !(smooth_b);
@@ -5809,7 +5817,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_166 = false;
         }
         let _e94 = local_166;
-        jacobian = select(_e87, (w_8 * (u_10 + u_10)), _e94);
+        jacobian = select(_e87, (w_8 * (u_8 + u_8)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
             local_167 = smooth_b;
@@ -5817,7 +5825,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_42 + (w_8 * t_9)), _e102);
+        gamma_1 = select(_e96, (a_42 + (w_8 * t_8)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -5853,9 +5861,9 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let sin_g_1 = max(_e119.y, 0f);
-        let h_9 = (g_25.d * sin_g_1);
-        let d_c_2 = select(0f, ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_9 > 0f));
-        let exact = AirlightCanonical(h_9, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
+        let h_8 = (g_25.d * sin_g_1);
+        let d_c_2 = select(0f, ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_8 > 0f));
+        let exact = AirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
         let _e206 = p;
         let _e207 = weight;
         let _e210 = jacobian;
@@ -5888,8 +5896,8 @@ fn airlight_azimuths(circle: bool, i_25: u32) -> vec3<f32> {
 }
 
 fn airlight_triangle_rule(i_26: u32) -> vec2<f32> {
-    let rule_1 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
-    return rule_1[i_26];
+    let rule_2 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
+    return rule_2[i_26];
 }
 
 fn airlight_area_phase(s_28: AirlightScene, mu_2: f32) -> f32 {
@@ -5902,11 +5910,11 @@ fn airlight_emitted(s_29: AirlightScene, c_7: f32) -> f32 {
     var base_1: f32;
     var acc_1: f32 = 1f;
 
-    let p_3 = u32(s_29.light_param_b);
-    if (p_3 <= 1u) {
+    let p_2 = u32(s_29.light_param_b);
+    if (p_2 <= 1u) {
         return s_29.intensity;
     }
-    e_2 = (p_3 - 1u);
+    e_2 = (p_2 - 1u);
     base_1 = c_7;
     let _e13 = e_2;
     if ((_e13 & 1u) != 0u) {
@@ -6023,11 +6031,11 @@ fn airlight_emitted(s_29: AirlightScene, c_7: f32) -> f32 {
 }
 
 fn airlight_emission_scale(s_30: AirlightScene) -> f32 {
-    let p_4 = u32(s_30.light_param_b);
-    if (p_4 <= 1u) {
+    let p_3 = u32(s_30.light_param_b);
+    if (p_3 <= 1u) {
         return 0f;
     }
-    return (2f / sqrt(f32((p_4 - 1u))));
+    return (2f / sqrt(f32((p_3 - 1u))));
 }
 
 fn airlight_graded_range(s_31: AirlightScene, top: f32) -> vec2<f32> {
@@ -6176,7 +6184,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         let _e42 = a_18;
         return _e42;
     }
-    let o_7 = s_35.origin;
+    let o_6 = s_35.origin;
     let _e45 = airlight_normalize(s_35.dir);
     a_18.d = _e45;
     let infinite_6 = ((s_35.flags & 1u) != 0u);
@@ -6185,7 +6193,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
     size = s_35.light_param_a;
     if (s_35.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e67 = a_18.c;
-        let oc = (o_7 - _e67);
+        let oc = (o_6 - _e67);
         let b_21 = dot(oc, _e45);
         let _e72 = a_18.radius;
         let _e74 = a_18.radius;
@@ -6193,9 +6201,9 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         let disc_2 = ((b_21 * b_21) - k_10);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_14 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
-            cut0_ = q_14;
-            cut1_ = (k_10 / q_14);
+            let q_12 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
+            cut0_ = q_12;
+            cut1_ = (k_10 / q_12);
             cut_count = 2u;
         }
     } else {
@@ -6236,7 +6244,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         let _e156 = a_18.c;
         let _e159 = a_18.n;
         let _e162 = a_18.n;
-        cut0_ = (dot((_e156 - o_7), _e159) / dot(_e45, _e162));
+        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
         cut_count = 1u;
     }
     let _e166 = size;
@@ -6246,7 +6254,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         return _e172;
     }
     let _e173 = centre;
-    let to_centre = (_e173 - o_7);
+    let to_centre = (_e173 - o_6);
     a_18.x_h = dot(to_centre, _e45);
     let _e178 = a_18.x_h;
     let _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
@@ -6257,18 +6265,18 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
     end_infinite = infinite_6;
     if (s_35.sigma_t > 0f) {
         let _e195 = centre;
-        let _e199 = airlight_safe_length((_e195 - (o_7 + (t0_2 * _e45))));
+        let _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
         let _e201 = size;
-        let reach_2 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_35.sigma_t));
+        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_35.sigma_t));
         if !(infinite_6) {
             let _e210 = t_end_1;
-            local_173 = (reach_2 < _e210);
+            local_173 = (reach_1 < _e210);
         } else {
             local_173 = true;
         }
         let _e213 = local_173;
         if _e213 {
-            t_end_1 = reach_2;
+            t_end_1 = reach_1;
             end_infinite = false;
         }
     }
@@ -6294,12 +6302,12 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         }
         {
             let _e245 = i_27;
-            let t_10 = cuts_4[_e245];
+            let t_9 = cuts_4[_e245];
             let _e248 = i_27;
             cuts_4[_e248] = _e217;
-            let _e250 = airlight_is_finite(t_10);
+            let _e250 = airlight_is_finite(t_9);
             if _e250 {
-                local_174 = (t_10 >= t0_2);
+                local_174 = (t_9 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -6308,7 +6316,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
                 let _e258 = end_infinite;
                 if !(_e258) {
                     let _e262 = t_end_1;
-                    local_176 = (t_10 <= _e262);
+                    local_176 = (t_9 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -6321,7 +6329,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
             if _e267 {
                 let _e268 = i_27;
                 let _e270 = a_18;
-                let _e272 = airlight_area_theta(_e270, t_10, false);
+                let _e272 = airlight_area_theta(_e270, t_9, false);
                 cuts_4[_e268] = _e272;
             }
         }
@@ -6347,12 +6355,12 @@ fn airlight_flat_node(s_36: AirlightScene, a_19: AirlightArea, above_1: Airlight
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     let dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    let p_5 = (above_1.off + (r_13 * e_3));
+    let p_4 = (above_1.off + (r_13 * e_3));
     let z_19 = above_1.z;
-    let dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
+    let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_36, ((((p_5.x * a_19.dirs.x) + (p_5.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
+    let _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
     let _e52 = airlight_emitted(s_36, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -6440,22 +6448,22 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
             let _e40 = i_28;
             let a_44 = o.corners[_e40];
             let _e43 = i_28;
-            let e_17 = (o.corners[((_e43 + 1u) % 4u)] - a_44);
+            let e_14 = (o.corners[((_e43 + 1u) % 4u)] - a_44);
             let _e50 = inside;
             if _e50 {
-                local_177 = ((((q_4.x - a_44.x) * e_17.y) - ((q_4.y - a_44.y) * e_17.x)) <= 0f);
+                local_177 = ((((q_4.x - a_44.x) * e_14.y) - ((q_4.y - a_44.y) * e_14.x)) <= 0f);
             } else {
                 local_177 = false;
             }
             let _e67 = local_177;
             inside = _e67;
-            let t_11 = clamp(((((q_4.x - a_44.x) * e_17.x) + ((q_4.y - a_44.y) * e_17.y)) / ((e_17.x * e_17.x) + (e_17.y * e_17.y))), 0f, 1f);
-            let p_6 = (a_44 + (t_11 * e_17));
-            let dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
+            let t_10 = clamp(((((q_4.x - a_44.x) * e_14.x) + ((q_4.y - a_44.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0f, 1f);
+            let p_5 = (a_44 + (t_10 * e_14));
+            let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
                 best = dd;
-                nearest = p_6;
+                nearest = p_5;
             }
         }
         continuing {
@@ -6489,9 +6497,9 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
         {
             let _e20 = j_5;
             let lobe_4 = select(a_21.lobes.xy, a_21.lobes.zw, (_e20 == 1u));
-            let p_7 = (lobe_4.x * a_21.dirs);
+            let p_6 = (lobe_4.x * a_21.dirs);
             if (lobe_4.y > 0f) {
-                local_178 = (p_7.z < 0f);
+                local_178 = (p_6.z < 0f);
             } else {
                 local_178 = false;
             }
@@ -6503,12 +6511,12 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
             }
             let _e43 = local_179;
             if _e43 {
-                let l_4 = (z_11 / -(p_7.z));
-                let q_15 = (l_4 * p_7.xy);
-                let _e49 = airlight_outline_nearest(o_2, q_15);
+                let l_4 = (z_11 / -(p_6.z));
+                let q_13 = (l_4 * p_6.xy);
+                let _e49 = airlight_outline_nearest(o_2, q_13);
                 let to_near = vec3<f32>(_e49, -(z_11));
-                let cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1f);
-                let on_emitter = all((_e49 == q_15));
+                let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
+                let on_emitter = all((_e49 == q_13));
                 if !(on_emitter) {
                     let _e63 = airlight_acos(cos_1);
                     local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
@@ -6517,7 +6525,7 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
                 }
                 let _e69 = local_180;
                 if _e69 {
-                    return AirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_15, on_emitter);
+                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                 }
             }
         }
@@ -6559,9 +6567,9 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_12 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
-        let r1_2 = (t_12 / a_45);
-        let r2_3 = (k_11 / t_12);
+        let t_11 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+        let r1_2 = (t_11 / a_45);
+        let r2_3 = (k_11 / t_11);
         let hi_8 = max(r1_2, r2_3);
         if !((hi_8 > 0f)) {
             return vec2(0f);
@@ -6688,75 +6696,49 @@ fn airlight_cos_sin_turns(x_23: f32) -> vec2<f32> {
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
 
+fn airlight_edge_rule(a_23: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
+    let e_15 = (b_14 - a_23);
+    let el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
+    let t_12 = (e_15 / vec2(el));
+    let h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
+    let reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
+    let _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
+    let _e29 = airlight_atan2_(dot(b_14, t_12), reach_2);
+    return AirlightEdgeRule(h_9, t_12, reach_2, _e27, _e29);
+}
+
+fn airlight_edge_node(rule_1: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
+    let _e2 = airlight_triangle_rule(j_6);
+    let hw_4 = (0.5f * (rule_1.last - rule_1.first));
+    let _e18 = airlight_cos_sin_half_turn((((0.5f * (rule_1.first + rule_1.last)) + (hw_4 * _e2.x)) + 1.5707964f));
+    let sigma_13 = ((rule_1.reach * -(_e18.x)) / _e18.y);
+    let r2_4 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
+    let r_14 = sqrt(r2_4);
+    let m_12 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
+    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((((_e2.y * hw_4) * rule_1.h) * rule_1.reach) / ((_e18.y * _e18.y) * r2_4)));
+}
+
 fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
     let a_46 = vec4<f32>(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
     let b_23 = vec4<f32>(min(a_46.x, a_46.z), min(a_46.y, a_46.w), max(a_46.x, a_46.z), max(a_46.y, a_46.w));
     return vec4<f32>(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
-fn airlight_exit_through(exit: vec2<f32>, index: f32, a_23: vec2<f32>, b_14: vec2<f32>, q_8: vec2<f32>, e_8: vec2<f32>) -> vec2<f32> {
-    var local_181: bool;
-
-    let m_12 = vec2<f32>((b_14.y - a_23.y), (a_23.x - b_14.x));
-    let den_1 = dot(e_8, m_12);
-    let r_14 = (-(dot((q_8 - a_23), m_12)) / den_1);
-    if (den_1 > 0f) {
-        local_181 = (r_14 < exit.x);
-    } else {
-        local_181 = false;
-    }
-    let _e26 = local_181;
-    return select(exit, vec2<f32>(r_14, index), _e26);
-}
-
-fn airlight_exit_edge(o_5: AirlightOutline, q_9: vec2<f32>, e_9: vec2<f32>) -> u32 {
-    var exit_1: vec2<f32> = vec2<f32>(340282350000000000000000000000000000000f, 0f);
-
-    let _e7 = exit_1;
-    let _e13 = airlight_exit_through(_e7, 0f, o_5.corners[0], o_5.corners[1], q_9, e_9);
-    exit_1 = _e13;
-    let _e14 = exit_1;
-    let _e20 = airlight_exit_through(_e14, 1f, o_5.corners[1], o_5.corners[2], q_9, e_9);
-    exit_1 = _e20;
-    let _e21 = exit_1;
-    let _e27 = airlight_exit_through(_e21, 2f, o_5.corners[2], o_5.corners[3], q_9, e_9);
-    exit_1 = _e27;
-    let _e28 = exit_1;
-    let _e34 = airlight_exit_through(_e28, 3f, o_5.corners[3], o_5.corners[0], q_9, e_9);
-    exit_1 = _e34;
-    let _e36 = exit_1.y;
-    return u32(_e36);
-}
-
-fn airlight_lobe_half_line(u_6: vec3<f32>, v_8: vec3<f32>, p_1: vec3<f32>, cs_2: vec2<f32>) -> vec2<f32> {
-    let w_10 = ((cs_2.x * u_6) + (cs_2.y * v_8));
-    return (w_10.xy + ((w_10.z / -(p_1.z)) * p_1.xy));
-}
-
-fn airlight_lobe_plane(u_7: vec3<f32>, v_9: vec3<f32>, e_10: vec2<f32>) -> vec2<f32> {
-    return vec2<f32>(((e_10.x * u_7.x) + (e_10.y * u_7.y)), ((e_10.x * v_9.x) + (e_10.y * v_9.y)));
-}
-
-fn airlight_wedge_beta(delta: f32, h_3: f32, reach_1: f32) -> f32 {
-    let _e3 = airlight_cos_sin_turns(delta);
-    let _e10 = airlight_atan2_((h_3 * _e3.y), (reach_1 * max(_e3.x, 0f)));
-    return _e10;
-}
-
-fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var i_29: u32 = 0u;
     var i_30: u32 = 0u;
-    var mid: f32 = 0f;
     var i_31: u32 = 0u;
-    var j_6: u32;
-    var t_4: vec2<f32>;
+    var ya: vec2<f32>;
+    var yb: vec2<f32>;
     var j_7: u32;
+    var i_32: u32 = 0u;
+    var j_8: u32;
 
     let _e5 = airlight_basis_e1_(lobe_3.p);
-    let v_11 = cross(lobe_3.p, _e5);
-    let q_16 = lobe_3.q;
-    if (o_6.radius > 0f) {
+    let v_9 = cross(lobe_3.p, _e5);
+    let q_14 = lobe_3.q;
+    if (o_5.radius > 0f) {
         if lobe_3.on_emitter {
             loop {
                 let _e17 = i_29;
@@ -6768,7 +6750,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_6: AirlightOutline
                     let _e21 = i_29;
                     let _e22 = airlight_azimuths(true, _e21);
                     let _e23 = sum_9;
-                    let _e26 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e22.xy);
+                    let _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
                 continuing {
@@ -6779,14 +6761,14 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_6: AirlightOutline
             let _e32 = sum_9;
             return _e32;
         }
-        let d_5 = (o_6.corners[0] - q_16);
+        let d_5 = (o_5.corners[0] - q_14);
         let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
-        let sb_1 = (o_6.radius / dq_2);
-        let cb = (sqrt(((dq_2 - o_6.radius) * (dq_2 + o_6.radius))) / dq_2);
-        let _e53 = airlight_lobe_azimuth(_e5, v_11, d_5);
-        let _e65 = airlight_lobe_azimuth(_e5, v_11, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        let sb_1 = (o_5.radius / dq_2);
+        let cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
+        let _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
+        let _e65 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
         let _e67 = airlight_wrap_turn((_e65 - _e53));
-        let _e79 = airlight_lobe_azimuth(_e5, v_11, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        let _e79 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
         let _e81 = airlight_wrap_turn((_e79 - _e53));
         let centre_2 = (_e53 + ((_e67 + _e81) * 0.5f));
         let half_19 = (abs((_e67 - _e81)) * 0.5f);
@@ -6801,7 +6783,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_6: AirlightOutline
                 let _e97 = airlight_azimuths(false, _e96);
                 let _e98 = sum_9;
                 let _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                let _e107 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e106);
+                let _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
             continuing {
@@ -6812,129 +6794,126 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_6: AirlightOutline
         let _e113 = sum_9;
         return _e113;
     }
-    if !(lobe_3.on_emitter) {
-        let _e126 = airlight_lobe_azimuth(_e5, v_11, ((0.5f * (o_6.corners[0] + o_6.corners[2])) - q_16));
-        mid = _e126;
-    }
-    let _e130 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[0] - q_16));
-    let _e131 = mid;
-    let _e133 = airlight_wrap_turn((_e130 - _e131));
-    let _e137 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[1] - q_16));
-    let _e138 = mid;
-    let _e140 = airlight_wrap_turn((_e137 - _e138));
-    let _e144 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[2] - q_16));
-    let _e145 = mid;
-    let _e147 = airlight_wrap_turn((_e144 - _e145));
-    let _e151 = airlight_lobe_azimuth(_e5, v_11, (o_6.corners[3] - q_16));
-    let _e152 = mid;
-    let _e154 = airlight_wrap_turn((_e151 - _e152));
-    let _e156 = airlight_sort4_(vec4<f32>(_e133, _e140, _e147, _e154));
-    let wedges = select(3u, 4u, lobe_3.on_emitter);
-    loop {
-        let _e163 = i_31;
-        if (_e163 < wedges) {
-        } else {
-            break;
-        }
-        {
-            let _e165 = mid;
-            let _e166 = i_31;
-            let first_2 = (_e165 + _e156[_e166]);
-            let _e169 = mid;
-            let _e170 = i_31;
-            let _e179 = i_31;
-            let last_1 = (_e169 + select(_e156[min((_e170 + 1u), 3u)], (_e156.x + 6.2831855f), (_e179 == 3u)));
-            let c_19 = ((first_2 + last_1) * 0.5f);
-            let hw_4 = ((last_1 - first_2) * 0.5f);
-            if !(lobe_3.on_emitter) {
-                j_6 = 0u;
+    if lobe_3.on_emitter {
+        loop {
+            let _e117 = i_31;
+            if (_e117 < 4u) {
+            } else {
+                break;
+            }
+            {
+                let _e121 = i_31;
+                let ea = (o_5.corners[_e121] - q_14);
+                let _e125 = i_31;
+                let eb = (o_5.corners[((_e125 + 1u) % 4u)] - q_14);
+                ya = vec2<f32>(dot(ea, _e5.xy), dot(ea, v_9.xy));
+                yb = vec2<f32>(dot(eb, _e5.xy), dot(eb, v_9.xy));
+                let _e145 = ya.x;
+                let _e147 = yb.y;
+                let _e150 = ya.y;
+                let _e152 = yb.x;
+                let area = ((_e145 * _e147) - (_e150 * _e152));
+                if !((abs(area) > 0f)) {
+                    continue;
+                }
+                if (area < 0f) {
+                    let swap = ya;
+                    let _e162 = yb;
+                    ya = _e162;
+                    yb = swap;
+                }
+                let _e163 = ya;
+                let _e164 = yb;
+                let _e168 = airlight_edge_rule(_e163, _e164, (lobe_3.l * lobe_3.scale));
+                j_7 = 0u;
                 loop {
-                    let _e194 = j_6;
-                    if (_e194 < 12u) {
+                    let _e171 = j_7;
+                    if (_e171 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e197 = j_6;
-                        let _e198 = airlight_triangle_rule(_e197);
-                        let _e199 = sum_9;
-                        let _e205 = airlight_cos_sin_turns((c_19 + (hw_4 * _e198.x)));
-                        let _e206 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, _e205);
-                        sum_9 = (_e199 + ((_e198.y * hw_4) * _e206));
+                        let _e174 = j_7;
+                        let _e175 = airlight_edge_node(_e168, _e174);
+                        let _e176 = sum_9;
+                        let _e179 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e175.xy);
+                        sum_9 = (_e176 + (_e175.w * _e179));
                     }
                     continuing {
-                        let _e210 = j_6;
-                        j_6 = (_e210 + 1u);
+                        let _e183 = j_7;
+                        j_7 = (_e183 + 1u);
                     }
                 }
-                continue;
             }
-            let _e213 = airlight_cos_sin_turns(c_19);
-            let _e214 = airlight_lobe_half_line(_e5, v_11, lobe_3.p, _e213);
-            let _e215 = airlight_exit_edge(o_6, q_16, _e214);
-            let _e219 = airlight_lobe_plane(_e5, v_11, (o_6.corners[_e215] - q_16));
-            let _e227 = airlight_lobe_plane(_e5, v_11, (o_6.corners[((_e215 + 1u) % 4u)] - q_16));
-            t_4 = ((_e227 - _e219) / vec2(sqrt(dot((_e227 - _e219), (_e227 - _e219)))));
-            let _e237 = t_4.y;
-            let _e241 = t_4.x;
-            if (((_e237 * _e219.x) - (_e241 * _e219.y)) < 0f) {
-                let _e247 = t_4;
-                t_4 = -(_e247);
+            continuing {
+                let _e186 = i_31;
+                i_31 = (_e186 + 1u);
             }
-            let _e250 = t_4.y;
-            let _e252 = t_4.x;
-            let n_6 = vec2<f32>(_e250, -(_e252));
-            let h_10 = dot(n_6, _e219);
-            if !((h_10 > 0f)) {
-                continue;
-            }
-            let reach_3 = sqrt(((h_10 * h_10) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
-            let _e271 = airlight_atan2_(n_6.y, n_6.x);
-            let _e273 = airlight_wedge_beta((first_2 - _e271), h_10, reach_3);
-            let _e275 = airlight_wedge_beta((last_1 - _e271), h_10, reach_3);
-            let bc = ((_e273 + _e275) * 0.5f);
-            let bw = ((_e275 - _e273) * 0.5f);
-            j_7 = 0u;
+        }
+        let _e188 = sum_9;
+        return _e188;
+    }
+    let _e197 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    let _e201 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e203 = airlight_wrap_turn((_e201 - _e197));
+    let _e207 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e209 = airlight_wrap_turn((_e207 - _e197));
+    let _e213 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e215 = airlight_wrap_turn((_e213 - _e197));
+    let _e219 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e221 = airlight_wrap_turn((_e219 - _e197));
+    let _e223 = airlight_sort4_(vec4<f32>(_e203, _e209, _e215, _e221));
+    loop {
+        let _e226 = i_32;
+        if (_e226 < 3u) {
+        } else {
+            break;
+        }
+        {
+            let _e229 = i_32;
+            let _e231 = i_32;
+            let c_19 = (_e197 + ((_e223[_e229] + _e223[(_e231 + 1u)]) * 0.5f));
+            let _e239 = i_32;
+            let _e243 = i_32;
+            let hw_5 = ((_e223[(_e239 + 1u)] - _e223[_e243]) * 0.5f);
+            j_8 = 0u;
             loop {
-                let _e284 = j_7;
-                if (_e284 < 12u) {
+                let _e250 = j_8;
+                if (_e250 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e287 = j_7;
-                    let _e288 = airlight_triangle_rule(_e287);
-                    let _e292 = airlight_cos_sin_turns((bc + (bw * _e288.x)));
-                    let _e298 = t_4;
-                    let y_13 = (((h_10 * _e292.x) * n_6) + ((reach_3 * _e292.y) * _e298));
-                    let weight_4 = ((h_10 * reach_3) / ((((h_10 * h_10) * _e292.x) * _e292.x) + (((reach_3 * reach_3) * _e292.y) * _e292.y)));
-                    let _e314 = sum_9;
-                    let _e322 = airlight_flat_lobe_along(s_40, z_14, o_6, lobe_3, _e5, v_11, (y_13 / vec2(sqrt(dot(y_13, y_13)))));
-                    sum_9 = (_e314 + (((_e288.y * bw) * weight_4) * _e322));
+                    let _e253 = j_8;
+                    let _e254 = airlight_triangle_rule(_e253);
+                    let _e255 = sum_9;
+                    let _e261 = airlight_cos_sin_turns((c_19 + (hw_5 * _e254.x)));
+                    let _e262 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e261);
+                    sum_9 = (_e255 + ((_e254.y * hw_5) * _e262));
                 }
                 continuing {
-                    let _e326 = j_7;
-                    j_7 = (_e326 + 1u);
+                    let _e266 = j_8;
+                    j_8 = (_e266 + 1u);
                 }
             }
         }
         continuing {
-            let _e329 = i_31;
-            i_31 = (_e329 + 1u);
+            let _e269 = i_32;
+            i_32 = (_e269 + 1u);
         }
     }
-    let _e331 = sum_9;
-    return _e331;
+    let _e271 = sum_9;
+    return _e271;
 }
 
 fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+    var local_181: bool;
     var local_182: bool;
-    var local_183: bool;
-    var u_8: vec2<f32> = vec2(0f);
+    var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
-    var i_32: u32 = 0u;
-    var e_11: vec2<f32>;
+    var i_33: u32 = 0u;
+    var e_8: vec2<f32>;
     var r_max_1: f32;
 
     let rel = (x_25 - a_24.c);
@@ -6956,56 +6935,56 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     if (rf <= radius_2) {
         if !((rf == 0f)) {
             let _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_183 = _e44;
+            local_182 = _e44;
         } else {
-            local_183 = true;
+            local_182 = true;
         }
-        let _e46 = local_183;
-        local_182 = _e46;
+        let _e46 = local_182;
+        local_181 = _e46;
     } else {
-        local_182 = false;
+        local_181 = false;
     }
-    let inside_2 = local_182;
+    let inside_2 = local_181;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
-        u_8 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
-        let _e63 = u_8;
+        u_6 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
+        let _e63 = u_6;
         let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     let k_13 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e73 = i_32;
+        let _e73 = i_33;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e76 = i_32;
+            let _e76 = i_33;
             let _e77 = airlight_azimuths(inside_2, _e76);
-            let _e80 = u_8.x;
-            let _e84 = u_8.y;
-            let _e89 = u_8.y;
-            let _e93 = u_8.x;
-            e_11 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            let _e80 = u_6.x;
+            let _e84 = u_6.y;
+            let _e89 = u_6.y;
+            let _e93 = u_6.x;
+            e_8 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
-                e_11 = _e77.xy;
+                e_8 = _e77.xy;
                 let b_24 = ((fx * _e77.x) + (fy_1 * _e77.y));
                 let root_4 = sqrt(((b_24 * b_24) - k_13));
                 r_max_1 = select((root_4 - b_24), (-(k_13) / (b_24 + root_4)), (b_24 > 0f));
             }
             let _e118 = sum_10;
             let _e120 = above_3;
-            let _e121 = e_11;
+            let _e121 = e_8;
             let _e122 = r_max_1;
             let _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e127 = i_32;
-            i_32 = (_e127 + 1u);
+            let _e127 = i_33;
+            i_33 = (_e127 + 1u);
         }
     }
     let _e129 = sum_10;
@@ -7013,11 +6992,11 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
 }
 
 fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f32 {
-    var q_10: vec2<f32>;
-    var local_184: bool;
+    var q_8: vec2<f32>;
+    var local_183: bool;
     var sum_11: f32 = 0f;
-    var i_33: u32 = 0u;
-    var j_8: u32;
+    var i_34: u32 = 0u;
+    var j_9: u32;
 
     let rel_1 = (x_26 - a_25.c);
     let z_21 = dot(rel_1, a_25.n);
@@ -7037,96 +7016,83 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
-    q_10 = (_e76.xy + foot);
+    q_8 = (_e76.xy + foot);
     if (_e76.z > 0f) {
         let _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_184 = _e89;
+        local_183 = _e89;
     } else {
-        local_184 = false;
+        local_183 = false;
     }
-    let _e91 = local_184;
+    let _e91 = local_183;
     if _e91 {
-        q_10 = foot;
+        q_8 = foot;
     }
-    let _e92 = q_10;
+    let _e92 = q_8;
     let _e94 = airlight_above(z_21, (_e92 - foot));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
+    let _e99 = airlight_narrowed(s_42, _e94.rho0_);
     loop {
-        let _e102 = i_33;
-        if (_e102 < 4u) {
+        let _e104 = i_34;
+        if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            let _e105 = i_33;
-            let _e107 = q_10;
-            let ca = (corners[_e105] - _e107);
-            let _e109 = i_33;
-            let _e113 = q_10;
-            let cb_1 = (corners[(_e109 + 1u)] - _e113);
-            let area = ((ca.x * cb_1.y) - (ca.y * cb_1.x));
-            if !((area > thin)) {
+            let _e107 = i_34;
+            let _e109 = q_8;
+            let ca = (corners[_e107] - _e109);
+            let _e111 = i_34;
+            let _e115 = q_8;
+            let cb_1 = (corners[(_e111 + 1u)] - _e115);
+            if !((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin)) {
                 continue;
             }
-            let e_18 = (cb_1 - ca);
-            let el = sqrt(((e_18.x * e_18.x) + (e_18.y * e_18.y)));
-            let h_11 = (area / el);
-            let m_13 = vec2<f32>((e_18.y / el), (-(e_18.x) / el));
-            let t_13 = (e_18 / vec2(el));
-            let _e143 = airlight_narrowed(s_42, _e94.rho0_);
-            let reach_4 = sqrt(((h_11 * h_11) + (_e143 * _e143)));
-            let _e149 = airlight_atan2_(dot(ca, t_13), reach_4);
-            let _e151 = airlight_atan2_(dot(cb_1, t_13), reach_4);
-            j_8 = 0u;
+            let _e126 = airlight_edge_rule(ca, cb_1, _e99);
+            j_9 = 0u;
             loop {
-                let _e154 = j_8;
-                if (_e154 < 12u) {
+                let _e129 = j_9;
+                if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e157 = j_8;
-                    let _e158 = airlight_triangle_rule(_e157);
-                    let _e170 = airlight_cos_sin_half_turn((((0.5f * (_e149 + _e151)) + ((0.5f * (_e151 - _e149)) * _e158.x)) + 1.5707964f));
-                    let sigma_13 = ((reach_4 * -(_e170.x)) / _e170.y);
-                    let r2_4 = ((h_11 * h_11) + (sigma_13 * sigma_13));
-                    let r_15 = sqrt(r2_4);
-                    let dir_3 = (((h_11 * m_13) + (sigma_13 * t_13)) / vec2(r_15));
-                    let _e185 = sum_11;
-                    let _e198 = airlight_flat_radial(s_42, a_25, _e94, dir_3, r_15);
-                    sum_11 = (_e185 + ((((((_e158.y * 0.5f) * (_e151 - _e149)) * h_11) * reach_4) / ((_e170.y * _e170.y) * r2_4)) * _e198));
+                    let _e132 = j_9;
+                    let _e133 = airlight_edge_node(_e126, _e132);
+                    let _e134 = sum_11;
+                    let _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
+                    sum_11 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e202 = j_8;
-                    j_8 = (_e202 + 1u);
+                    let _e142 = j_9;
+                    j_9 = (_e142 + 1u);
                 }
             }
         }
         continuing {
-            let _e205 = i_33;
-            i_33 = (_e205 + 1u);
+            let _e145 = i_34;
+            i_34 = (_e145 + 1u);
         }
     }
-    let _e207 = sum_11;
-    return _e207;
+    let _e147 = sum_11;
+    return _e147;
 }
 
 fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
     let _e5 = airlight_graded_node(graded_4, node_2);
-    let w_11 = (weight_1 * _e5.y);
+    let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
     let _e28 = airlight_emitted(s_43, _e9.x);
-    let factor = (((((((w_11 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0f)));
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
 fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
-    var i_34: u32 = 0u;
+    var i_35: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
@@ -7137,38 +7103,38 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
     let _e15 = airlight_graded_range(s_44, 1.5707964f);
     let graded_9 = _e15.y;
     let c_20 = (0.5f * _e15.x);
-    let hw_5 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let hw_6 = (0.5f * _e15.x);
+    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251f * hw_6)), (0.1894506f * hw_6));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251f * hw_5)), (0.1894506f * hw_5));
+    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251f * hw_6)), (0.1894506f * hw_6));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354f * hw_6)), (0.18260342f * hw_6));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354f * hw_5)), (0.18260342f * hw_5));
+    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354f * hw_6)), (0.18260342f * hw_6));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678f * hw_6)), (0.16915652f * hw_6));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678f * hw_5)), (0.16915652f * hw_5));
+    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678f * hw_6)), (0.16915652f * hw_6));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623f * hw_6)), (0.14959599f * hw_6));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623f * hw_5)), (0.14959599f * hw_5));
+    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623f * hw_6)), (0.14959599f * hw_6));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044f * hw_6)), (0.12462897f * hw_6));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044f * hw_5)), (0.12462897f * hw_5));
+    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044f * hw_6)), (0.12462897f * hw_6));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312f * hw_6)), (0.09515851f * hw_6));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312f * hw_5)), (0.09515851f * hw_5));
+    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312f * hw_6)), (0.09515851f * hw_6));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575f * hw_6)), (0.062253524f * hw_6));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575f * hw_5)), (0.062253524f * hw_5));
+    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575f * hw_6)), (0.062253524f * hw_6));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009f * hw_6)), (0.02715246f * hw_6));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009f * hw_5)), (0.02715246f * hw_5));
+    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009f * hw_6)), (0.02715246f * hw_6));
     rows[15] = _e168;
     if a_26.isotropic {
         let _e174 = airlight_area_phase(s_44, 0f);
@@ -7225,13 +7191,13 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
         return _e272;
     }
     loop {
-        let _e275 = i_34;
+        let _e275 = i_35;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e279 = i_34;
+            let _e279 = i_35;
             let _e280 = airlight_azimuths(true, _e279);
             let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
@@ -7336,8 +7302,8 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
             sum_12 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e550 = i_34;
-            i_34 = (_e550 + 1u);
+            let _e550 = i_35;
+            i_35 = (_e550 + 1u);
         }
     }
     let _e552 = sum_12;
@@ -7358,17 +7324,17 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
-    var i_35: u32 = 0u;
+    var i_36: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var start_5: f32;
     var around: f32;
 
-    let p_8 = (sign_2 * a_27.d);
-    let _e8 = airlight_basis_e1_(p_8);
-    let v_12 = cross(p_8, _e8);
+    let p_7 = (sign_2 * a_27.d);
+    let _e8 = airlight_basis_e1_(p_7);
+    let v_10 = cross(p_7, _e8);
     let au = dot(cap_3.a, _e8);
-    let av = dot(cap_3.a, v_12);
+    let av = dot(cap_3.a, v_10);
     let inside_3 = (cos_p_1 > cap_3.cos_a);
     let sin_p = sqrt(((au * au) + (av * av)));
     if (sin_p > 0f) {
@@ -7377,13 +7343,13 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_35;
+        let _e47 = i_36;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_35;
+            let _e50 = i_36;
             let _e51 = airlight_azimuths(inside_3, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
@@ -7409,96 +7375,96 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
             let _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
             let graded_10 = _e98.x;
             let c_21 = (0.5f * _e98.y);
-            let hw_6 = (0.5f * _e98.y);
+            let hw_7 = (0.5f * _e98.y);
             around = 0f;
             let _e108 = around;
             let _e111 = big_b_1;
             let _e112 = start_5;
-            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251f * hw_6)));
-            around = (_e108 + ((0.1894506f * hw_6) * _e116));
+            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251f * hw_7)));
+            around = (_e108 + ((0.1894506f * hw_7) * _e116));
             let _e119 = around;
             let _e122 = big_b_1;
             let _e123 = start_5;
-            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251f * hw_6)));
-            around = (_e119 + ((0.1894506f * hw_6) * _e127));
+            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251f * hw_7)));
+            around = (_e119 + ((0.1894506f * hw_7) * _e127));
             let _e130 = around;
             let _e133 = big_b_1;
             let _e134 = start_5;
-            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354f * hw_6)));
-            around = (_e130 + ((0.18260342f * hw_6) * _e138));
+            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354f * hw_7)));
+            around = (_e130 + ((0.18260342f * hw_7) * _e138));
             let _e141 = around;
             let _e144 = big_b_1;
             let _e145 = start_5;
-            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354f * hw_6)));
-            around = (_e141 + ((0.18260342f * hw_6) * _e149));
+            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354f * hw_7)));
+            around = (_e141 + ((0.18260342f * hw_7) * _e149));
             let _e152 = around;
             let _e155 = big_b_1;
             let _e156 = start_5;
-            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678f * hw_6)));
-            around = (_e152 + ((0.16915652f * hw_6) * _e160));
+            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678f * hw_7)));
+            around = (_e152 + ((0.16915652f * hw_7) * _e160));
             let _e163 = around;
             let _e166 = big_b_1;
             let _e167 = start_5;
-            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678f * hw_6)));
-            around = (_e163 + ((0.16915652f * hw_6) * _e171));
+            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678f * hw_7)));
+            around = (_e163 + ((0.16915652f * hw_7) * _e171));
             let _e174 = around;
             let _e177 = big_b_1;
             let _e178 = start_5;
-            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623f * hw_6)));
-            around = (_e174 + ((0.14959599f * hw_6) * _e182));
+            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623f * hw_7)));
+            around = (_e174 + ((0.14959599f * hw_7) * _e182));
             let _e185 = around;
             let _e188 = big_b_1;
             let _e189 = start_5;
-            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623f * hw_6)));
-            around = (_e185 + ((0.14959599f * hw_6) * _e193));
+            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623f * hw_7)));
+            around = (_e185 + ((0.14959599f * hw_7) * _e193));
             let _e196 = around;
             let _e199 = big_b_1;
             let _e200 = start_5;
-            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044f * hw_6)));
-            around = (_e196 + ((0.12462897f * hw_6) * _e204));
+            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044f * hw_7)));
+            around = (_e196 + ((0.12462897f * hw_7) * _e204));
             let _e207 = around;
             let _e210 = big_b_1;
             let _e211 = start_5;
-            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044f * hw_6)));
-            around = (_e207 + ((0.12462897f * hw_6) * _e215));
+            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044f * hw_7)));
+            around = (_e207 + ((0.12462897f * hw_7) * _e215));
             let _e218 = around;
             let _e221 = big_b_1;
             let _e222 = start_5;
-            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312f * hw_6)));
-            around = (_e218 + ((0.09515851f * hw_6) * _e226));
+            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312f * hw_7)));
+            around = (_e218 + ((0.09515851f * hw_7) * _e226));
             let _e229 = around;
             let _e232 = big_b_1;
             let _e233 = start_5;
-            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312f * hw_6)));
-            around = (_e229 + ((0.09515851f * hw_6) * _e237));
+            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312f * hw_7)));
+            around = (_e229 + ((0.09515851f * hw_7) * _e237));
             let _e240 = around;
             let _e243 = big_b_1;
             let _e244 = start_5;
-            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575f * hw_6)));
-            around = (_e240 + ((0.062253524f * hw_6) * _e248));
+            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575f * hw_7)));
+            around = (_e240 + ((0.062253524f * hw_7) * _e248));
             let _e251 = around;
             let _e254 = big_b_1;
             let _e255 = start_5;
-            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575f * hw_6)));
-            around = (_e251 + ((0.062253524f * hw_6) * _e259));
+            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575f * hw_7)));
+            around = (_e251 + ((0.062253524f * hw_7) * _e259));
             let _e262 = around;
             let _e265 = big_b_1;
             let _e266 = start_5;
-            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009f * hw_6)));
-            around = (_e262 + ((0.02715246f * hw_6) * _e270));
+            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009f * hw_7)));
+            around = (_e262 + ((0.02715246f * hw_7) * _e270));
             let _e273 = around;
             let _e276 = big_b_1;
             let _e277 = start_5;
-            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009f * hw_6)));
-            around = (_e273 + ((0.02715246f * hw_6) * _e281));
+            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009f * hw_7)));
+            around = (_e273 + ((0.02715246f * hw_7) * _e281));
             let _e284 = sum_13;
             let _e285 = wpsi;
             let _e286 = around;
             sum_13 = (_e284 + (_e285 * _e286));
         }
         continuing {
-            let _e290 = i_35;
-            i_35 = (_e290 + 1u);
+            let _e290 = i_36;
+            i_36 = (_e290 + 1u);
         }
     }
     let _e292 = sum_13;
@@ -7509,63 +7475,63 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_9: u32 = 0u;
+    var j_10: u32 = 0u;
+    var local_184: bool;
     var local_185: bool;
     var local_186: bool;
     var local_187: bool;
     var local_188: bool;
-    var local_189: bool;
 
-    let v_13 = (a_28.c - x_27);
-    let _e5 = airlight_safe_length(v_13);
+    let v_11 = (a_28.c - x_27);
+    let _e5 = airlight_safe_length(v_11);
     if !((_e5 > a_28.radius)) {
         return 0f;
     }
     let sin_a_2 = (a_28.radius / _e5);
-    let cap_4 = AirlightCap((v_13 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_9;
+        let _e32 = j_10;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_9;
+            let _e39 = j_10;
             let lobe_5 = select(a_28.lobes.xy, a_28.lobes.zw, (_e39 == 1u));
             let c_22 = dot(cap_4.a, (lobe_5.x * a_28.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_185 = (lobe_5.y > 0f);
+                local_184 = (lobe_5.y > 0f);
+            } else {
+                local_184 = false;
+            }
+            let _e57 = local_184;
+            if _e57 {
+                local_185 = (lobe_5.y < (_e23 + _e23));
             } else {
                 local_185 = false;
             }
-            let _e57 = local_185;
-            if _e57 {
-                local_186 = (lobe_5.y < (_e23 + _e23));
-            } else {
-                local_186 = false;
-            }
-            let _e64 = local_186;
+            let _e64 = local_185;
             if _e64 {
                 if !((c_22 > cap_4.cos_a)) {
                     if (c_22 > -(cap_4.cos_a)) {
                         let _e77 = airlight_acos(c_22);
-                        local_189 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_189 = false;
+                        local_188 = false;
                     }
-                    let _e84 = local_189;
-                    local_188 = _e84;
+                    let _e84 = local_188;
+                    local_187 = _e84;
                 } else {
-                    local_188 = true;
+                    local_187 = true;
                 }
-                let _e86 = local_188;
-                local_187 = _e86;
+                let _e86 = local_187;
+                local_186 = _e86;
             } else {
-                local_187 = false;
+                local_186 = false;
             }
-            let _e88 = local_187;
+            let _e88 = local_186;
             if _e88 {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
@@ -7573,8 +7539,8 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
             }
         }
         continuing {
-            let _e92 = j_9;
-            j_9 = (_e92 + 1u);
+            let _e92 = j_10;
+            j_10 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -7609,9 +7575,9 @@ fn airlight_emitter_radiance(s_48: AirlightScene, a_29: AirlightArea, x_28: vec3
 fn airlight_area_node(s_49: AirlightScene, a_30: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along = ((a_30.h_eff * _e3.y) / _e3.x);
-    let t_14 = (a_30.x_h + along);
+    let t_13 = (a_30.x_h + along);
     let fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_13 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -7620,8 +7586,8 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     var step_2: u32 = 0u;
     var k_8: f32;
     var gauss_1: f32;
-    var j_10: u32;
-    var local_190: bool;
+    var j_11: u32;
+    var local_189: bool;
 
     let _e1 = airlight_area(s_50);
     if (_e1.outcome == 1u) {
@@ -7644,28 +7610,28 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
             let c_23 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_7 = (0.5f * (_e34 - _e36));
+            let hw_8 = (0.5f * (_e34 - _e36));
             k_8 = 0f;
             gauss_1 = 0f;
-            j_10 = 0u;
+            j_11 = 0u;
             loop {
-                let _e46 = j_10;
+                let _e46 = j_11;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_10;
+                    let _e49 = j_11;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_10;
+                    let _e59 = j_11;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_10;
-                        local_190 = (_e66 < 14u);
+                        let _e66 = j_11;
+                        local_189 = (_e66 < 14u);
                     } else {
-                        local_190 = false;
+                        local_189 = false;
                     }
-                    let _e70 = local_190;
-                    let x_37 = select((c_23 + (hw_7 * node_4.x)), (c_23 - (hw_7 * node_4.x)), _e70);
+                    let _e70 = local_189;
+                    let x_37 = select((c_23 + (hw_8 * node_4.x)), (c_23 - (hw_8 * node_4.x)), _e70);
                     let _e72 = airlight_area_node(s_50, _e1, x_37);
                     let _e73 = k_8;
                     k_8 = (_e73 + (node_4.y * _e72));
@@ -7673,14 +7639,14 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_10;
-                    j_10 = (_e82 + 1u);
+                    let _e82 = j_11;
+                    j_11 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
             let _e85 = k_8;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_7), (_e87 * hw_7), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_8), (_e87 * hw_8), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -7704,22 +7670,22 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
+    var local_190: bool;
     var local_191: bool;
-    var local_192: bool;
 
     let _e1 = airlight_valid(s_51);
     if !(!(_e1)) {
-        local_191 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_190 = true;
+    }
+    let _e10 = local_190;
+    if !(_e10) {
+        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_191 = true;
     }
-    let _e10 = local_191;
-    if !(_e10) {
-        local_192 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_192 = true;
-    }
-    let _e18 = local_192;
+    let _e18 = local_191;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7728,15 +7694,15 @@ fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_193: bool;
+    var local_192: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_193 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_193 = true;
+        local_192 = true;
     }
-    let _e11 = local_193;
+    let _e11 = local_192;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -7745,27 +7711,27 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_194: bool;
+    var local_193: bool;
     var g_29: AirlightCanonical;
 
-    let p_9 = n_3.scene;
-    let _e7 = airlight_vec_finite(p_9.light_position);
+    let p_8 = n_3.scene;
+    let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
-        let _e11 = airlight_vec_finite(p_9.dir);
-        local_194 = _e11;
+        let _e11 = airlight_vec_finite(p_8.dir);
+        local_193 = _e11;
     } else {
-        local_194 = false;
+        local_193 = false;
     }
-    let _e13 = local_194;
+    let _e13 = local_193;
     if _e13 {
         g_29 = n_3.canonical;
         if !(n_3.exact) {
-            let _e18 = airlight_canonical(p_9);
-            let _e19 = airlight_refined(p_9, _e18);
+            let _e18 = airlight_canonical(p_8);
+            let _e19 = airlight_refined(p_8, _e18);
             g_29 = _e19;
         }
         let _e20 = g_29;
-        let _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        let _e21 = airlight_in_scatter_canonical(p_8, _e20);
         r_6 = _e21;
     }
     let _e22 = r_6;
@@ -7773,29 +7739,29 @@ fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
     return _e23;
 }
 
-fn airlight_point_integral(p_2: AirlightScene) -> AirlightResult {
+fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     let _e1 = airlight_no_canonical();
-    let _e5 = airlight_node_integral(AirlightNode(p_2, 1f, _e1, false));
+    let _e5 = airlight_node_integral(AirlightNode(p_1, 1f, _e1, false));
     return _e5;
 }
 
 fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
+    var local_194: bool;
     var local_195: bool;
-    var local_196: bool;
 
     let _e1 = airlight_valid(s_52);
     if !(!(_e1)) {
-        local_195 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_194 = true;
+    }
+    let _e10 = local_194;
+    if !(_e10) {
+        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_195 = true;
     }
-    let _e10 = local_195;
-    if !(_e10) {
-        local_196 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_196 = true;
-    }
-    let _e18 = local_196;
+    let _e18 = local_195;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7804,22 +7770,22 @@ fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
+    var local_196: bool;
     var local_197: bool;
-    var local_198: bool;
 
     let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_197 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_196 = true;
+    }
+    let _e10 = local_196;
+    if !(_e10) {
+        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_197 = true;
     }
-    let _e10 = local_197;
-    if !(_e10) {
-        local_198 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_198 = true;
-    }
-    let _e18 = local_198;
+    let _e18 = local_197;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -7846,10 +7812,10 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
     var step_3: u32 = 0u;
     var k_9: f32;
     var gauss_2: f32;
-    var j_11: u32;
-    var local_199: bool;
+    var j_12: u32;
+    var local_198: bool;
     var f: f32;
-    var local_200: bool;
+    var local_199: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(_e1) {
@@ -7881,29 +7847,29 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
             let c_24 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_8 = (0.5f * (_e49 - _e51));
+            let hw_9 = (0.5f * (_e49 - _e51));
             k_9 = 0f;
             gauss_2 = 0f;
-            j_11 = 0u;
+            j_12 = 0u;
             loop {
-                let _e61 = j_11;
+                let _e61 = j_12;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_11;
+                    let _e64 = j_12;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_11;
+                    let _e74 = j_12;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_11;
-                        local_199 = (_e81 < 6u);
+                        let _e81 = j_12;
+                        local_198 = (_e81 < 6u);
                     } else {
-                        local_199 = false;
+                        local_198 = false;
                     }
-                    let _e85 = local_199;
-                    let w_12 = select((c_24 + (hw_8 * node_5.x)), (c_24 - (hw_8 * node_5.x)), _e85);
-                    let _e87 = airlight_outer_node(s_54, _e12, w_12);
+                    let _e85 = local_198;
+                    let w_11 = select((c_24 + (hw_9 * node_5.x)), (c_24 - (hw_9 * node_5.x)), _e85);
+                    let _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
@@ -7911,11 +7877,11 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_200 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_200 = false;
+                            local_199 = false;
                         }
-                        let _e106 = local_200;
+                        let _e106 = local_199;
                         if _e106 {
                             return _e93;
                         }
@@ -7929,14 +7895,14 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_11;
-                    j_11 = (_e121 + 1u);
+                    let _e121 = j_12;
+                    j_12 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;
             let _e124 = k_9;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_8), (_e126 * hw_8), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_9), (_e126 * hw_9), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

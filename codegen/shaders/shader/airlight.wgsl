@@ -2949,35 +2949,54 @@ fn airlight_parallelogram(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f3
     let above = airlight_above(z, q - foot);
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = AIRLIGHT_FLT_EPS * abs(det);
+    let width = airlight_narrowed(s, above.rho0);
     var sum = 0.0;
     for (var i = 0u; i < 4u; i++) {
         let ca = corners[i] - q;
         let cb = corners[i + 1u] - q;
-        let area = ca.x * cb.y - ca.y * cb.x;
-        if (!(area > thin)) { continue; }
-        let e = cb - ca;
-        let el = sqrt(e.x * e.x + e.y * e.y);
-        // the edge's distance h from q*, outward normal m and direction t: its points
-        // q* + h m + σ t, σ = D tan β (D = hypot(h, ρ₀ min(1, s))), β between C_i's and C_{i+1}'s
-        let h = area / el;
-        let m = vec2<f32>(e.y / el, -e.x / el);
-        let t = e / el;
-        let narrow = airlight_narrowed(s, above.rho0);
-        let reach = sqrt(h * h + narrow * narrow);
-        let first = airlight_atan2(dot(ca, t), reach);
-        let last = airlight_atan2(dot(cb, t), reach);
+        if (!(ca.x * cb.y - ca.y * cb.x > thin)) { continue; }
+        let rule = airlight_edge_rule(ca, cb, width);
         for (var j = 0u; j < 12u; j++) {
-            let node = airlight_triangle_rule(j);
-            // (cos β, sin β) from the half turn's (−sin, cos) at β + π/2 ∈ (0, π)
-            let turn = airlight_cos_sin_half_turn(0.5 * (first + last) + 0.5 * (last - first) * node.x + 0.5 * AIRLIGHT_PI);
-            let sigma = reach * -turn.x / turn.y;
-            let r2 = h * h + sigma * sigma;
-            let r = sqrt(r2);
-            let dir = (h * m + sigma * t) / r;
-            sum += node.y * 0.5 * (last - first) * h * reach / (turn.y * turn.y * r2) * airlight_flat_radial(s, a, above, dir, r);
+            let node = airlight_edge_node(rule, j);
+            sum += node.w * airlight_flat_radial(s, a, above, node.xy, node.z);
         }
     }
     return sum;
+}
+
+/// An edge a → b seen from the origin on its left (outer.rs `edge_rule`): its points h m + σ t
+/// (distance h, outward normal m = (t.y, −t.x), direction t), σ = D tan β, D = hypot(h, width),
+/// β from `first` to `last`.
+struct AirlightEdgeRule {
+    h: f32,
+    t: vec2<f32>,
+    reach: f32,
+    first: f32,
+    last: f32,
+}
+
+/// outer.rs `edge_rule`'s rule on the edge a → b (a × b > 0) with the width `width`.
+fn airlight_edge_rule(a: vec2<f32>, b: vec2<f32>, width: f32) -> AirlightEdgeRule {
+    let e = b - a;
+    let el = sqrt(e.x * e.x + e.y * e.y);
+    let t = e / el;
+    let h = (a.x * b.y - a.y * b.x) / el;
+    let reach = sqrt(h * h + width * width);
+    return AirlightEdgeRule(h, t, reach, airlight_atan2(dot(a, t), reach), airlight_atan2(dot(b, t), reach));
+}
+
+/// Node j of TRIANGLE_AZIMUTHAL on that rule: (the point's direction, its distance r, the weight
+/// in the angle ψ at the origin, dψ = h dσ/(h² + σ²)).
+fn airlight_edge_node(rule: AirlightEdgeRule, j: u32) -> vec4<f32> {
+    let node = airlight_triangle_rule(j);
+    let hw = 0.5 * (rule.last - rule.first);
+    // (cos β, sin β) from the half turn's (−sin, cos) at β + π/2 ∈ (0, π)
+    let turn = airlight_cos_sin_half_turn(0.5 * (rule.first + rule.last) + hw * node.x + 0.5 * AIRLIGHT_PI);
+    let sigma = rule.reach * -turn.x / turn.y;
+    let r2 = rule.h * rule.h + sigma * sigma;
+    let r = sqrt(r2);
+    let m = vec2<f32>(rule.t.y, -rule.t.x);
+    return vec4<f32>((rule.h * m + sigma * rule.t) / r, r, node.y * hw * rule.h * rule.reach / (turn.y * turn.y * r2));
 }
 
 /// A flat emitter's outline in its plane's coordinates about x's foot (outer.rs `Outline`): a
@@ -3162,8 +3181,8 @@ fn airlight_flat_lobe_along(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
 
 /// S(x) of a flat emitter about a phase lobe's direction p (outer.rs `flat_about_lobe`): ψ over
 /// the circle (AZIMUTHAL) on a disc holding q_L, over the wedge of its tangents from q_L
-/// (ψ = ψ_m + Ψ sin φ) off it, over the wedges between a parallelogram's corners seen from q_L
-/// (TRIANGLE_AZIMUTHAL each).
+/// (ψ = ψ_m + Ψ sin φ) off it; on a parallelogram holding q_L edge by edge (`airlight_edge_rule`),
+/// off it over the wedges between its corners seen from q_L (TRIANGLE_AZIMUTHAL each).
 fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: AirlightFlatLobe) -> f32 {
     let u = airlight_basis_e1(lobe.p);
     let v = cross(lobe.p, u);
@@ -3193,92 +3212,46 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         }
         return sum;
     }
-    // the corners' azimuths about the centre's (outside) or absolute (inside), in order
-    var mid = 0.0;
-    if (!lobe.on_emitter) { mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q); }
+    if (lobe.on_emitter) {
+        // the chords of the wedge between two corners end on the edge between them, in the lobe's
+        // plane (e ↦ (e·u, e·v): its angle is ψ) the segment between the corners' images; the
+        // image keeps or reverses the corners' turn; q_L on an edge: no chords
+        for (var i = 0u; i < 4u; i++) {
+            let ea = o.corners[i] - q;
+            let eb = o.corners[(i + 1u) % 4u] - q;
+            var ya = vec2<f32>(dot(ea, u.xy), dot(ea, v.xy));
+            var yb = vec2<f32>(dot(eb, u.xy), dot(eb, v.xy));
+            let area = ya.x * yb.y - ya.y * yb.x;
+            if (!(abs(area) > 0.0)) { continue; }
+            if (area < 0.0) {
+                let swap = ya;
+                ya = yb;
+                yb = swap;
+            }
+            let rule = airlight_edge_rule(ya, yb, lobe.l * lobe.scale);
+            for (var j = 0u; j < 12u; j++) {
+                let node = airlight_edge_node(rule, j);
+                sum += node.w * airlight_flat_lobe_along(s, z, o, lobe, u, v, node.xy);
+            }
+        }
+        return sum;
+    }
+    // the wedges between the corners' azimuths about the centre's, in order
+    let mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q);
     let psi = airlight_sort4(vec4<f32>(
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[0] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[1] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[2] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[3] - q) - mid)));
-    let wedges = select(3u, 4u, lobe.on_emitter);
-    for (var i = 0u; i < wedges; i++) {
-        let first = mid + psi[i];
-        let last = mid + select(psi[min(i + 1u, 3u)], psi.x + 2.0 * AIRLIGHT_PI, i == 3u);
-        let c = (first + last) * 0.5;
-        let hw = (last - first) * 0.5;
-        if (!lobe.on_emitter) {
-            for (var j = 0u; j < 12u; j++) {
-                let node = airlight_triangle_rule(j);
-                sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
-            }
-            continue;
-        }
-        // q_L on the emitter: the edge the wedge's chords end on, in the lobe's plane the line
-        // h n + σ t (tan(ψ − ψ_n) = σ/h), taken as σ = D tan β, D = hypot(h, L s)
-        let edge = airlight_exit_edge(o, q, airlight_lobe_half_line(u, v, lobe.p, airlight_cos_sin_turns(c)));
-        let ya = airlight_lobe_plane(u, v, o.corners[edge] - q);
-        let yb = airlight_lobe_plane(u, v, o.corners[(edge + 1u) % 4u] - q);
-        var t = (yb - ya) / sqrt(dot(yb - ya, yb - ya));
-        if (t.y * ya.x - t.x * ya.y < 0.0) { t = -t; }
-        let n = vec2<f32>(t.y, -t.x);
-        let h = dot(n, ya);
-        // q_L on that edge: the chords have no length
-        if (!(h > 0.0)) { continue; }
-        let reach = sqrt(h * h + lobe.l * lobe.scale * lobe.l * lobe.scale);
-        let psi_n = airlight_atan2(n.y, n.x);
-        let beta_first = airlight_wedge_beta(first - psi_n, h, reach);
-        let beta_last = airlight_wedge_beta(last - psi_n, h, reach);
-        let bc = (beta_first + beta_last) * 0.5;
-        let bw = (beta_last - beta_first) * 0.5;
+    for (var i = 0u; i < 3u; i++) {
+        let c = mid + (psi[i] + psi[i + 1u]) * 0.5;
+        let hw = (psi[i + 1u] - psi[i]) * 0.5;
         for (var j = 0u; j < 12u; j++) {
             let node = airlight_triangle_rule(j);
-            let cs = airlight_cos_sin_turns(bc + bw * node.x);
-            let y = h * cs.x * n + reach * cs.y * t;
-            let weight = h * reach / (h * h * cs.x * cs.x + reach * reach * cs.y * cs.y);
-            sum += node.y * bw * weight * airlight_flat_lobe_along(s, z, o, lobe, u, v, y / sqrt(dot(y, y)));
+            sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
         }
     }
     return sum;
-}
-
-/// The direction w_ψ + k p of the half-line in which the half-plane of azimuth ψ about p
-/// (`cs` = (cos ψ, sin ψ)) meets the plane (outer.rs `flat_about_lobe`'s `half_line`).
-fn airlight_lobe_half_line(u: vec3<f32>, v: vec3<f32>, p: vec3<f32>, cs: vec2<f32>) -> vec2<f32> {
-    let w = cs.x * u + cs.y * v;
-    return w.xy + w.z / -p.z * p.xy;
-}
-
-/// A point e of the plane (about q_L) in the plane normal to p: (e·u, e·v), whose angle is the
-/// azimuth of its half-plane (outer.rs `flat_about_lobe`'s `lobe_plane`).
-fn airlight_lobe_plane(u: vec3<f32>, v: vec3<f32>, e: vec2<f32>) -> vec2<f32> {
-    return vec2<f32>(e.x * u.x + e.y * u.y, e.x * v.x + e.y * v.y);
-}
-
-/// β of a wedge's end at ψ − ψ_n = `delta`: tan β = (h/D) tan(ψ − ψ_n), |ψ − ψ_n| ≤ π/2.
-fn airlight_wedge_beta(delta: f32, h: f32, reach: f32) -> f32 {
-    let cs = airlight_cos_sin_turns(delta);
-    return airlight_atan2(h * cs.y, reach * max(cs.x, 0.0));
-}
-
-/// The edge (its first corner's index) by which q + r e leaves a parallelogram holding q
-/// (outer.rs `polygon_chord`'s far end), written out edge by edge.
-fn airlight_exit_edge(o: AirlightOutline, q: vec2<f32>, e: vec2<f32>) -> u32 {
-    var exit = vec2<f32>(AIRLIGHT_FLT_MAX, 0.0);
-    exit = airlight_exit_through(exit, 0.0, o.corners[0], o.corners[1], q, e);
-    exit = airlight_exit_through(exit, 1.0, o.corners[1], o.corners[2], q, e);
-    exit = airlight_exit_through(exit, 2.0, o.corners[2], o.corners[3], q, e);
-    exit = airlight_exit_through(exit, 3.0, o.corners[3], o.corners[0], q, e);
-    return u32(exit.y);
-}
-
-/// (r, edge) of the nearer exit of q + r e: the one so far or that through the edge a → b
-/// (index `index`) if q + r e leaves its half-plane sooner.
-fn airlight_exit_through(exit: vec2<f32>, index: f32, a: vec2<f32>, b: vec2<f32>, q: vec2<f32>, e: vec2<f32>) -> vec2<f32> {
-    let m = vec2<f32>(b.y - a.y, a.x - b.x);
-    let den = dot(e, m);
-    let r = -dot(q - a, m) / den;
-    return select(exit, vec2<f32>(r, index), den > 0.0 && r < exit.x);
 }
 
 /// The cap a sphere subtends from x (outer.rs `Cap`): its centre's unit direction `a` at

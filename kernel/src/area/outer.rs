@@ -115,6 +115,28 @@ fn graded_from<T: Real>(scale: T, from: T, to: T, mut f: impl FnMut(T, T, T)) {
     });
 }
 
+/// `f(direction, r, w)` at [`TRIANGLE_AZIMUTHAL`]'s nodes along the edge `a → b` seen from the
+/// origin on its left (`a × b > 0`): its points `h m + σ t` (distance `h`, outward normal `m`,
+/// direction `t`) taken as `σ = D tan β`, `D = hypot(h, width)`, with `w` the weight in the
+/// angle `ψ` at the origin (`dψ = h dσ/(h² + σ²)`) and `r` the point's distance. In `ψ` the
+/// chords of a sliver (an origin near the edge's line) grow from `h` to the edge's length within
+/// `h/length` radians; in `β` they are flat over `D` ([`parallelogram`]'s triangles, `width` the
+/// narrowed `ρ₀`; [`flat_about_lobe`]'s wedges, `width` the lobe's footprint `L s`; DESIGN.md §12).
+fn edge_rule<T: Real>(a: (T, T), b: (T, T), width: T, mut f: impl FnMut((T, T), T, T)) {
+    let e = (b.0 - a.0, b.1 - a.1);
+    let el = e.0.hypot(e.1);
+    let (h, m, t) = ((a.0 * b.1 - a.1 * b.0) / el, (e.1 / el, -e.0 / el), (e.0 / el, e.1 / el));
+    let reach = h.hypot(width);
+    let ends = [a, b].map(|c| ((c.0 * t.0 + c.1 * t.1) / reach).atan());
+    each_node(&TRIANGLE_AZIMUTHAL, ends[0], ends[1], |beta, w| {
+        let (sin, cos) = sin_cos_turns(beta);
+        let sigma = reach * sin / cos;
+        let r2 = h * h + sigma * sigma;
+        let r = r2.sqrt();
+        f(((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r), r, w * h * reach / (cos * cos * r2));
+    });
+}
+
 /// The azimuths of [`AZIMUTHAL`], once per ray: `(cos ψ, sin ψ, weight)` over the whole circle and
 /// over the half `ψ ∈ [−π/2, π/2]`.
 struct Azimuths<T> {
@@ -307,30 +329,14 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
     let above = Above::new(z, dirs, (q.0 - foot.0, q.1 - foot.1));
     // a triangle (q*, C_i, C_{i+1}) without area (q* on its edge) is left out
     let thin = T::epsilon() * det.abs();
+    let width = light.narrowed(above.rho0);
     let mut sum = T::zero();
     for i in 0..4 {
         let (a, b) = (corners[i], corners[(i + 1) % 4]);
         let (a, b) = ((a.0 - q.0, a.1 - q.1), (b.0 - q.0, b.1 - q.1));
-        let area = a.0 * b.1 - a.1 * b.0;
-        if !(area > thin) {
-            continue;
+        if a.0 * b.1 - a.1 * b.0 > thin {
+            edge_rule(a, b, width, |dir, r, w| sum = sum + w * radial(light, &above, dir, r));
         }
-        let e = (b.0 - a.0, b.1 - a.1);
-        let el = (e.0 * e.0 + e.1 * e.1).sqrt();
-        // the edge's distance h from q*, outward normal m and direction t: its points
-        // q* + h m + σ t, σ from a·t to b·t, taken as σ = D tan β (D = hypot(h, ρ₀ min(1, s)));
-        // dψ = h dσ/(h² + σ²)
-        let (h, m, t) = (area / el, (e.1 / el, -e.0 / el), (e.0 / el, e.1 / el));
-        let reach = h.hypot(light.narrowed(above.rho0));
-        let ends = [a, b].map(|c| ((c.0 * t.0 + c.1 * t.1) / reach).atan());
-        each_node(&TRIANGLE_AZIMUTHAL, ends[0], ends[1], |beta, w| {
-            let (sin, cos) = sin_cos_turns(beta);
-            let sigma = reach * sin / cos;
-            let r2 = h * h + sigma * sigma;
-            let r = r2.sqrt();
-            let dir = ((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r);
-            sum = sum + w * h * reach / (cos * cos * r2) * radial(light, &above, dir, r);
-        });
     }
     sum
 }
@@ -363,7 +369,23 @@ impl<T: Real> Outline<T> {
                 let (lo, hi) = (r1.min(r2), r1.max(r2));
                 (hi > T::zero()).then(|| (lo.max(T::zero()), hi))
             }
-            Outline::Polygon(corners) => polygon_chord(&corners, q, e).map(|(chord, _)| chord),
+            Outline::Polygon(corners) => {
+                // clipped by each edge's half-plane (Cyrus–Beck)
+                let (mut lo, mut hi) = (T::zero(), T::infinity());
+                for i in 0..4 {
+                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                    let m = (b.1 - a.1, a.0 - b.0);
+                    let (num, den) = ((q.0 - a.0) * m.0 + (q.1 - a.1) * m.1, e.0 * m.0 + e.1 * m.1);
+                    if den > T::zero() {
+                        hi = hi.min(-num / den);
+                    } else if den < T::zero() {
+                        lo = lo.max(-num / den);
+                    } else if num > T::zero() {
+                        return None;
+                    }
+                }
+                (lo < hi).then_some((lo, hi))
+            }
         }
     }
 
@@ -401,30 +423,6 @@ impl<T: Real> Outline<T> {
             }
         }
     }
-}
-
-/// [`Outline::chord`] of a parallelogram (corners counter-clockwise), clipped by each edge's
-/// half-plane (Cyrus–Beck), with the edges its ends lie on (the first corner's index of each;
-/// 4 where an end is the half-line's start).
-fn polygon_chord<T: Real>(corners: &[(T, T); 4], q: (T, T), e: (T, T)) -> Option<((T, T), (usize, usize))> {
-    let (mut lo, mut hi, mut edges) = (T::zero(), T::infinity(), (4, 4));
-    for i in 0..4 {
-        let (a, b) = (corners[i], corners[(i + 1) % 4]);
-        let m = (b.1 - a.1, a.0 - b.0);
-        let (num, den) = ((q.0 - a.0) * m.0 + (q.1 - a.1) * m.1, e.0 * m.0 + e.1 * m.1);
-        if den > T::zero() {
-            if -num / den < hi {
-                (hi, edges.1) = (-num / den, i);
-            }
-        } else if den < T::zero() {
-            if -num / den > lo {
-                (lo, edges.0) = (-num / den, i);
-            }
-        } else if num > T::zero() {
-            return None;
-        }
-    }
-    (lo < hi).then_some(((lo, hi), edges))
 }
 
 /// A phase lobe pointing at a flat emitter: its direction `p = sign·d` in the plane's coordinates
@@ -519,58 +517,31 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
                 }
             }
         }
+        Outline::Polygon(corners) if on_emitter => {
+            // the chords of the wedge between two corners end on the edge between them, in the
+            // lobe's plane (a point e ↦ (e·u, e·v): its angle is ψ, its length about L θ) the
+            // segment between the corners' images; they turn as a parallelogram's triangles do,
+            // with the lobe's footprint L s in place of ρ₀ min(1, s)
+            let lobe_plane = corners.map(|c| ((c.0 - q.0) * u[0] + (c.1 - q.1) * u[1], (c.0 - q.0) * v[0] + (c.1 - q.1) * v[1]));
+            for i in 0..4 {
+                let (a, b) = (lobe_plane[i], lobe_plane[(i + 1) % 4]);
+                // the image keeps or reverses the corners' turn; q_L on an edge: no chords
+                let area = a.0 * b.1 - a.1 * b.0;
+                let (a, b) = if area < T::zero() { (b, a) } else { (a, b) };
+                if area.abs() > T::zero() {
+                    edge_rule(a, b, l * scale, |dir, _, w| sum = sum + w * along(dir.0, dir.1));
+                }
+            }
+        }
         Outline::Polygon(corners) => {
-            // the corners' azimuths about the centre's (outside) or absolute (inside), in order
-            let mid = if on_emitter { T::zero() } else { azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1)) };
+            // the wedges between the corners' azimuths about the centre's, in order
+            let mid = azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1));
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
-            let wedges = if on_emitter { 4 } else { 3 };
-            // a point e of the plane (about q_L) in the plane normal to p: its angle is the
-            // azimuth ψ of its half-plane, its length about L θ
-            let lobe_plane = |e: (T, T)| (e.0 * u[0] + e.1 * u[1], e.0 * v[0] + e.1 * v[1]);
-            for i in 0..wedges {
-                let (from, to) = (mid + psi[i], mid + if i == 3 { psi[0] + T::PI() + T::PI() } else { psi[i + 1] });
-                if !on_emitter {
-                    each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
-                        let (s, c) = sin_cos_turns(a);
-                        sum = sum + w * along(c, s);
-                    });
-                    continue;
-                }
-                // q_L on the emitter: the wedge's chords end on the edge between its corners, in
-                // the lobe's plane the line h n + σ t, on which tan(ψ − ψ_n) = σ/h; they turn as a
-                // parallelogram's triangles do (a lobe's footprint L s in place of ρ₀ min(1, s)),
-                // so σ = D tan β, D = hypot(h, L s)
-                let (sm, cm) = sin_cos_turns(T::lit(0.5) * (from + to));
-                let Some((_, (_, edge))) = polygon_chord(&corners, q, half_line(cm, sm).1) else {
-                    continue;
-                };
-                let (a, b) = (corners[edge % 4], corners[(edge + 1) % 4]);
-                let (ya, yb) = (lobe_plane((a.0 - q.0, a.1 - q.1)), lobe_plane((b.0 - q.0, b.1 - q.1)));
-                let len = (yb.0 - ya.0).hypot(yb.1 - ya.1);
-                // t along the edge, n = (t.1, −t.0) towards it from q_L: ψ increases with σ
-                let mut t = ((yb.0 - ya.0) / len, (yb.1 - ya.1) / len);
-                if t.1 * ya.0 - t.0 * ya.1 < T::zero() {
-                    t = (-t.0, -t.1);
-                }
-                let n = (t.1, -t.0);
-                let h = n.0 * ya.0 + n.1 * ya.1;
-                if !(h > T::zero()) {
-                    // q_L on that edge: the chords have no length
-                    continue;
-                }
-                let reach = h.hypot(l * scale);
-                let psi_n = n.1.atan2(n.0);
-                // β of the wedge's ends: tan β = (h/D) tan(ψ − ψ_n), |ψ − ψ_n| ≤ π/2
-                let beta = |psi: T| {
-                    let (s, c) = sin_cos_turns(wrap(psi - psi_n));
-                    (h * s).atan2(reach * c.max(T::zero()))
-                };
-                each_node(&TRIANGLE_AZIMUTHAL, beta(from), beta(to), |b, w| {
-                    let (sb, cb) = sin_cos_turns(b);
-                    let (y0, y1) = (h * cb * n.0 + reach * sb * t.0, h * cb * n.1 + reach * sb * t.1);
-                    let r = y0.hypot(y1);
-                    sum = sum + w * h * reach / (h * h * cb * cb + reach * reach * sb * sb) * along(y0 / r, y1 / r);
+            for i in 0..3 {
+                each_node(&TRIANGLE_AZIMUTHAL, mid + psi[i], mid + psi[i + 1], |a, w| {
+                    let (s, c) = sin_cos_turns(a);
+                    sum = sum + w * along(c, s);
                 });
             }
         }
