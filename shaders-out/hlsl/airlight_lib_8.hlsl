@@ -781,8 +781,8 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 bool airlight_in_series_region(float2 z_5)
 {
     float x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    float y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_29 * x_29) + (y_6 * y_6)) < 1.0);
+    float y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_29 * x_29) + (y_7 * y_7)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -1397,15 +1397,15 @@ float airlight_moment_gauss(AirlightHalf half_)
         {
             uint _e26 = j;
             float xi = nodes[min(uint(_e26), 3u)].x;
-            float y_7 = (yc + (hw * xi));
+            float y_8 = (yc + (hw * xi));
             dv = (hw * (1.0 + xi));
             if (half_.second) {
-                dv = ((hw * (1.0 - xi)) / (y_7 * half_.y_hi));
+                dv = ((hw * (1.0 - xi)) / (y_8 * half_.y_hi));
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_7 * y_7))));
+            m = (_e42 + (((nodes[min(uint(_e43), 3u)].y * hw) * exp((-(half_.big_h) * _e49))) / (1.0 + (y_8 * y_8))));
         }
     }
     float _e61 = m;
@@ -2351,10 +2351,10 @@ AirlightPanel airlight_y_panel(AirlightScene s_7, AirlightCanonical g_9, float s
         {
             uint _e28 = i_7;
             const float _e29 = airlight_node(_e8, _e28);
-            float y_8 = (yc_1 + (r_9 * _e29));
-            float weight_2 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_8 * b_5)));
-            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_8);
-            float over_1 = (1.0 / (1.0 + (y_8 * y_8)));
+            float y_9 = (yc_1 + (r_9 * _e29));
+            float weight_2 = exp(((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_9 * b_5)));
+            const float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_9);
+            float over_1 = (1.0 / (1.0 + (y_9 * y_9)));
             uint _e47 = i_7;
             samples_1[min(uint(_e47), 7u)] = ((_e41 * over_1) * weight_2);
             float _e51 = f_max_2;
@@ -2486,10 +2486,10 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
         {
             uint _e22 = i_8;
             const float _e23 = airlight_node(_e6, _e22);
-            float y_9 = (yc_2 + (r_10 * _e23));
-            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_9);
+            float y_10 = (yc_2 + (r_10 * _e23));
+            const float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_10);
             uint _e27 = i_8;
-            samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_9 * y_9)));
+            samples_2[min(uint(_e27), 7u)] = (_e26 / (1.0 + (y_10 * y_10)));
             float _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             float _e36 = g_avg_1;
@@ -3133,8 +3133,8 @@ float airlight_cut_length(float big_h_1, float v_s, float span)
     float inv_h = (1.0 / big_h_1);
     float w_4 = (v_s + inv_h);
     float r_11 = ((1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s)));
-    float e_9 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_9 * inv_h);
+    float e_10 = (1.0 + log(((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_10 * inv_h);
 }
 
 float airlight_weighted(float sigma_s_1, float intensity_3, float h_2, float x_11, float j_1)
@@ -3338,15 +3338,15 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             bool below_1 = (lower <= 1.5707964);
             float _e248 = psi1_1;
             const float2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
-            float cs_2 = _e254.y;
+            float cs_3 = _e254.y;
             float sn = (below_1 ? -(_e254.x) : _e254.x);
             float near_pole = (1.0 + _e254.x);
-            float far_pole = ((cs_2 * cs_2) / near_pole);
+            float far_pole = ((cs_3 * cs_3) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_10 = (below_1 ? (cs_2 / near_pole) : (near_pole / cs_2));
-            float weight_3 = ((cs_2 > 0.0) ? exp(-(max((big_h_7 * (y_10 - _e26)), 0.0))) : 0.0);
-            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
+            float y_11 = (below_1 ? (cs_3 / near_pole) : (near_pole / cs_3));
+            float weight_3 = ((cs_3 > 0.0) ? exp(-(max((big_h_7 * (y_11 - _e26)), 0.0))) : 0.0);
+            const float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
             const float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
             float gw = (weight_3 * f_2);
@@ -4873,9 +4873,9 @@ float2 airlight_two_sum(float a_13, float b_10, uint key_1)
     const float _e4 = airlight_opaque((a_13 + b_10), key_1);
     const float _e6 = airlight_opaque((_e4 - a_13), key_1);
     const float _e8 = airlight_opaque((_e4 - _e6), key_1);
-    float e_10 = ((a_13 - _e8) + (b_10 - _e6));
-    const bool _e12 = airlight_is_finite(e_10);
-    return float2(_e4, (_e12 ? e_10 : 0.0));
+    float e_11 = ((a_13 - _e8) + (b_10 - _e6));
+    const bool _e12 = airlight_is_finite(e_11);
+    return float2(_e4, (_e12 ? e_11 : 0.0));
 }
 
 float airlight_split_high(float x_15)
@@ -4890,9 +4890,9 @@ float2 airlight_two_product(float a_14, float b_11, uint key_2)
     float al = (a_14 - _e5);
     const float _e7 = airlight_split_high(b_11);
     float bl = (b_11 - _e7);
-    float e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    const bool _e17 = airlight_is_finite(e_11);
-    return float2(_e4, (_e17 ? e_11 : 0.0));
+    float e_12 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    const bool _e17 = airlight_is_finite(e_12);
+    return float2(_e4, (_e17 ? e_12 : 0.0));
 }
 
 float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, uint key_3)
@@ -4988,10 +4988,10 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain)
     }
     const float3 _e113 = airlight_normalize(dir_2);
     const float3 _e114 = airlight_normalize(w_6);
-    float3 n_4 = -(cross(_e113, _e114));
+    float3 n_5 = -(cross(_e113, _e114));
     out_2.h = h_7;
     float3 _e119 = a_16;
-    out_2.d_c = dot(n_4, _e119);
+    out_2.d_c = dot(n_5, _e119);
     AirlightCanonical _e121 = out_2;
     const AirlightCanonical airlightcanonical_5 = _e121;
     return airlightcanonical_5;
@@ -5763,20 +5763,20 @@ AirlightOuter airlight_surface(AirlightScene s_25)
         float3 _e112 = u_1;
         float x_36 = dot(_e111, _e112);
         float3 _e114 = u_1;
-        float y_11 = dot(_e111, cross(l_3, _e114));
+        float y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_36 * x_36) + (y_11 * y_11)));
+        g_22.sin_r = sqrt(((x_36 * x_36) + (y_12 * y_12)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         const float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            const float _e140 = airlight_angle(x_36, abs(y_11));
-            float phi_r = (((y_11 < 0.0) ? -1.0 : 1.0) * _e140);
+            const float _e140 = airlight_angle(x_36, abs(y_12));
+            float phi_r = (((y_12 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = float3(-(phi_r), (x_36 / _e145), (-(y_11) / _e149));
+            g_22.delta = float3(-(phi_r), (x_36 / _e145), (-(y_12) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5945,33 +5945,33 @@ AirlightOuter airlight_surface(AirlightScene s_25)
             }
             {
                 uint _e339 = i_22;
-                float e_12 = g_22.gamma[min(uint(_e339), 12u)];
-                if (!((e_12 == kinks[0]))) {
-                    local_137 = (e_12 == kinks[1]);
+                float e_13 = g_22.gamma[min(uint(_e339), 12u)];
+                if (!((e_13 == kinks[0]))) {
+                    local_137 = (e_13 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
                 bool _e350 = local_137;
                 if (!(_e350)) {
-                    local_138 = (e_12 == kinks[2]);
+                    local_138 = (e_13 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
                 bool _e357 = local_138;
                 if (!(_e357)) {
-                    local_139 = (e_12 == kinks[3]);
+                    local_139 = (e_13 == kinks[3]);
                 } else {
                     local_139 = true;
                 }
                 bool _e364 = local_139;
                 if (!(_e364)) {
-                    local_140 = (e_12 == kinks[4]);
+                    local_140 = (e_13 == kinks[4]);
                 } else {
                     local_140 = true;
                 }
                 bool _e371 = local_140;
                 if (!(_e371)) {
-                    local_141 = (e_12 == kinks[5]);
+                    local_141 = (e_13 == kinks[5]);
                 } else {
                     local_141 = true;
                 }
@@ -6255,11 +6255,11 @@ AirlightOuter airlight_outer(AirlightScene s_26)
         const AirlightOuter airlightouter_7 = _e37;
         return airlightouter_7;
     }
-    float3 e_13 = (ab_1 / (_e15).xxx);
+    float3 e_14 = (ab_1 / (_e15).xxx);
     const float3 _e41 = airlight_normalize(s_26.dir);
     float3 w0_ = (s_26.light_position - s_26.origin);
-    float cos_a_2 = dot(e_13, _e41);
-    float along_e = dot(e_13, w0_);
+    float cos_a_2 = dot(e_14, _e41);
+    float along_e = dot(e_14, w0_);
     float along_d = dot(_e41, w0_);
     float sin2_ = (1.0 - (cos_a_2 * cos_a_2));
     bool infinite_5 = ((s_26.flags & 1u) != 0u);
@@ -6270,7 +6270,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
+    const float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_14 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
         local_147 = (sin_a_1 > 0.0);
@@ -6365,7 +6365,7 @@ AirlightOuter airlight_outer(AirlightScene s_26)
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_13;
+    g_24.e = e_14;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6497,14 +6497,14 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_37 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_21 - float(i_37));
-        float a_42 = g_25.gamma[min(uint(i_37), 12u)];
-        float b_20 = g_25.gamma[min(uint((i_37 + 1u)), 12u)];
+        uint i_39 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_8 = (x_21 - float(i_39));
+        float a_42 = g_25.gamma[min(uint(i_39), 12u)];
+        float b_20 = g_25.gamma[min(uint((i_39 + 1u)), 12u)];
         float w_8 = (b_20 - a_42);
         float u_8 = (1.0 - t_8);
-        bool smooth_a = (((g_25.smooth_edges >> i_37) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_37 + 1u)) & 1u) != 0u);
+        bool smooth_a = (((g_25.smooth_edges >> i_39) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u);
         gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
         jacobian = (((w_8 * 6.0) * t_8) * u_8);
         float _e58 = gamma_1;
@@ -6574,10 +6574,10 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             float arc = (2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_27.brdf_scale * 0.31830987) * arc);
         } else {
-            float n_5 = s_27.brdf_exponent;
+            float n_6 = s_27.brdf_exponent;
             float _e161 = gamma_1;
-            const float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
-            weight = (((s_27.brdf_scale * (n_5 + 2.0)) * 0.15915494) * _e162);
+            const float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
+            weight = (((s_27.brdf_scale * (n_6 + 2.0)) * 0.15915494) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0.0;
@@ -6984,13 +6984,13 @@ AirlightArea airlight_area(AirlightScene s_35)
         float b_21 = dot(oc, _e45);
         float _e72 = a_18.radius;
         float _e74 = a_18.radius;
-        float k_10 = (dot(oc, oc) - (_e72 * _e74));
-        float disc_2 = ((b_21 * b_21) - k_10);
+        float k_12 = (dot(oc, oc) - (_e72 * _e74));
+        float disc_2 = ((b_21 * b_21) - k_12);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
             float q_12 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
             cut0_ = q_12;
-            cut1_ = (k_10 / q_12);
+            cut1_ = (k_12 / q_12);
             cut_count = 2u;
         }
     } else {
@@ -7264,17 +7264,17 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
             uint _e40 = i_28;
             float2 a_44 = o.corners[min(uint(_e40), 3u)];
             uint _e43 = i_28;
-            float2 e_14 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
+            float2 e_15 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
             bool _e50 = inside;
             if (_e50) {
-                local_177 = ((((q_4.x - a_44.x) * e_14.y) - ((q_4.y - a_44.y) * e_14.x)) <= 0.0);
+                local_177 = ((((q_4.x - a_44.x) * e_15.y) - ((q_4.y - a_44.y) * e_15.x)) <= 0.0);
             } else {
                 local_177 = false;
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_10 = clamp(((((q_4.x - a_44.x) * e_14.x) + ((q_4.y - a_44.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0.0, 1.0);
-            float2 p_5 = (a_44 + (t_10 * e_14));
+            float t_10 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
+            float2 p_5 = (a_44 + (t_10 * e_15));
             float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
@@ -7319,8 +7319,8 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
         if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
         loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_33) {
-            uint _e74 = j_5;
-            j_5 = (_e74 + 1u);
+            uint _e80 = j_5;
+            j_5 = (_e80 + 1u);
         }
         loop_init_33 = false;
         uint _e13 = j_5;
@@ -7350,15 +7350,15 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
                 const float2 _e49 = airlight_outline_nearest(o_2, q_13);
                 float3 to_near = float3(_e49, -(z_11));
                 float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
-                bool on_emitter = all((_e49 == q_13));
+                bool on_emitter = (length((_e49 - q_13)) <= (1.9073486e-6 * ((length(q_13) + size_1) + z_11)));
                 if (!(on_emitter)) {
-                    const float _e63 = airlight_acos(cos_1);
-                    local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    const float _e69 = airlight_acos(cos_1);
+                    local_180 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
                     local_180 = true;
                 }
-                bool _e69 = local_180;
-                if (_e69) {
+                bool _e75 = local_180;
+                if (_e75) {
                     const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                     return airlightflatlobe;
                 }
@@ -7395,15 +7395,15 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
         float a_45 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         float b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        float k_11 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        float disc_3 = ((b_22 * b_22) - (a_45 * k_11));
+        float k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
+        float disc_3 = ((b_22 * b_22) - (a_45 * k_13));
         if (!((disc_3 > 0.0))) {
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
         float t_11 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
         float r1_2 = (t_11 / a_45);
-        float r2_3 = (k_11 / t_11);
+        float r2_3 = (k_13 / t_11);
         float hi_8 = max(r1_2, r2_3);
         if (!((hi_8 > 0.0))) {
             return (0.0).xx;
@@ -7455,64 +7455,64 @@ float airlight_flat_lobe_along(AirlightScene s_39, float z_13, AirlightOutline o
     float sum_8 = 0.0;
 
     float3 w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    float k_12 = (w_9.z / -(lobe_2.p.z));
-    const float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_12 * lobe_2.p.xy)));
+    float k_14 = (w_9.z / -(lobe_2.p.z));
+    const float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
-    const float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
-    const float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
+    const float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
+    const float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     const float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
     float c_18 = (0.5 * _e42.y);
     float hw_3 = (0.5 * _e42.y);
     float _e52 = sum_8;
-    const float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.09501251 * hw_3)));
+    const float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    const float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.09501251 * hw_3)));
+    const float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    const float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.28160354 * hw_3)));
+    const float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    const float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.28160354 * hw_3)));
+    const float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    const float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.45801678 * hw_3)));
+    const float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    const float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.45801678 * hw_3)));
+    const float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    const float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.61787623 * hw_3)));
+    const float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    const float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.61787623 * hw_3)));
+    const float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    const float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.7554044 * hw_3)));
+    const float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    const float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.7554044 * hw_3)));
+    const float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    const float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.8656312 * hw_3)));
+    const float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    const float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.8656312 * hw_3)));
+    const float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    const float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.944575 * hw_3)));
+    const float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    const float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.944575 * hw_3)));
+    const float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    const float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.9894009 * hw_3)));
+    const float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    const float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.9894009 * hw_3)));
+    const float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7520,8 +7520,8 @@ float airlight_flat_lobe_along(AirlightScene s_39, float z_13, AirlightOutline o
 
 float airlight_lobe_azimuth(float3 u_5, float3 v_7, float2 e_7)
 {
-    float y_12 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
-    const float _e17 = airlight_atan2_(y_12, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    float y_13 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    const float _e17 = airlight_atan2_(y_13, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
     return _e17;
 }
 
@@ -7549,9 +7549,9 @@ AirlightEdgeRule ConstructAirlightEdgeRule(float arg0, float2 arg1, float arg2, 
 
 AirlightEdgeRule airlight_edge_rule(float2 a_23, float2 b_14, float width_1)
 {
-    float2 e_15 = (b_14 - a_23);
-    float el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
-    float2 t_12 = (e_15 / (el).xx);
+    float2 e_16 = (b_14 - a_23);
+    float el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
+    float2 t_12 = (e_16 / (el).xx);
     float h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
     float reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
     const float _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
@@ -7579,40 +7579,123 @@ float4 airlight_sort4_(float4 x_24)
     return float4(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
+float2 airlight_entry_normal(float2 y_6[4], float2 e_8)
+{
+    float nearest_1 = AIRLIGHT_FLT_MAX;
+    float2 normal_3 = (0.0).xx;
+    uint i_29 = 0u;
+    bool local_181 = (bool)0;
+    bool local_182 = (bool)0;
+    bool local_183 = (bool)0;
+
+    uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+    bool loop_init_34 = true;
+    while(true) {
+        if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_34) {
+            uint _e80 = i_29;
+            i_29 = (_e80 + 1u);
+        }
+        loop_init_34 = false;
+        uint _e9 = i_29;
+        if ((_e9 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = i_29;
+            float2 a_47 = y_6[min(uint(_e12), 3u)];
+            uint _e14 = i_29;
+            float2 d_5 = (y_6[min(uint(airlight_naga_mod((_e14 + 1u), 4u)), 3u)] - a_47);
+            float den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
+            if ((den_1 == 0.0)) {
+                continue;
+            }
+            float r_15 = (((a_47.x * d_5.y) - (a_47.y * d_5.x)) / den_1);
+            float along = (((a_47.x * e_8.y) - (a_47.y * e_8.x)) / den_1);
+            if ((r_15 > 0.0)) {
+                local_181 = (along >= 0.0);
+            } else {
+                local_181 = false;
+            }
+            bool _e53 = local_181;
+            if (_e53) {
+                local_182 = (along <= 1.0);
+            } else {
+                local_182 = false;
+            }
+            bool _e59 = local_182;
+            if (_e59) {
+                float _e62 = nearest_1;
+                local_183 = (r_15 < _e62);
+            } else {
+                local_183 = false;
+            }
+            bool _e65 = local_183;
+            if (_e65) {
+                nearest_1 = r_15;
+                float2 n_7 = (float2(d_5.y, -(d_5.x)) / (sqrt(dot(d_5, d_5))).xx);
+                normal_3 = ((dot(n_7, a_47) < 0.0) ? -(n_7) : n_7);
+            }
+        }
+    }
+    float2 _e82 = normal_3;
+    return _e82;
+}
+
+float airlight_mercator_cut(uint k_8)
+{
+    float cuts_5[8] = airlight_Constructarray8_float_(-30.0, -14.0, -6.0, -2.0, 2.0, 6.0, 14.0, 30.0);
+    return cuts_5[min(uint(k_8), 7u)];
+}
+
+float airlight_mercator(float2 n_3, float2 cs_2)
+{
+    const float _e3 = airlight_mercator_cut(7u);
+    float tangent = (((cs_2.y * n_3.x) - (cs_2.x * n_3.y)) / max(((cs_2.x * n_3.x) + (cs_2.y * n_3.y)), 1e-30));
+    const float _e21 = airlight_asinh(tangent);
+    return clamp(_e21, -(_e3), _e3);
+}
+
 float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
-    uint i_29 = 0u;
     uint i_30 = 0u;
     uint i_31 = 0u;
+    float4 area = (0.0).xxxx;
+    uint i_32 = 0u;
+    uint i_33 = 0u;
     float2 ya = (float2)0;
     float2 yb = (float2)0;
     uint j_7 = (uint)0;
-    uint i_32 = 0u;
+    uint i_34 = 0u;
     uint j_8 = (uint)0;
+    uint k_9 = (uint)0;
+    uint j_9 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_3.p);
     float3 v_9 = cross(lobe_3.p, _e5);
     float2 q_14 = lobe_3.q;
     if ((o_5.radius > 0.0)) {
         if (lobe_3.on_emitter) {
-            uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-            bool loop_init_34 = true;
+            uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+            bool loop_init_35 = true;
             while(true) {
-                if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
-                loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-                if (!loop_init_34) {
-                    uint _e30 = i_29;
-                    i_29 = (_e30 + 1u);
+                if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+                loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+                if (!loop_init_35) {
+                    uint _e30 = i_30;
+                    i_30 = (_e30 + 1u);
                 }
-                loop_init_34 = false;
-                uint _e17 = i_29;
+                loop_init_35 = false;
+                uint _e17 = i_30;
                 if ((_e17 < 32u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e21 = i_29;
+                    uint _e21 = i_30;
                     const float3 _e22 = airlight_azimuths(true, _e21);
                     float _e23 = sum_9;
                     const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
@@ -7622,34 +7705,34 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             float _e32 = sum_9;
             return _e32;
         }
-        float2 d_5 = (o_5.corners[0] - q_14);
-        float dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
+        float2 d_6 = (o_5.corners[0] - q_14);
+        float dq_2 = sqrt(((d_6.x * d_6.x) + (d_6.y * d_6.y)));
         float sb_1 = (o_5.radius / dq_2);
         float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        const float _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        const float _e65 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        const float _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
+        const float _e65 = airlight_lobe_azimuth(_e5, v_9, float2(((d_6.x * cb) - (d_6.y * sb_1)), ((d_6.y * cb) + (d_6.x * sb_1))));
         const float _e67 = airlight_wrap_turn((_e65 - _e53));
-        const float _e79 = airlight_lobe_azimuth(_e5, v_9, float2(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        const float _e79 = airlight_lobe_azimuth(_e5, v_9, float2(((d_6.x * cb) + (d_6.y * sb_1)), ((d_6.y * cb) - (d_6.x * sb_1))));
         const float _e81 = airlight_wrap_turn((_e79 - _e53));
         float centre_2 = (_e53 + ((_e67 + _e81) * 0.5));
         float half_19 = (abs((_e67 - _e81)) * 0.5);
-        uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-        bool loop_init_35 = true;
+        uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+        bool loop_init_36 = true;
         while(true) {
-            if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
-            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-            if (!loop_init_35) {
-                uint _e111 = i_30;
-                i_30 = (_e111 + 1u);
+            if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+            if (!loop_init_36) {
+                uint _e111 = i_31;
+                i_31 = (_e111 + 1u);
             }
-            loop_init_35 = false;
-            uint _e92 = i_30;
+            loop_init_36 = false;
+            uint _e92 = i_31;
             if ((_e92 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e96 = i_30;
+                uint _e96 = i_31;
                 const float3 _e97 = airlight_azimuths(false, _e96);
                 float _e98 = sum_9;
                 const float2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
@@ -7660,136 +7743,229 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         float _e113 = sum_9;
         return _e113;
     }
+    float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), float2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), float2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), float2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
     if (lobe_3.on_emitter) {
-        uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-        bool loop_init_36 = true;
+        uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+        bool loop_init_37 = true;
         while(true) {
-            if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-            if (!loop_init_36) {
-                uint _e186 = i_31;
-                i_31 = (_e186 + 1u);
+            if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+            loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+            if (!loop_init_37) {
+                uint _e188 = i_32;
+                i_32 = (_e188 + 1u);
             }
-            loop_init_36 = false;
-            uint _e117 = i_31;
-            if ((_e117 < 4u)) {
+            loop_init_37 = false;
+            uint _e165 = i_32;
+            if ((_e165 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e121 = i_31;
-                float2 ea = (o_5.corners[min(uint(_e121), 3u)] - q_14);
-                uint _e125 = i_31;
-                float2 eb = (o_5.corners[min(uint(airlight_naga_mod((_e125 + 1u), 4u)), 3u)] - q_14);
-                ya = float2(dot(ea, _e5.xy), dot(ea, v_9.xy));
-                yb = float2(dot(eb, _e5.xy), dot(eb, v_9.xy));
-                float _e145 = ya.x;
-                float _e147 = yb.y;
-                float _e150 = ya.y;
-                float _e152 = yb.x;
-                float area = ((_e145 * _e147) - (_e150 * _e152));
-                if (!((abs(area) > 0.0))) {
+                uint _e168 = i_32;
+                float2 b_24 = y_14[min(uint(airlight_naga_mod((_e168 + 1u), 4u)), 3u)];
+                uint _e174 = i_32;
+                uint _e176 = i_32;
+                uint _e181 = i_32;
+                area[min(uint(_e174), 3u)] = ((y_14[min(uint(_e176), 3u)].x * b_24.y) - (y_14[min(uint(_e181), 3u)].y * b_24.x));
+            }
+        }
+        float _e191 = area.x;
+        float _e193 = area.y;
+        float _e196 = area.z;
+        float _e199 = area.w;
+        float turn = (((_e191 + _e193) + _e196) + _e199);
+        uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+        bool loop_init_38 = true;
+        while(true) {
+            if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+            loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+            if (!loop_init_38) {
+                uint _e256 = i_33;
+                i_33 = (_e256 + 1u);
+            }
+            loop_init_38 = false;
+            uint _e203 = i_33;
+            if ((_e203 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e206 = i_33;
+                float _e208 = area[min(uint(_e206), 3u)];
+                if (!(((_e208 * turn) > 0.0))) {
                     continue;
                 }
-                if ((area < 0.0)) {
-                    float2 swap = ya;
-                    float2 _e162 = yb;
-                    ya = _e162;
-                    yb = swap;
+                uint _e213 = i_33;
+                ya = y_14[min(uint(_e213), 3u)];
+                uint _e216 = i_33;
+                yb = y_14[min(uint(airlight_naga_mod((_e216 + 1u), 4u)), 3u)];
+                if ((turn < 0.0)) {
+                    uint _e225 = i_33;
+                    ya = y_14[min(uint(airlight_naga_mod((_e225 + 1u), 4u)), 3u)];
+                    uint _e231 = i_33;
+                    yb = y_14[min(uint(_e231), 3u)];
                 }
-                float2 _e163 = ya;
-                float2 _e164 = yb;
-                const AirlightEdgeRule _e168 = airlight_edge_rule(_e163, _e164, (lobe_3.l * lobe_3.scale));
+                float2 _e233 = ya;
+                float2 _e234 = yb;
+                const AirlightEdgeRule _e238 = airlight_edge_rule(_e233, _e234, (lobe_3.l * lobe_3.scale));
                 j_7 = 0u;
-                uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-                bool loop_init_37 = true;
+                uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+                bool loop_init_39 = true;
                 while(true) {
-                    if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
-                    loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                    if (!loop_init_37) {
-                        uint _e183 = j_7;
-                        j_7 = (_e183 + 1u);
+                    if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+                    loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                    if (!loop_init_39) {
+                        uint _e253 = j_7;
+                        j_7 = (_e253 + 1u);
                     }
-                    loop_init_37 = false;
-                    uint _e171 = j_7;
-                    if ((_e171 < 12u)) {
+                    loop_init_39 = false;
+                    uint _e241 = j_7;
+                    if ((_e241 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e174 = j_7;
-                        const float4 _e175 = airlight_edge_node(_e168, _e174);
-                        float _e176 = sum_9;
-                        const float _e179 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e175.xy);
-                        sum_9 = (_e176 + (_e175.w * _e179));
+                        uint _e244 = j_7;
+                        const float4 _e245 = airlight_edge_node(_e238, _e244);
+                        float _e246 = sum_9;
+                        const float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
+                        sum_9 = (_e246 + (_e245.w * _e249));
                     }
                 }
             }
         }
-        float _e188 = sum_9;
-        return _e188;
+        float _e258 = sum_9;
+        return _e258;
     }
-    const float _e197 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    const float _e201 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    const float _e203 = airlight_wrap_turn((_e201 - _e197));
-    const float _e207 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    const float _e209 = airlight_wrap_turn((_e207 - _e197));
-    const float _e213 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    const float _e215 = airlight_wrap_turn((_e213 - _e197));
-    const float _e219 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    const float _e221 = airlight_wrap_turn((_e219 - _e197));
-    const float4 _e223 = airlight_sort4_(float4(_e203, _e209, _e215, _e221));
-    uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-    bool loop_init_38 = true;
+    const float _e267 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    const float _e271 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    const float _e273 = airlight_wrap_turn((_e271 - _e267));
+    const float _e277 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    const float _e279 = airlight_wrap_turn((_e277 - _e267));
+    const float _e283 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    const float _e285 = airlight_wrap_turn((_e283 - _e267));
+    const float _e289 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    const float _e291 = airlight_wrap_turn((_e289 - _e267));
+    const float4 _e293 = airlight_sort4_(float4(_e273, _e279, _e285, _e291));
+    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+    bool loop_init_40 = true;
     while(true) {
-        if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_38) {
-            uint _e269 = i_32;
-            i_32 = (_e269 + 1u);
+        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_40) {
+            uint _e416 = i_34;
+            i_34 = (_e416 + 1u);
         }
-        loop_init_38 = false;
-        uint _e226 = i_32;
-        if ((_e226 < 3u)) {
+        loop_init_40 = false;
+        uint _e296 = i_34;
+        if ((_e296 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e229 = i_32;
-            uint _e231 = i_32;
-            float c_19 = (_e197 + ((_e223[min(uint(_e229), 3u)] + _e223[min(uint((_e231 + 1u)), 3u)]) * 0.5));
-            uint _e239 = i_32;
-            uint _e243 = i_32;
-            float hw_5 = ((_e223[min(uint((_e239 + 1u)), 3u)] - _e223[min(uint(_e243), 3u)]) * 0.5);
-            j_8 = 0u;
-            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-            bool loop_init_39 = true;
-            while(true) {
-                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                if (!loop_init_39) {
-                    uint _e266 = j_8;
-                    j_8 = (_e266 + 1u);
+            uint _e299 = i_34;
+            float first_2 = (_e267 + _e293[min(uint(_e299), 3u)]);
+            uint _e302 = i_34;
+            float last_1 = (_e267 + _e293[min(uint((_e302 + 1u)), 3u)]);
+            const float2 _e310 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
+            const float2 _e311 = airlight_entry_normal(y_14, _e310);
+            if (all((_e311 == (0.0).xx))) {
+                float c_19 = ((first_2 + last_1) * 0.5);
+                float hw_5 = ((last_1 - first_2) * 0.5);
+                j_8 = 0u;
+                uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+                bool loop_init_41 = true;
+                while(true) {
+                    if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+                    loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+                    if (!loop_init_41) {
+                        uint _e340 = j_8;
+                        j_8 = (_e340 + 1u);
+                    }
+                    loop_init_41 = false;
+                    uint _e324 = j_8;
+                    if ((_e324 < 12u)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e327 = j_8;
+                        const float2 _e328 = airlight_triangle_rule(_e327);
+                        float _e329 = sum_9;
+                        const float2 _e335 = airlight_cos_sin_turns((c_19 + (hw_5 * _e328.x)));
+                        const float _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
+                        sum_9 = (_e329 + ((_e328.y * hw_5) * _e336));
+                    }
                 }
-                loop_init_39 = false;
-                uint _e250 = j_8;
-                if ((_e250 < 12u)) {
+                continue;
+            }
+            float2 t_13 = float2(-(_e311.y), _e311.x);
+            const float2 _e346 = airlight_cos_sin_turns(first_2);
+            const float _e347 = airlight_mercator(_e311, _e346);
+            const float2 _e348 = airlight_cos_sin_turns(last_1);
+            const float _e349 = airlight_mercator(_e311, _e348);
+            k_9 = 0u;
+            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+            bool loop_init_42 = true;
+            while(true) {
+                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                if (!loop_init_42) {
+                    uint _e413 = k_9;
+                    k_9 = (_e413 + 1u);
+                }
+                loop_init_42 = false;
+                uint _e352 = k_9;
+                if ((_e352 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e253 = j_8;
-                    const float2 _e254 = airlight_triangle_rule(_e253);
-                    float _e255 = sum_9;
-                    const float2 _e261 = airlight_cos_sin_turns((c_19 + (hw_5 * _e254.x)));
-                    const float _e262 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e261);
-                    sum_9 = (_e255 + ((_e254.y * hw_5) * _e262));
+                    uint _e355 = k_9;
+                    const float _e356 = airlight_mercator_cut(_e355);
+                    float lo_8 = max(_e347, _e356);
+                    uint _e358 = k_9;
+                    const float _e361 = airlight_mercator_cut((_e358 + 1u));
+                    float hi_9 = min(_e349, _e361);
+                    if (!((lo_8 < hi_9))) {
+                        continue;
+                    }
+                    float c_20 = ((lo_8 + hi_9) * 0.5);
+                    float hw_6 = ((hi_9 - lo_8) * 0.5);
+                    j_9 = 0u;
+                    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_43 = true;
+                    while(true) {
+                        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                        if (!loop_init_43) {
+                            uint _e410 = j_9;
+                            j_9 = (_e410 + 1u);
+                        }
+                        loop_init_43 = false;
+                        uint _e373 = j_9;
+                        if ((_e373 < 12u)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e376 = j_9;
+                            const float2 _e377 = airlight_triangle_rule(_e376);
+                            float x_37 = (c_20 + (hw_6 * _e377.x));
+                            float e_17 = exp(-(abs(x_37)));
+                            float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
+                            float th = ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)));
+                            float _e399 = sum_9;
+                            const float _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e311 * sech) + (t_13 * th)));
+                            sum_9 = (_e399 + (((_e377.y * hw_6) * sech) * _e406));
+                        }
+                    }
                 }
             }
         }
     }
-    float _e271 = sum_9;
-    return _e271;
+    float _e418 = sum_9;
+    return _e418;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -7801,13 +7977,13 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
 
 float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
 {
-    bool local_181 = (bool)0;
-    bool local_182 = (bool)0;
+    bool local_184 = (bool)0;
+    bool local_185 = (bool)0;
     float2 u_6 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_10 = 0.0;
-    uint i_33 = 0u;
-    float2 e_8 = (float2)0;
+    uint i_35 = 0u;
+    float2 e_9 = (float2)0;
     float r_max_1 = (float)0;
 
     float3 rel = (x_25 - a_24.c);
@@ -7829,16 +8005,16 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
             const bool _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_182 = _e44;
+            local_185 = _e44;
         } else {
-            local_182 = true;
+            local_185 = true;
         }
-        bool _e46 = local_182;
-        local_181 = _e46;
+        bool _e46 = local_185;
+        local_184 = _e46;
     } else {
-        local_181 = false;
+        local_184 = false;
     }
-    bool inside_2 = local_181;
+    bool inside_2 = local_184;
     const AirlightAbove _e54 = airlight_above(z_20, (0.0).xx);
     above_3 = _e54;
     if (!(inside_2)) {
@@ -7847,40 +8023,40 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
         const AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    float k_13 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-    bool loop_init_40 = true;
+    float k_15 = ((rf - radius_2) * (rf + radius_2));
+    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_40) {
-            uint _e127 = i_33;
-            i_33 = (_e127 + 1u);
+        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
+            uint _e127 = i_35;
+            i_35 = (_e127 + 1u);
         }
-        loop_init_40 = false;
-        uint _e73 = i_33;
+        loop_init_44 = false;
+        uint _e73 = i_35;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_33;
+            uint _e76 = i_35;
             const float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
             float _e89 = u_6.y;
             float _e93 = u_6.x;
-            e_8 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            e_9 = float2(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_2) {
-                e_8 = _e77.xy;
-                float b_24 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                float root_4 = sqrt(((b_24 * b_24) - k_13));
-                r_max_1 = ((b_24 > 0.0) ? (-(k_13) / (b_24 + root_4)) : (root_4 - b_24));
+                e_9 = _e77.xy;
+                float b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                float root_4 = sqrt(((b_25 * b_25) - k_15));
+                r_max_1 = ((b_25 > 0.0) ? (-(k_15) / (b_25 + root_4)) : (root_4 - b_25));
             }
             float _e118 = sum_10;
             AirlightAbove _e120 = above_3;
-            float2 _e121 = e_8;
+            float2 _e121 = e_9;
             float _e122 = r_max_1;
             const float _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
@@ -7893,10 +8069,10 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
 float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
 {
     float2 q_8 = (float2)0;
-    bool local_183 = (bool)0;
+    bool local_186 = (bool)0;
     float sum_11 = 0.0;
-    uint i_34 = 0u;
-    uint j_9 = (uint)0;
+    uint i_36 = 0u;
+    uint j_10 = (uint)0;
 
     float3 rel_1 = (x_26 - a_25.c);
     float z_21 = dot(rel_1, a_25.n);
@@ -7919,11 +8095,11 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
     q_8 = (_e76.xy + foot);
     if ((_e76.z > 0.0)) {
         const bool _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_183 = _e89;
+        local_186 = _e89;
     } else {
-        local_183 = false;
+        local_186 = false;
     }
-    bool _e91 = local_183;
+    bool _e91 = local_186;
     if (_e91) {
         q_8 = foot;
     }
@@ -7931,50 +8107,50 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
     const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     const float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-    bool loop_init_41 = true;
+    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_41) {
-            uint _e145 = i_34;
-            i_34 = (_e145 + 1u);
+        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
+            uint _e145 = i_36;
+            i_36 = (_e145 + 1u);
         }
-        loop_init_41 = false;
-        uint _e104 = i_34;
+        loop_init_45 = false;
+        uint _e104 = i_36;
         if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e107 = i_34;
+            uint _e107 = i_36;
             float2 _e109 = q_8;
             float2 ca = (corners[min(uint(_e107), 4u)] - _e109);
-            uint _e111 = i_34;
+            uint _e111 = i_36;
             float2 _e115 = q_8;
             float2 cb_1 = (corners[min(uint((_e111 + 1u)), 4u)] - _e115);
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
             const AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_9 = 0u;
-            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-            bool loop_init_42 = true;
+            j_10 = 0u;
+            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+            bool loop_init_46 = true;
             while(true) {
-                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                if (!loop_init_42) {
-                    uint _e142 = j_9;
-                    j_9 = (_e142 + 1u);
+                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_46) {
+                    uint _e142 = j_10;
+                    j_10 = (_e142 + 1u);
                 }
-                loop_init_42 = false;
-                uint _e129 = j_9;
+                loop_init_46 = false;
+                uint _e129 = j_10;
                 if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_9;
+                    uint _e132 = j_10;
                     const float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
                     const float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
@@ -8010,7 +8186,7 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
-    uint i_35 = 0u;
+    uint i_37 = 0u;
     float at_2 = (float)0;
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
@@ -8020,39 +8196,39 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
     float e2d = dot(e2_2, a_26.d);
     const float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_9 = _e15.y;
-    float c_20 = (0.5 * _e15.x);
-    float hw_6 = (0.5 * _e15.x);
-    const float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251 * hw_6)), (0.1894506 * hw_6));
+    float c_21 = (0.5 * _e15.x);
+    float hw_7 = (0.5 * _e15.x);
+    const float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[0] = _e63;
-    const float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251 * hw_6)), (0.1894506 * hw_6));
+    const float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[1] = _e70;
-    const float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354 * hw_6)), (0.18260342 * hw_6));
+    const float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[2] = _e77;
-    const float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354 * hw_6)), (0.18260342 * hw_6));
+    const float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[3] = _e84;
-    const float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678 * hw_6)), (0.16915652 * hw_6));
+    const float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[4] = _e91;
-    const float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678 * hw_6)), (0.16915652 * hw_6));
+    const float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[5] = _e98;
-    const float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623 * hw_6)), (0.14959599 * hw_6));
+    const float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[6] = _e105;
-    const float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623 * hw_6)), (0.14959599 * hw_6));
+    const float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[7] = _e112;
-    const float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044 * hw_6)), (0.12462897 * hw_6));
+    const float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[8] = _e119;
-    const float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044 * hw_6)), (0.12462897 * hw_6));
+    const float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[9] = _e126;
-    const float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312 * hw_6)), (0.09515851 * hw_6));
+    const float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[10] = _e133;
-    const float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312 * hw_6)), (0.09515851 * hw_6));
+    const float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[11] = _e140;
-    const float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575 * hw_6)), (0.062253524 * hw_6));
+    const float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[12] = _e147;
-    const float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575 * hw_6)), (0.062253524 * hw_6));
+    const float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[13] = _e154;
-    const float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009 * hw_6)), (0.02715246 * hw_6));
+    const float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[14] = _e161;
-    const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009 * hw_6)), (0.02715246 * hw_6));
+    const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[15] = _e168;
     if (a_26.isotropic) {
         const float _e174 = airlight_area_phase(s_44, 0.0);
@@ -8108,23 +8284,23 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-    bool loop_init_43 = true;
+    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+    bool loop_init_47 = true;
     while(true) {
-        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_43) {
-            uint _e550 = i_35;
-            i_35 = (_e550 + 1u);
+        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+        if (!loop_init_47) {
+            uint _e550 = i_37;
+            i_37 = (_e550 + 1u);
         }
-        loop_init_43 = false;
-        uint _e275 = i_35;
+        loop_init_47 = false;
+        uint _e275 = i_37;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_35;
+            uint _e279 = i_37;
             const float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -8249,7 +8425,7 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_36 = 0u;
+    uint i_38 = 0u;
     float big_b_1 = (float)0;
     float wpsi = (float)0;
     float start_5 = (float)0;
@@ -8267,23 +8443,23 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
         const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-    bool loop_init_44 = true;
+    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-        if (!loop_init_44) {
-            uint _e290 = i_36;
-            i_36 = (_e290 + 1u);
+        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
+            uint _e290 = i_38;
+            i_38 = (_e290 + 1u);
         }
-        loop_init_44 = false;
-        uint _e47 = i_36;
+        loop_init_48 = false;
+        uint _e47 = i_38;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_36;
+            uint _e50 = i_38;
             const float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -8308,89 +8484,89 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
             float _e96 = start_5;
             const float2 _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
             float graded_10 = _e98.x;
-            float c_21 = (0.5 * _e98.y);
-            float hw_7 = (0.5 * _e98.y);
+            float c_22 = (0.5 * _e98.y);
+            float hw_8 = (0.5 * _e98.y);
             around = 0.0;
             float _e108 = around;
             float _e111 = big_b_1;
             float _e112 = start_5;
-            const float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251 * hw_7)));
-            around = (_e108 + ((0.1894506 * hw_7) * _e116));
+            const float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_22 - (0.09501251 * hw_8)));
+            around = (_e108 + ((0.1894506 * hw_8) * _e116));
             float _e119 = around;
             float _e122 = big_b_1;
             float _e123 = start_5;
-            const float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251 * hw_7)));
-            around = (_e119 + ((0.1894506 * hw_7) * _e127));
+            const float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_22 + (0.09501251 * hw_8)));
+            around = (_e119 + ((0.1894506 * hw_8) * _e127));
             float _e130 = around;
             float _e133 = big_b_1;
             float _e134 = start_5;
-            const float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354 * hw_7)));
-            around = (_e130 + ((0.18260342 * hw_7) * _e138));
+            const float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_22 - (0.28160354 * hw_8)));
+            around = (_e130 + ((0.18260342 * hw_8) * _e138));
             float _e141 = around;
             float _e144 = big_b_1;
             float _e145 = start_5;
-            const float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354 * hw_7)));
-            around = (_e141 + ((0.18260342 * hw_7) * _e149));
+            const float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_22 + (0.28160354 * hw_8)));
+            around = (_e141 + ((0.18260342 * hw_8) * _e149));
             float _e152 = around;
             float _e155 = big_b_1;
             float _e156 = start_5;
-            const float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678 * hw_7)));
-            around = (_e152 + ((0.16915652 * hw_7) * _e160));
+            const float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_22 - (0.45801678 * hw_8)));
+            around = (_e152 + ((0.16915652 * hw_8) * _e160));
             float _e163 = around;
             float _e166 = big_b_1;
             float _e167 = start_5;
-            const float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678 * hw_7)));
-            around = (_e163 + ((0.16915652 * hw_7) * _e171));
+            const float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_22 + (0.45801678 * hw_8)));
+            around = (_e163 + ((0.16915652 * hw_8) * _e171));
             float _e174 = around;
             float _e177 = big_b_1;
             float _e178 = start_5;
-            const float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623 * hw_7)));
-            around = (_e174 + ((0.14959599 * hw_7) * _e182));
+            const float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_22 - (0.61787623 * hw_8)));
+            around = (_e174 + ((0.14959599 * hw_8) * _e182));
             float _e185 = around;
             float _e188 = big_b_1;
             float _e189 = start_5;
-            const float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623 * hw_7)));
-            around = (_e185 + ((0.14959599 * hw_7) * _e193));
+            const float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_22 + (0.61787623 * hw_8)));
+            around = (_e185 + ((0.14959599 * hw_8) * _e193));
             float _e196 = around;
             float _e199 = big_b_1;
             float _e200 = start_5;
-            const float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044 * hw_7)));
-            around = (_e196 + ((0.12462897 * hw_7) * _e204));
+            const float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_22 - (0.7554044 * hw_8)));
+            around = (_e196 + ((0.12462897 * hw_8) * _e204));
             float _e207 = around;
             float _e210 = big_b_1;
             float _e211 = start_5;
-            const float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044 * hw_7)));
-            around = (_e207 + ((0.12462897 * hw_7) * _e215));
+            const float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_22 + (0.7554044 * hw_8)));
+            around = (_e207 + ((0.12462897 * hw_8) * _e215));
             float _e218 = around;
             float _e221 = big_b_1;
             float _e222 = start_5;
-            const float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312 * hw_7)));
-            around = (_e218 + ((0.09515851 * hw_7) * _e226));
+            const float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_22 - (0.8656312 * hw_8)));
+            around = (_e218 + ((0.09515851 * hw_8) * _e226));
             float _e229 = around;
             float _e232 = big_b_1;
             float _e233 = start_5;
-            const float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312 * hw_7)));
-            around = (_e229 + ((0.09515851 * hw_7) * _e237));
+            const float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_22 + (0.8656312 * hw_8)));
+            around = (_e229 + ((0.09515851 * hw_8) * _e237));
             float _e240 = around;
             float _e243 = big_b_1;
             float _e244 = start_5;
-            const float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575 * hw_7)));
-            around = (_e240 + ((0.062253524 * hw_7) * _e248));
+            const float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_22 - (0.944575 * hw_8)));
+            around = (_e240 + ((0.062253524 * hw_8) * _e248));
             float _e251 = around;
             float _e254 = big_b_1;
             float _e255 = start_5;
-            const float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575 * hw_7)));
-            around = (_e251 + ((0.062253524 * hw_7) * _e259));
+            const float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_22 + (0.944575 * hw_8)));
+            around = (_e251 + ((0.062253524 * hw_8) * _e259));
             float _e262 = around;
             float _e265 = big_b_1;
             float _e266 = start_5;
-            const float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009 * hw_7)));
-            around = (_e262 + ((0.02715246 * hw_7) * _e270));
+            const float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_22 - (0.9894009 * hw_8)));
+            around = (_e262 + ((0.02715246 * hw_8) * _e270));
             float _e273 = around;
             float _e276 = big_b_1;
             float _e277 = start_5;
-            const float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009 * hw_7)));
-            around = (_e273 + ((0.02715246 * hw_7) * _e281));
+            const float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_22 + (0.9894009 * hw_8)));
+            around = (_e273 + ((0.02715246 * hw_8) * _e281));
             float _e284 = sum_13;
             float _e285 = wpsi;
             float _e286 = around;
@@ -8416,12 +8592,12 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_10 = 0u;
-    bool local_184 = (bool)0;
-    bool local_185 = (bool)0;
-    bool local_186 = (bool)0;
+    uint j_11 = 0u;
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
+    bool local_189 = (bool)0;
+    bool local_190 = (bool)0;
+    bool local_191 = (bool)0;
 
     float3 v_11 = (a_28.c - x_27);
     const float _e5 = airlight_safe_length(v_11);
@@ -8431,61 +8607,61 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
     float sin_a_2 = (a_28.radius / _e5);
     AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+    bool loop_init_49 = true;
     while(true) {
-        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
-            uint _e92 = j_10;
-            j_10 = (_e92 + 1u);
+        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+        if (!loop_init_49) {
+            uint _e92 = j_11;
+            j_11 = (_e92 + 1u);
         }
-        loop_init_45 = false;
-        uint _e32 = j_10;
+        loop_init_49 = false;
+        uint _e32 = j_11;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_10;
+            uint _e39 = j_11;
             float2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
-            float c_22 = dot(cap_4.a, (lobe_5.x * a_28.d));
+            float c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_184 = (lobe_5.y > 0.0);
+                local_187 = (lobe_5.y > 0.0);
             } else {
-                local_184 = false;
+                local_187 = false;
             }
-            bool _e57 = local_184;
+            bool _e57 = local_187;
             if (_e57) {
-                local_185 = (lobe_5.y < (_e23 + _e23));
+                local_188 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_185 = false;
+                local_188 = false;
             }
-            bool _e64 = local_185;
+            bool _e64 = local_188;
             if (_e64) {
-                if (!((c_22 > cap_4.cos_a))) {
-                    if ((c_22 > -(cap_4.cos_a))) {
-                        const float _e77 = airlight_acos(c_22);
-                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                if (!((c_23 > cap_4.cos_a))) {
+                    if ((c_23 > -(cap_4.cos_a))) {
+                        const float _e77 = airlight_acos(c_23);
+                        local_191 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_188 = false;
+                        local_191 = false;
                     }
-                    bool _e84 = local_188;
-                    local_187 = _e84;
+                    bool _e84 = local_191;
+                    local_190 = _e84;
                 } else {
-                    local_187 = true;
+                    local_190 = true;
                 }
-                bool _e86 = local_187;
-                local_186 = _e86;
+                bool _e86 = local_190;
+                local_189 = _e86;
             } else {
-                local_186 = false;
+                local_189 = false;
             }
-            bool _e88 = local_186;
+            bool _e88 = local_189;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_22;
+                cos_p_2 = c_23;
             }
         }
     }
@@ -8522,10 +8698,10 @@ float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_29, float3 x_
 float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
-    float along = ((a_30.h_eff * _e3.y) / _e3.x);
-    float t_13 = (a_30.x_h + along);
-    float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_13 * a_30.d)));
+    float along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
+    float t_14 = (a_30.x_h + along_1);
+    float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -8533,10 +8709,10 @@ AirlightResult airlight_area_light(AirlightScene s_50)
 {
     AirlightAdaptive st_1 = (AirlightAdaptive)0;
     uint step_2 = 0u;
-    float k_8 = (float)0;
+    float k_10 = (float)0;
     float gauss_1 = (float)0;
-    uint j_11 = (uint)0;
-    bool local_189 = (bool)0;
+    uint j_12 = (uint)0;
+    bool local_192 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_50);
     if ((_e1.outcome == 1u)) {
@@ -8548,16 +8724,16 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-    bool loop_init_46 = true;
+    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
+    bool loop_init_50 = true;
     while(true) {
-        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-        if (!loop_init_46) {
+        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
+        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+        if (!loop_init_50) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_46 = false;
+        loop_init_50 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -8566,51 +8742,51 @@ AirlightResult airlight_area_light(AirlightScene s_50)
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_23 = (0.5 * (_e27 + _e29));
+            float c_24 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_8 = (0.5 * (_e34 - _e36));
-            k_8 = 0.0;
+            float hw_9 = (0.5 * (_e34 - _e36));
+            k_10 = 0.0;
             gauss_1 = 0.0;
-            j_11 = 0u;
-            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_47 = true;
+            j_12 = 0u;
+            uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
+            bool loop_init_51 = true;
             while(true) {
-                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_47) {
-                    uint _e82 = j_11;
-                    j_11 = (_e82 + 1u);
+                if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
+                loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+                if (!loop_init_51) {
+                    uint _e82 = j_12;
+                    j_12 = (_e82 + 1u);
                 }
-                loop_init_47 = false;
-                uint _e46 = j_11;
+                loop_init_51 = false;
+                uint _e46 = j_12;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_11;
+                    uint _e49 = j_12;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_11;
+                    uint _e59 = j_12;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_11;
-                        local_189 = (_e66 < 14u);
+                        uint _e66 = j_12;
+                        local_192 = (_e66 < 14u);
                     } else {
-                        local_189 = false;
+                        local_192 = false;
                     }
-                    bool _e70 = local_189;
-                    float x_37 = (_e70 ? (c_23 - (hw_8 * node_4.x)) : (c_23 + (hw_8 * node_4.x)));
-                    const float _e72 = airlight_area_node(s_50, _e1, x_37);
-                    float _e73 = k_8;
-                    k_8 = (_e73 + (node_4.y * _e72));
+                    bool _e70 = local_192;
+                    float x_38 = (_e70 ? (c_24 - (hw_9 * node_4.x)) : (c_24 + (hw_9 * node_4.x)));
+                    const float _e72 = airlight_area_node(s_50, _e1, x_38);
+                    float _e73 = k_10;
+                    k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_8;
+            float _e85 = k_10;
             float _e87 = gauss_1;
-            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_8), (_e87 * hw_8), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -8633,22 +8809,22 @@ AirlightResult airlight_area_light(AirlightScene s_50)
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 {
-    bool local_190 = (bool)0;
-    bool local_191 = (bool)0;
+    bool local_193 = (bool)0;
+    bool local_194 = (bool)0;
 
     const bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_193 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_190 = true;
+        local_193 = true;
     }
-    bool _e10 = local_190;
+    bool _e10 = local_193;
     if (!(_e10)) {
-        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_194 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_191 = true;
+        local_194 = true;
     }
-    bool _e18 = local_191;
+    bool _e18 = local_194;
     if (_e18) {
         const AirlightResult airlightresult_11 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_11;
@@ -8660,15 +8836,15 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_51)
 
 AirlightResult airlight_overflowed(AirlightResult r_5)
 {
-    bool local_192 = (bool)0;
+    bool local_195 = (bool)0;
 
     const bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_195 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_192 = true;
+        local_195 = true;
     }
-    bool _e11 = local_192;
+    bool _e11 = local_195;
     if (_e11) {
         const AirlightResult airlightresult_13 = ConstructAirlightResult(3.4028235e38, 2u);
         return airlightresult_13;
@@ -8677,24 +8853,24 @@ AirlightResult airlight_overflowed(AirlightResult r_5)
     return airlightresult_14;
 }
 
-AirlightResult airlight_node_integral(AirlightNode n_3)
+AirlightResult airlight_node_integral(AirlightNode n_4)
 {
     AirlightResult r_6 = ConstructAirlightResult(0.0, 0u);
-    bool local_193 = (bool)0;
+    bool local_196 = (bool)0;
     AirlightCanonical g_29 = (AirlightCanonical)0;
 
-    AirlightScene p_8 = n_3.scene;
+    AirlightScene p_8 = n_4.scene;
     const bool _e7 = airlight_vec_finite(p_8.light_position);
     if (_e7) {
         const bool _e11 = airlight_vec_finite(p_8.dir);
-        local_193 = _e11;
+        local_196 = _e11;
     } else {
-        local_193 = false;
+        local_196 = false;
     }
-    bool _e13 = local_193;
+    bool _e13 = local_196;
     if (_e13) {
-        g_29 = n_3.canonical;
-        if (!(n_3.exact)) {
+        g_29 = n_4.canonical;
+        if (!(n_4.exact)) {
             const AirlightCanonical _e18 = airlight_canonical(p_8);
             const AirlightCanonical _e19 = airlight_refined(p_8, _e18);
             g_29 = _e19;
@@ -8719,22 +8895,22 @@ AirlightResult airlight_point_integral(AirlightScene p_1)
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 {
-    bool local_194 = (bool)0;
-    bool local_195 = (bool)0;
+    bool local_197 = (bool)0;
+    bool local_198 = (bool)0;
 
     const bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_197 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_194 = true;
+        local_197 = true;
     }
-    bool _e10 = local_194;
+    bool _e10 = local_197;
     if (!(_e10)) {
-        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_198 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_195 = true;
+        local_198 = true;
     }
-    bool _e18 = local_195;
+    bool _e18 = local_198;
     if (_e18) {
         const AirlightResult airlightresult_17 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_17;
@@ -8746,22 +8922,22 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_52)
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_53)
 {
-    bool local_196 = (bool)0;
-    bool local_197 = (bool)0;
+    bool local_199 = (bool)0;
+    bool local_200 = (bool)0;
 
     const bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_199 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_196 = true;
+        local_199 = true;
     }
-    bool _e10 = local_196;
+    bool _e10 = local_199;
     if (!(_e10)) {
-        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_200 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_197 = true;
+        local_200 = true;
     }
-    bool _e18 = local_197;
+    bool _e18 = local_200;
     if (_e18) {
         const AirlightResult airlightresult_19 = ConstructAirlightResult(0.0, 1u);
         return airlightresult_19;
@@ -8791,12 +8967,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
 {
     AirlightAdaptive st_2 = (AirlightAdaptive)0;
     uint step_3 = 0u;
-    float k_9 = (float)0;
+    float k_11 = (float)0;
     float gauss_2 = (float)0;
-    uint j_12 = (uint)0;
-    bool local_198 = (bool)0;
+    uint j_13 = (uint)0;
+    bool local_201 = (bool)0;
     float f = (float)0;
-    bool local_199 = (bool)0;
+    bool local_202 = (bool)0;
 
     const bool _e1 = airlight_valid(s_54);
     if (!(_e1)) {
@@ -8820,16 +8996,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-    bool loop_init_48 = true;
+    uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
+    bool loop_init_52 = true;
     while(true) {
-        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-        if (!loop_init_48) {
+        if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
+        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+        if (!loop_init_52) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_48 = false;
+        loop_init_52 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -8838,40 +9014,40 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_24 = (0.5 * (_e42 + _e44));
+            float c_25 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_9 = (0.5 * (_e49 - _e51));
-            k_9 = 0.0;
+            float hw_10 = (0.5 * (_e49 - _e51));
+            k_11 = 0.0;
             gauss_2 = 0.0;
-            j_12 = 0u;
-            uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-            bool loop_init_49 = true;
+            j_13 = 0u;
+            uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
+            bool loop_init_53 = true;
             while(true) {
-                if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
-                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-                if (!loop_init_49) {
-                    uint _e121 = j_12;
-                    j_12 = (_e121 + 1u);
+                if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
+                loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+                if (!loop_init_53) {
+                    uint _e121 = j_13;
+                    j_13 = (_e121 + 1u);
                 }
-                loop_init_49 = false;
-                uint _e61 = j_12;
+                loop_init_53 = false;
+                uint _e61 = j_13;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_12;
+                    uint _e64 = j_13;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_12;
+                    uint _e74 = j_13;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_12;
-                        local_198 = (_e81 < 6u);
+                        uint _e81 = j_13;
+                        local_201 = (_e81 < 6u);
                     } else {
-                        local_198 = false;
+                        local_201 = false;
                     }
-                    bool _e85 = local_198;
-                    float w_11 = (_e85 ? (c_24 - (hw_9 * node_5.x)) : (c_24 + (hw_9 * node_5.x)));
+                    bool _e85 = local_201;
+                    float w_11 = (_e85 ? (c_25 - (hw_10 * node_5.x)) : (c_25 + (hw_10 * node_5.x)));
                     const AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
@@ -8881,29 +9057,29 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
                             return airlightresult_27;
                         }
                         if ((s_54.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_202 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_199 = false;
+                            local_202 = false;
                         }
-                        bool _e106 = local_199;
+                        bool _e106 = local_202;
                         if (_e106) {
                             const AirlightResult airlightresult_28 = _e93;
                             return airlightresult_28;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e110 = k_9;
+                    float _e110 = k_11;
                     float _e112 = f;
-                    k_9 = (_e110 + (node_5.y * _e112));
+                    k_11 = (_e110 + (node_5.y * _e112));
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_9;
+            float _e124 = k_11;
             float _e126 = gauss_2;
-            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_9), (_e126 * hw_9), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

@@ -759,8 +759,8 @@ bool airlight_in_series_region(
     metal::float2 z_5
 ) {
     float x_29 = z_5.x * AIRLIGHT_E1_INV_RE;
-    float y_6 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_29 * x_29) + (y_6 * y_6)) < 1.0;
+    float y_7 = z_5.y * AIRLIGHT_E1_INV_IM;
+    return ((x_29 * x_29) + (y_7 * y_7)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -1435,15 +1435,15 @@ float airlight_moment_gauss(
         {
             uint _e26 = j;
             float xi = nodes.inner[metal::min(unsigned(_e26), 3u)].x;
-            float y_7 = yc + (hw * xi);
+            float y_8 = yc + (hw * xi);
             dv = hw * (1.0 + xi);
             if (half_.second) {
-                dv = (hw * (1.0 - xi)) / (y_7 * half_.y_hi);
+                dv = (hw * (1.0 - xi)) / (y_8 * half_.y_hi);
             }
             float _e42 = m;
             uint _e43 = j;
             float _e49 = dv;
-            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_7 * y_7)));
+            m = _e42 + (((nodes.inner[metal::min(unsigned(_e43), 3u)].y * hw) * metal::exp(-(half_.big_h) * _e49)) / (1.0 + (y_8 * y_8)));
         }
     }
     float _e61 = m;
@@ -2627,10 +2627,10 @@ AirlightPanel airlight_y_panel(
         {
             uint _e28 = i_7;
             float _e29 = airlight_node(_e8, _e28);
-            float y_8 = yc_1 + (r_9 * _e29);
-            float weight_2 = metal::exp((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_8 * b_5));
-            float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_8);
-            float over_1 = 1.0 / (1.0 + (y_8 * y_8));
+            float y_9 = yc_1 + (r_9 * _e29);
+            float weight_2 = metal::exp((-(half_7.big_h) * (r_9 * (1.0 - _e29))) / (y_9 * b_5));
+            float _e41 = airlight_integrand(s_7, g_9, sigma_5, y_9);
+            float over_1 = 1.0 / (1.0 + (y_9 * y_9));
             uint _e47 = i_7;
             samples_1.inner[metal::min(unsigned(_e47), 11u)] = (_e41 * over_1) * weight_2;
             float _e51 = f_max_2;
@@ -2809,10 +2809,10 @@ AirlightPanel airlight_tail_panel(
         {
             uint _e22 = i_8;
             float _e23 = airlight_node(_e6, _e22);
-            float y_9 = yc_2 + (r_10 * _e23);
-            float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_9);
+            float y_10 = yc_2 + (r_10 * _e23);
+            float _e26 = airlight_integrand(s_8, g_10, sigma_6, y_10);
             uint _e27 = i_8;
-            samples_2.inner[metal::min(unsigned(_e27), 11u)] = _e26 / (1.0 + (y_9 * y_9));
+            samples_2.inner[metal::min(unsigned(_e27), 11u)] = _e26 / (1.0 + (y_10 * y_10));
             float _e33 = f_max_3;
             f_max_3 = metal::max(_e33, metal::abs(_e26));
             float _e36 = g_avg_1;
@@ -3637,8 +3637,8 @@ float airlight_cut_length(
     float inv_h = 1.0 / big_h_1;
     float w_4 = v_s + inv_h;
     float r_11 = (1.0 + (w_4 * w_4)) / (1.0 + (v_s * v_s));
-    float e_9 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
-    return e_9 * inv_h;
+    float e_10 = 1.0 + metal::log((8.0 * r_11) / AIRLIGHT_CUT_RESOLUTION);
+    return e_10 * inv_h;
 }
 
 float airlight_weighted(
@@ -3848,15 +3848,15 @@ metal::float2 airlight_angle_route(
             bool below_1 = lower <= 1.5707964;
             float _e248 = psi1_1;
             metal::float2 _e254 = airlight_cos_sin(below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241))));
-            float cs_2 = _e254.y;
+            float cs_3 = _e254.y;
             float sn = below_1 ? -(_e254.x) : _e254.x;
             float near_pole = 1.0 + _e254.x;
-            float far_pole = (cs_2 * cs_2) / near_pole;
+            float far_pole = (cs_3 * cs_3) / near_pole;
             float one_minus = below_1 ? near_pole : far_pole;
             float one_plus = below_1 ? far_pole : near_pole;
-            float y_10 = below_1 ? (cs_2 / near_pole) : (near_pole / cs_2);
-            float weight_3 = (cs_2 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_10 - _e26), 0.0))) : 0.0;
-            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_2));
+            float y_11 = below_1 ? (cs_3 / near_pole) : (near_pole / cs_3);
+            float weight_3 = (cs_3 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_11 - _e26), 0.0))) : 0.0;
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_3));
             float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = _e288 * _e294;
             float gw = weight_3 * f_2;
@@ -5367,9 +5367,9 @@ metal::float2 airlight_two_sum(
     float _e4 = airlight_opaque(a_13 + b_10, key_1);
     float _e6 = airlight_opaque(_e4 - a_13, key_1);
     float _e8 = airlight_opaque(_e4 - _e6, key_1);
-    float e_10 = (a_13 - _e8) + (b_10 - _e6);
-    bool _e12 = airlight_is_finite(e_10);
-    return metal::float2(_e4, _e12 ? e_10 : 0.0);
+    float e_11 = (a_13 - _e8) + (b_10 - _e6);
+    bool _e12 = airlight_is_finite(e_11);
+    return metal::float2(_e4, _e12 ? e_11 : 0.0);
 }
 
 float airlight_split_high(
@@ -5388,9 +5388,9 @@ metal::float2 airlight_two_product(
     float al = a_14 - _e5;
     float _e7 = airlight_split_high(b_11);
     float bl = b_11 - _e7;
-    float e_11 = ((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl);
-    bool _e17 = airlight_is_finite(e_11);
-    return metal::float2(_e4, _e17 ? e_11 : 0.0);
+    float e_12 = ((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl);
+    bool _e17 = airlight_is_finite(e_12);
+    return metal::float2(_e4, _e17 ? e_12 : 0.0);
 }
 
 float airlight_diff_of_products(
@@ -5488,10 +5488,10 @@ AirlightCanonical airlight_refined(
     }
     metal::float3 _e113 = airlight_normalize(dir_2);
     metal::float3 _e114 = airlight_normalize(w_6);
-    metal::float3 n_4 = -(metal::cross(_e113, _e114));
+    metal::float3 n_5 = -(metal::cross(_e113, _e114));
     out_2.h = h_7;
     metal::float3 _e119 = a_16;
-    out_2.d_c = metal::dot(n_4, _e119);
+    out_2.d_c = metal::dot(n_5, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
@@ -6178,20 +6178,20 @@ AirlightOuter airlight_surface(
         metal::float3 _e112 = u_1;
         float x_36 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
-        float y_11 = metal::dot(_e111, metal::cross(l_3, _e114));
+        float y_12 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_36 * x_36) + (y_11 * y_11));
+        g_22.sin_r = metal::sqrt((x_36 * x_36) + (y_12 * y_12));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_36, metal::abs(y_11));
-            float phi_r = ((y_11 < 0.0) ? -1.0 : 1.0) * _e140;
+            float _e140 = airlight_angle(x_36, metal::abs(y_12));
+            float phi_r = ((y_12 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_36 / _e145, -(y_11) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_36 / _e145, -(y_12) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -6360,33 +6360,33 @@ AirlightOuter airlight_surface(
             }
             {
                 uint _e339 = i_22;
-                float e_12 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
-                if (!((e_12 == kinks.inner[0]))) {
-                    local_137 = e_12 == kinks.inner[1];
+                float e_13 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
+                if (!((e_13 == kinks.inner[0]))) {
+                    local_137 = e_13 == kinks.inner[1];
                 } else {
                     local_137 = true;
                 }
                 bool _e350 = local_137;
                 if (!(_e350)) {
-                    local_138 = e_12 == kinks.inner[2];
+                    local_138 = e_13 == kinks.inner[2];
                 } else {
                     local_138 = true;
                 }
                 bool _e357 = local_138;
                 if (!(_e357)) {
-                    local_139 = e_12 == kinks.inner[3];
+                    local_139 = e_13 == kinks.inner[3];
                 } else {
                     local_139 = true;
                 }
                 bool _e364 = local_139;
                 if (!(_e364)) {
-                    local_140 = e_12 == kinks.inner[4];
+                    local_140 = e_13 == kinks.inner[4];
                 } else {
                     local_140 = true;
                 }
                 bool _e371 = local_140;
                 if (!(_e371)) {
-                    local_141 = e_12 == kinks.inner[5];
+                    local_141 = e_13 == kinks.inner[5];
                 } else {
                     local_141 = true;
                 }
@@ -6655,11 +6655,11 @@ AirlightOuter airlight_outer(
         AirlightOuter _e37 = g_24;
         return _e37;
     }
-    metal::float3 e_13 = ab_1 / metal::float3(_e15);
+    metal::float3 e_14 = ab_1 / metal::float3(_e15);
     metal::float3 _e41 = airlight_normalize(s_26.dir);
     metal::float3 w0_ = s_26.light_position - s_26.origin;
-    float cos_a_2 = metal::dot(e_13, _e41);
-    float along_e = metal::dot(e_13, w0_);
+    float cos_a_2 = metal::dot(e_14, _e41);
+    float along_e = metal::dot(e_14, w0_);
     float along_d = metal::dot(_e41, w0_);
     float sin2_ = 1.0 - (cos_a_2 * cos_a_2);
     bool infinite_5 = (s_26.flags & 1u) != 0u;
@@ -6670,7 +6670,7 @@ AirlightOuter airlight_outer(
     }
     float _e67 = t_star;
     float _e70 = s_star;
-    float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_13 * _e70));
+    float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_14 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
         local_147 = sin_a_1 > 0.0;
@@ -6764,7 +6764,7 @@ AirlightOuter airlight_outer(
     if (!(_e165)) {
         scale = 0.0;
     }
-    g_24.e = e_13;
+    g_24.e = e_14;
     float _e170 = s_star;
     g_24.s_star = _e170;
     float _e172 = scale;
@@ -6887,14 +6887,14 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_37 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
-        float t_8 = x_21 - static_cast<float>(i_37);
-        float a_42 = g_25.gamma.inner[metal::min(unsigned(i_37), 12u)];
-        float b_20 = g_25.gamma.inner[metal::min(unsigned(i_37 + 1u), 12u)];
+        uint i_39 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
+        float t_8 = x_21 - static_cast<float>(i_39);
+        float a_42 = g_25.gamma.inner[metal::min(unsigned(i_39), 12u)];
+        float b_20 = g_25.gamma.inner[metal::min(unsigned(i_39 + 1u), 12u)];
         float w_8 = b_20 - a_42;
         float u_8 = 1.0 - t_8;
-        bool smooth_a = ((g_25.smooth_edges >> i_37) & 1u) != 0u;
-        bool smooth_b = ((g_25.smooth_edges >> (i_37 + 1u)) & 1u) != 0u;
+        bool smooth_a = ((g_25.smooth_edges >> i_39) & 1u) != 0u;
+        bool smooth_b = ((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u;
         gamma_1 = a_42 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8));
         jacobian = ((w_8 * 6.0) * t_8) * u_8;
         float _e58 = gamma_1;
@@ -6962,10 +6962,10 @@ AirlightNode airlight_outer_node(
             float arc = 2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y));
             weight = (s_27.brdf_scale * 0.31830987) * arc;
         } else {
-            float n_5 = s_27.brdf_exponent;
+            float n_6 = s_27.brdf_exponent;
             float _e161 = gamma_1;
-            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
-            weight = ((s_27.brdf_scale * (n_5 + 2.0)) * 0.15915494) * _e162;
+            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
+            weight = ((s_27.brdf_scale * (n_6 + 2.0)) * 0.15915494) * _e162;
         }
         p.dir = (_e119.x * g_25.l) + (_e119.y * g_25.u);
         p.t_min = 0.0;
@@ -7347,13 +7347,13 @@ AirlightArea airlight_area(
         float b_21 = metal::dot(oc, _e45);
         float _e72 = a_18.radius;
         float _e74 = a_18.radius;
-        float k_10 = metal::dot(oc, oc) - (_e72 * _e74);
-        float disc_2 = (b_21 * b_21) - k_10;
+        float k_12 = metal::dot(oc, oc) - (_e72 * _e74);
+        float disc_2 = (b_21 * b_21) - k_12;
         if (disc_2 > 0.0) {
             float root_2 = metal::sqrt(disc_2);
             float q_12 = -(b_21) - (((as_type<uint>(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2);
             cut0_ = q_12;
-            cut1_ = k_10 / q_12;
+            cut1_ = k_12 / q_12;
             cut_count = 2u;
         }
     } else {
@@ -7629,17 +7629,17 @@ metal::float3 airlight_outline_boundary(
             uint _e40 = i_28;
             metal::float2 a_44 = o.corners.inner[metal::min(unsigned(_e40), 3u)];
             uint _e43 = i_28;
-            metal::float2 e_14 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_44;
+            metal::float2 e_15 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_44;
             bool _e50 = inside;
             if (_e50) {
-                local_177 = (((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_14.y) - ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_14.x)) <= 0.0;
+                local_177 = (((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_15.y) - ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_15.x)) <= 0.0;
             } else {
                 local_177 = false;
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_10 = metal::clamp((((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_14.x) + ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y)), 0.0, 1.0);
-            metal::float2 p_5 = a_44 + (t_10 * e_14);
+            float t_10 = metal::clamp((((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_15.x) + ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0);
+            metal::float2 p_5 = a_44 + (t_10 * e_15);
             float dd = ((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y));
             float _e107 = best;
             if (dd < _e107) {
@@ -7679,8 +7679,8 @@ AirlightFlatLobe airlight_flat_lobe(
         if (metal::all(loop_bound_34 == uint2(0u))) { break; }
         loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_33) {
-            uint _e74 = j_5;
-            j_5 = _e74 + 1u;
+            uint _e80 = j_5;
+            j_5 = _e80 + 1u;
         }
         loop_init_33 = false;
         uint _e13 = j_5;
@@ -7710,15 +7710,15 @@ AirlightFlatLobe airlight_flat_lobe(
                 metal::float2 _e49 = airlight_outline_nearest(o_2, q_13);
                 metal::float3 to_near = metal::float3(_e49, -(z_11));
                 float cos_1 = metal::min(metal::dot(p_6, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
-                bool on_emitter = metal::all(_e49 == q_13);
+                bool on_emitter = metal::length(_e49 - q_13) <= (0.0000019073486 * ((metal::length(q_13) + size_1) + z_11));
                 if (!(on_emitter)) {
-                    float _e63 = airlight_acos(cos_1);
-                    local_180 = _e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
+                    float _e69 = airlight_acos(cos_1);
+                    local_180 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
                 } else {
                     local_180 = true;
                 }
-                bool _e69 = local_180;
-                if (_e69) {
+                bool _e75 = local_180;
+                if (_e75) {
                     return AirlightFlatLobe {p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter};
                 }
             }
@@ -7760,15 +7760,15 @@ metal::float2 airlight_outline_chord(
         float a_45 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
         float b_22 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
         float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
-        float k_11 = (dq_1 - o_3.radius) * (dq_1 + o_3.radius);
-        float disc_3 = (b_22 * b_22) - (a_45 * k_11);
+        float k_13 = (dq_1 - o_3.radius) * (dq_1 + o_3.radius);
+        float disc_3 = (b_22 * b_22) - (a_45 * k_13);
         if (!((disc_3 > 0.0))) {
             return metal::float2(0.0);
         }
         float root_3 = metal::sqrt(disc_3);
         float t_11 = -(b_22) - (((as_type<uint>(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3);
         float r1_2 = t_11 / a_45;
-        float r2_3 = k_11 / t_11;
+        float r2_3 = k_13 / t_11;
         float hi_8 = metal::max(r1_2, r2_3);
         if (!((hi_8 > 0.0))) {
             return metal::float2(0.0);
@@ -7839,64 +7839,64 @@ float airlight_flat_lobe_along(
 ) {
     float sum_8 = 0.0;
     metal::float3 w_9 = (cs_1.x * u_4) + (cs_1.y * v_6);
-    float k_12 = w_9.z / -(lobe_2.p[2]);
-    metal::float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, w_9.xy + (k_12 * metal::float3(lobe_2.p).xy));
+    float k_14 = w_9.z / -(lobe_2.p[2]);
+    metal::float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, w_9.xy + (k_14 * metal::float3(lobe_2.p).xy));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
-    float _e34 = airlight_atan2_upper(_e23.x, lobe_2.l + (k_12 * _e23.x));
-    float _e41 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_12 * _e23.y));
+    float _e34 = airlight_atan2_upper(_e23.x, lobe_2.l + (k_14 * _e23.x));
+    float _e41 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_14 * _e23.y));
     metal::float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
     float c_18 = 0.5 * _e42.y;
     float hw_3 = 0.5 * _e42.y;
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.09501251 * hw_3));
+    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.09501251 * hw_3));
     sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.09501251 * hw_3));
+    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.09501251 * hw_3));
     sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.28160354 * hw_3));
+    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.28160354 * hw_3));
     sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.28160354 * hw_3));
+    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.28160354 * hw_3));
     sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.45801678 * hw_3));
+    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.45801678 * hw_3));
     sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.45801678 * hw_3));
+    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.45801678 * hw_3));
     sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.61787623 * hw_3));
+    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.61787623 * hw_3));
     sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.61787623 * hw_3));
+    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.61787623 * hw_3));
     sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.7554044 * hw_3));
+    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.7554044 * hw_3));
     sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.7554044 * hw_3));
+    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.7554044 * hw_3));
     sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.8656312 * hw_3));
+    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.8656312 * hw_3));
     sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.8656312 * hw_3));
+    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.8656312 * hw_3));
     sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.944575 * hw_3));
+    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.944575 * hw_3));
     sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.944575 * hw_3));
+    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.944575 * hw_3));
     sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 - (0.9894009 * hw_3));
+    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.9894009 * hw_3));
     sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, c_18 + (0.9894009 * hw_3));
+    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.9894009 * hw_3));
     sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
     float _e196 = sum_8;
     return _e196;
@@ -7907,8 +7907,8 @@ float airlight_lobe_azimuth(
     metal::float3 v_7,
     metal::float2 e_7
 ) {
-    float y_12 = (e_7.x * v_7.x) + (e_7.y * v_7.y);
-    float _e17 = airlight_atan2_(y_12, (e_7.x * u_5.x) + (e_7.y * u_5.y));
+    float y_13 = (e_7.x * v_7.x) + (e_7.y * v_7.y);
+    float _e17 = airlight_atan2_(y_13, (e_7.x * u_5.x) + (e_7.y * u_5.y));
     return _e17;
 }
 
@@ -7931,9 +7931,9 @@ AirlightEdgeRule airlight_edge_rule(
     metal::float2 b_14,
     float width_1
 ) {
-    metal::float2 e_15 = b_14 - a_23;
-    float el = metal::sqrt((e_15.x * e_15.x) + (e_15.y * e_15.y));
-    metal::float2 t_12 = e_15 / metal::float2(el);
+    metal::float2 e_16 = b_14 - a_23;
+    float el = metal::sqrt((e_16.x * e_16.x) + (e_16.y * e_16.y));
+    metal::float2 t_12 = e_16 / metal::float2(el);
     float h_9 = ((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el;
     float reach_2 = metal::sqrt((h_9 * h_9) + (width_1 * width_1));
     float _e27 = airlight_atan2_(metal::dot(a_23, t_12), reach_2);
@@ -7963,6 +7963,89 @@ metal::float4 airlight_sort4_(
     return metal::float4(b_23.x, metal::min(b_23.y, b_23.z), metal::max(b_23.y, b_23.z), b_23.w);
 }
 
+metal::float2 airlight_entry_normal(
+    airlight_type_8 y_6,
+    metal::float2 e_8
+) {
+    float nearest_1 = AIRLIGHT_FLT_MAX;
+    metal::float2 normal_3 = metal::float2(0.0);
+    uint i_29 = 0u;
+    bool local_181 = {};
+    bool local_182 = {};
+    bool local_183 = {};
+    uint2 loop_bound_35 = uint2(4294967295u);
+    bool loop_init_34 = true;
+    while(true) {
+        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_34) {
+            uint _e80 = i_29;
+            i_29 = _e80 + 1u;
+        }
+        loop_init_34 = false;
+        uint _e9 = i_29;
+        if (_e9 < 4u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = i_29;
+            metal::float2 a_47 = y_6.inner[metal::min(unsigned(_e12), 3u)];
+            uint _e14 = i_29;
+            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e14 + 1u, 4u)), 3u)] - a_47;
+            float den_1 = (e_8.x * d_5.y) - (e_8.y * d_5.x);
+            if (den_1 == 0.0) {
+                continue;
+            }
+            float r_15 = ((y_6.inner[metal::min(unsigned(_e12), 3u)].x * d_5.y) - (y_6.inner[metal::min(unsigned(_e12), 3u)].y * d_5.x)) / den_1;
+            float along = ((y_6.inner[metal::min(unsigned(_e12), 3u)].x * e_8.y) - (y_6.inner[metal::min(unsigned(_e12), 3u)].y * e_8.x)) / den_1;
+            if (r_15 > 0.0) {
+                local_181 = along >= 0.0;
+            } else {
+                local_181 = false;
+            }
+            bool _e53 = local_181;
+            if (_e53) {
+                local_182 = along <= 1.0;
+            } else {
+                local_182 = false;
+            }
+            bool _e59 = local_182;
+            if (_e59) {
+                float _e62 = nearest_1;
+                local_183 = r_15 < _e62;
+            } else {
+                local_183 = false;
+            }
+            bool _e65 = local_183;
+            if (_e65) {
+                nearest_1 = r_15;
+                metal::float2 n_7 = metal::float2(d_5.y, -(d_5.x)) / metal::float2(metal::sqrt(metal::dot(d_5, d_5)));
+                normal_3 = (metal::dot(n_7, a_47) < 0.0) ? -(n_7) : n_7;
+            }
+        }
+    }
+    metal::float2 _e82 = normal_3;
+    return _e82;
+}
+
+float airlight_mercator_cut(
+    uint k_8
+) {
+    airlight_type_13 cuts_5 = airlight_type_13 {{-30.0, -14.0, -6.0, -2.0, 2.0, 6.0, 14.0, 30.0}};
+    return cuts_5.inner[metal::min(unsigned(k_8), 7u)];
+}
+
+float airlight_mercator(
+    metal::float2 n_3,
+    metal::float2 cs_2
+) {
+    float _e3 = airlight_mercator_cut(7u);
+    float tangent = ((cs_2.y * n_3.x) - (cs_2.x * n_3.y)) / metal::max((cs_2.x * n_3.x) + (cs_2.y * n_3.y), 0.000000000000000000000000000001);
+    float _e21 = airlight_asinh(tangent);
+    return metal::clamp(_e21, -(_e3), _e3);
+}
+
 float airlight_flat_about_lobe(
     AirlightScene s_40,
     float z_14,
@@ -7970,36 +8053,40 @@ float airlight_flat_about_lobe(
     AirlightFlatLobe lobe_3
 ) {
     float sum_9 = 0.0;
-    uint i_29 = 0u;
     uint i_30 = 0u;
     uint i_31 = 0u;
+    metal::float4 area = metal::float4(0.0);
+    uint i_32 = 0u;
+    uint i_33 = 0u;
     metal::float2 ya = {};
     metal::float2 yb = {};
     uint j_7 = {};
-    uint i_32 = 0u;
+    uint i_34 = 0u;
     uint j_8 = {};
+    uint k_9 = {};
+    uint j_9 = {};
     metal::float3 _e5 = airlight_basis_e1_(lobe_3.p);
     metal::float3 v_9 = metal::cross(lobe_3.p, _e5);
     metal::float2 q_14 = lobe_3.q;
     if (o_5.radius > 0.0) {
         if (lobe_3.on_emitter) {
-            uint2 loop_bound_35 = uint2(4294967295u);
-            bool loop_init_34 = true;
+            uint2 loop_bound_36 = uint2(4294967295u);
+            bool loop_init_35 = true;
             while(true) {
-                if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-                loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-                if (!loop_init_34) {
-                    uint _e30 = i_29;
-                    i_29 = _e30 + 1u;
+                if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+                loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+                if (!loop_init_35) {
+                    uint _e30 = i_30;
+                    i_30 = _e30 + 1u;
                 }
-                loop_init_34 = false;
-                uint _e17 = i_29;
+                loop_init_35 = false;
+                uint _e17 = i_30;
                 if (_e17 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e21 = i_29;
+                    uint _e21 = i_30;
                     metal::float3 _e22 = airlight_azimuths(true, _e21);
                     float _e23 = sum_9;
                     float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
@@ -8009,34 +8096,34 @@ float airlight_flat_about_lobe(
             float _e32 = sum_9;
             return _e32;
         }
-        metal::float2 d_5 = o_5.corners.inner[0] - q_14;
-        float dq_2 = metal::sqrt((d_5.x * d_5.x) + (d_5.y * d_5.y));
+        metal::float2 d_6 = o_5.corners.inner[0] - q_14;
+        float dq_2 = metal::sqrt((d_6.x * d_6.x) + (d_6.y * d_6.y));
         float sb_1 = o_5.radius / dq_2;
         float cb = metal::sqrt((dq_2 - o_5.radius) * (dq_2 + o_5.radius)) / dq_2;
-        float _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        float _e65 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) - (d_5.y * sb_1), (d_5.y * cb) + (d_5.x * sb_1)));
+        float _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
+        float _e65 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_6.x * cb) - (d_6.y * sb_1), (d_6.y * cb) + (d_6.x * sb_1)));
         float _e67 = airlight_wrap_turn(_e65 - _e53);
-        float _e79 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_5.x * cb) + (d_5.y * sb_1), (d_5.y * cb) - (d_5.x * sb_1)));
+        float _e79 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_6.x * cb) + (d_6.y * sb_1), (d_6.y * cb) - (d_6.x * sb_1)));
         float _e81 = airlight_wrap_turn(_e79 - _e53);
         float centre_2 = _e53 + ((_e67 + _e81) * 0.5);
         float half_19 = metal::abs(_e67 - _e81) * 0.5;
-        uint2 loop_bound_36 = uint2(4294967295u);
-        bool loop_init_35 = true;
+        uint2 loop_bound_37 = uint2(4294967295u);
+        bool loop_init_36 = true;
         while(true) {
-            if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-            loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-            if (!loop_init_35) {
-                uint _e111 = i_30;
-                i_30 = _e111 + 1u;
+            if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+            if (!loop_init_36) {
+                uint _e111 = i_31;
+                i_31 = _e111 + 1u;
             }
-            loop_init_35 = false;
-            uint _e92 = i_30;
+            loop_init_36 = false;
+            uint _e92 = i_31;
             if (_e92 < 32u) {
             } else {
                 break;
             }
             {
-                uint _e96 = i_30;
+                uint _e96 = i_31;
                 metal::float3 _e97 = airlight_azimuths(false, _e96);
                 float _e98 = sum_9;
                 metal::float2 _e106 = airlight_cos_sin_turns(centre_2 + (half_19 * _e97.y));
@@ -8047,136 +8134,229 @@ float airlight_flat_about_lobe(
         float _e113 = sum_9;
         return _e113;
     }
+    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_5.corners.inner[0] - q_14, _e5.xy), metal::dot(o_5.corners.inner[0] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[1] - q_14, _e5.xy), metal::dot(o_5.corners.inner[1] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[2] - q_14, _e5.xy), metal::dot(o_5.corners.inner[2] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[3] - q_14, _e5.xy), metal::dot(o_5.corners.inner[3] - q_14, v_9.xy))}};
     if (lobe_3.on_emitter) {
-        uint2 loop_bound_37 = uint2(4294967295u);
-        bool loop_init_36 = true;
+        uint2 loop_bound_38 = uint2(4294967295u);
+        bool loop_init_37 = true;
         while(true) {
-            if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-            if (!loop_init_36) {
-                uint _e186 = i_31;
-                i_31 = _e186 + 1u;
+            if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+            loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+            if (!loop_init_37) {
+                uint _e188 = i_32;
+                i_32 = _e188 + 1u;
             }
-            loop_init_36 = false;
-            uint _e117 = i_31;
-            if (_e117 < 4u) {
+            loop_init_37 = false;
+            uint _e165 = i_32;
+            if (_e165 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e121 = i_31;
-                metal::float2 ea = o_5.corners.inner[metal::min(unsigned(_e121), 3u)] - q_14;
-                uint _e125 = i_31;
-                metal::float2 eb = o_5.corners.inner[metal::min(unsigned(airlight_naga_mod(_e125 + 1u, 4u)), 3u)] - q_14;
-                ya = metal::float2(metal::dot(ea, _e5.xy), metal::dot(ea, v_9.xy));
-                yb = metal::float2(metal::dot(eb, _e5.xy), metal::dot(eb, v_9.xy));
-                float _e145 = ya.x;
-                float _e147 = yb.y;
-                float _e150 = ya.y;
-                float _e152 = yb.x;
-                float area = (_e145 * _e147) - (_e150 * _e152);
-                if (!((metal::abs(area) > 0.0))) {
+                uint _e168 = i_32;
+                metal::float2 b_24 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e168 + 1u, 4u)), 3u)];
+                uint _e174 = i_32;
+                uint _e176 = i_32;
+                uint _e181 = i_32;
+                area[metal::min(unsigned(_e174), 3u)] = (y_14.inner[metal::min(unsigned(_e176), 3u)].x * y_14.inner[metal::min(unsigned(airlight_naga_mod(_e168 + 1u, 4u)), 3u)].y) - (y_14.inner[metal::min(unsigned(_e181), 3u)].y * y_14.inner[metal::min(unsigned(airlight_naga_mod(_e168 + 1u, 4u)), 3u)].x);
+            }
+        }
+        float _e191 = area.x;
+        float _e193 = area.y;
+        float _e196 = area.z;
+        float _e199 = area.w;
+        float turn = ((_e191 + _e193) + _e196) + _e199;
+        uint2 loop_bound_39 = uint2(4294967295u);
+        bool loop_init_38 = true;
+        while(true) {
+            if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+            loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+            if (!loop_init_38) {
+                uint _e256 = i_33;
+                i_33 = _e256 + 1u;
+            }
+            loop_init_38 = false;
+            uint _e203 = i_33;
+            if (_e203 < 4u) {
+            } else {
+                break;
+            }
+            {
+                uint _e206 = i_33;
+                float _e208 = area[metal::min(unsigned(_e206), 3u)];
+                if (!(((_e208 * turn) > 0.0))) {
                     continue;
                 }
-                if (area < 0.0) {
-                    metal::float2 swap = ya;
-                    metal::float2 _e162 = yb;
-                    ya = _e162;
-                    yb = swap;
+                uint _e213 = i_33;
+                ya = y_14.inner[metal::min(unsigned(_e213), 3u)];
+                uint _e216 = i_33;
+                yb = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e216 + 1u, 4u)), 3u)];
+                if (turn < 0.0) {
+                    uint _e225 = i_33;
+                    ya = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e225 + 1u, 4u)), 3u)];
+                    uint _e231 = i_33;
+                    yb = y_14.inner[metal::min(unsigned(_e231), 3u)];
                 }
-                metal::float2 _e163 = ya;
-                metal::float2 _e164 = yb;
-                AirlightEdgeRule _e168 = airlight_edge_rule(_e163, _e164, lobe_3.l * lobe_3.scale);
+                metal::float2 _e233 = ya;
+                metal::float2 _e234 = yb;
+                AirlightEdgeRule _e238 = airlight_edge_rule(_e233, _e234, lobe_3.l * lobe_3.scale);
                 j_7 = 0u;
-                uint2 loop_bound_38 = uint2(4294967295u);
-                bool loop_init_37 = true;
+                uint2 loop_bound_40 = uint2(4294967295u);
+                bool loop_init_39 = true;
                 while(true) {
-                    if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-                    loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                    if (!loop_init_37) {
-                        uint _e183 = j_7;
-                        j_7 = _e183 + 1u;
+                    if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+                    loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                    if (!loop_init_39) {
+                        uint _e253 = j_7;
+                        j_7 = _e253 + 1u;
                     }
-                    loop_init_37 = false;
-                    uint _e171 = j_7;
-                    if (_e171 < 12u) {
+                    loop_init_39 = false;
+                    uint _e241 = j_7;
+                    if (_e241 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        uint _e174 = j_7;
-                        metal::float4 _e175 = airlight_edge_node(_e168, _e174);
-                        float _e176 = sum_9;
-                        float _e179 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e175.xy);
-                        sum_9 = _e176 + (_e175.w * _e179);
+                        uint _e244 = j_7;
+                        metal::float4 _e245 = airlight_edge_node(_e238, _e244);
+                        float _e246 = sum_9;
+                        float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
+                        sum_9 = _e246 + (_e245.w * _e249);
                     }
                 }
             }
         }
-        float _e188 = sum_9;
-        return _e188;
+        float _e258 = sum_9;
+        return _e258;
     }
-    float _e197 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_5.corners.inner[0] + o_5.corners.inner[2])) - q_14);
-    float _e201 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[0] - q_14);
-    float _e203 = airlight_wrap_turn(_e201 - _e197);
-    float _e207 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[1] - q_14);
-    float _e209 = airlight_wrap_turn(_e207 - _e197);
-    float _e213 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[2] - q_14);
-    float _e215 = airlight_wrap_turn(_e213 - _e197);
-    float _e219 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[3] - q_14);
-    float _e221 = airlight_wrap_turn(_e219 - _e197);
-    metal::float4 _e223 = airlight_sort4_(metal::float4(_e203, _e209, _e215, _e221));
-    uint2 loop_bound_39 = uint2(4294967295u);
-    bool loop_init_38 = true;
+    float _e267 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_5.corners.inner[0] + o_5.corners.inner[2])) - q_14);
+    float _e271 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[0] - q_14);
+    float _e273 = airlight_wrap_turn(_e271 - _e267);
+    float _e277 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[1] - q_14);
+    float _e279 = airlight_wrap_turn(_e277 - _e267);
+    float _e283 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[2] - q_14);
+    float _e285 = airlight_wrap_turn(_e283 - _e267);
+    float _e289 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[3] - q_14);
+    float _e291 = airlight_wrap_turn(_e289 - _e267);
+    metal::float4 _e293 = airlight_sort4_(metal::float4(_e273, _e279, _e285, _e291));
+    uint2 loop_bound_41 = uint2(4294967295u);
+    bool loop_init_40 = true;
     while(true) {
-        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_38) {
-            uint _e269 = i_32;
-            i_32 = _e269 + 1u;
+        if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_40) {
+            uint _e416 = i_34;
+            i_34 = _e416 + 1u;
         }
-        loop_init_38 = false;
-        uint _e226 = i_32;
-        if (_e226 < 3u) {
+        loop_init_40 = false;
+        uint _e296 = i_34;
+        if (_e296 < 3u) {
         } else {
             break;
         }
         {
-            uint _e229 = i_32;
-            uint _e231 = i_32;
-            float c_19 = _e197 + ((_e223[metal::min(unsigned(_e229), 3u)] + _e223[metal::min(unsigned(_e231 + 1u), 3u)]) * 0.5);
-            uint _e239 = i_32;
-            uint _e243 = i_32;
-            float hw_5 = (_e223[metal::min(unsigned(_e239 + 1u), 3u)] - _e223[metal::min(unsigned(_e243), 3u)]) * 0.5;
-            j_8 = 0u;
-            uint2 loop_bound_40 = uint2(4294967295u);
-            bool loop_init_39 = true;
-            while(true) {
-                if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                if (!loop_init_39) {
-                    uint _e266 = j_8;
-                    j_8 = _e266 + 1u;
+            uint _e299 = i_34;
+            float first_2 = _e267 + _e293[metal::min(unsigned(_e299), 3u)];
+            uint _e302 = i_34;
+            float last_1 = _e267 + _e293[metal::min(unsigned(_e302 + 1u), 3u)];
+            metal::float2 _e310 = airlight_cos_sin_turns(0.5 * (first_2 + last_1));
+            metal::float2 _e311 = airlight_entry_normal(y_14, _e310);
+            if (metal::all(_e311 == metal::float2(0.0))) {
+                float c_19 = (first_2 + last_1) * 0.5;
+                float hw_5 = (last_1 - first_2) * 0.5;
+                j_8 = 0u;
+                uint2 loop_bound_42 = uint2(4294967295u);
+                bool loop_init_41 = true;
+                while(true) {
+                    if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+                    loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+                    if (!loop_init_41) {
+                        uint _e340 = j_8;
+                        j_8 = _e340 + 1u;
+                    }
+                    loop_init_41 = false;
+                    uint _e324 = j_8;
+                    if (_e324 < 12u) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e327 = j_8;
+                        metal::float2 _e328 = airlight_triangle_rule(_e327);
+                        float _e329 = sum_9;
+                        metal::float2 _e335 = airlight_cos_sin_turns(c_19 + (hw_5 * _e328.x));
+                        float _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
+                        sum_9 = _e329 + ((_e328.y * hw_5) * _e336);
+                    }
                 }
-                loop_init_39 = false;
-                uint _e250 = j_8;
-                if (_e250 < 12u) {
+                continue;
+            }
+            metal::float2 t_13 = metal::float2(-(_e311.y), _e311.x);
+            metal::float2 _e346 = airlight_cos_sin_turns(first_2);
+            float _e347 = airlight_mercator(_e311, _e346);
+            metal::float2 _e348 = airlight_cos_sin_turns(last_1);
+            float _e349 = airlight_mercator(_e311, _e348);
+            k_9 = 0u;
+            uint2 loop_bound_43 = uint2(4294967295u);
+            bool loop_init_42 = true;
+            while(true) {
+                if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                if (!loop_init_42) {
+                    uint _e413 = k_9;
+                    k_9 = _e413 + 1u;
+                }
+                loop_init_42 = false;
+                uint _e352 = k_9;
+                if (_e352 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e253 = j_8;
-                    metal::float2 _e254 = airlight_triangle_rule(_e253);
-                    float _e255 = sum_9;
-                    metal::float2 _e261 = airlight_cos_sin_turns(c_19 + (hw_5 * _e254.x));
-                    float _e262 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e261);
-                    sum_9 = _e255 + ((_e254.y * hw_5) * _e262);
+                    uint _e355 = k_9;
+                    float _e356 = airlight_mercator_cut(_e355);
+                    float lo_8 = metal::max(_e347, _e356);
+                    uint _e358 = k_9;
+                    float _e361 = airlight_mercator_cut(_e358 + 1u);
+                    float hi_9 = metal::min(_e349, _e361);
+                    if (!((lo_8 < hi_9))) {
+                        continue;
+                    }
+                    float c_20 = (lo_8 + hi_9) * 0.5;
+                    float hw_6 = (hi_9 - lo_8) * 0.5;
+                    j_9 = 0u;
+                    uint2 loop_bound_44 = uint2(4294967295u);
+                    bool loop_init_43 = true;
+                    while(true) {
+                        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+                        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                        if (!loop_init_43) {
+                            uint _e410 = j_9;
+                            j_9 = _e410 + 1u;
+                        }
+                        loop_init_43 = false;
+                        uint _e373 = j_9;
+                        if (_e373 < 12u) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e376 = j_9;
+                            metal::float2 _e377 = airlight_triangle_rule(_e376);
+                            float x_37 = c_20 + (hw_6 * _e377.x);
+                            float e_17 = metal::exp(-(metal::abs(x_37)));
+                            float sech = (2.0 * e_17) / (1.0 + (e_17 * e_17));
+                            float th = (metal::sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17));
+                            float _e399 = sum_9;
+                            float _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, (_e311 * sech) + (t_13 * th));
+                            sum_9 = _e399 + (((_e377.y * hw_6) * sech) * _e406);
+                        }
+                    }
                 }
             }
         }
     }
-    float _e271 = sum_9;
-    return _e271;
+    float _e418 = sum_9;
+    return _e418;
 }
 
 float airlight_disc(
@@ -8184,13 +8364,13 @@ float airlight_disc(
     AirlightArea a_24,
     metal::float3 x_25
 ) {
-    bool local_181 = {};
-    bool local_182 = {};
+    bool local_184 = {};
+    bool local_185 = {};
     metal::float2 u_6 = metal::float2(0.0);
     AirlightAbove above_3 = {};
     float sum_10 = 0.0;
-    uint i_33 = 0u;
-    metal::float2 e_8 = {};
+    uint i_35 = 0u;
+    metal::float2 e_9 = {};
     float r_max_1 = {};
     metal::float3 rel = x_25 - a_24.c;
     float z_20 = metal::dot(rel, a_24.n);
@@ -8211,16 +8391,16 @@ float airlight_disc(
     if (rf <= radius_2) {
         if (!((rf == 0.0))) {
             bool _e44 = airlight_far_from_edge(s_41, radius_2 - rf, z_20);
-            local_182 = _e44;
+            local_185 = _e44;
         } else {
-            local_182 = true;
+            local_185 = true;
         }
-        bool _e46 = local_182;
-        local_181 = _e46;
+        bool _e46 = local_185;
+        local_184 = _e46;
     } else {
-        local_181 = false;
+        local_184 = false;
     }
-    bool inside_2 = local_181;
+    bool inside_2 = local_184;
     AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
@@ -8229,40 +8409,40 @@ float airlight_disc(
         AirlightAbove _e65 = airlight_above(z_20, (rf - radius_2) * _e63);
         above_3 = _e65;
     }
-    float k_13 = (rf - radius_2) * (rf + radius_2);
-    uint2 loop_bound_41 = uint2(4294967295u);
-    bool loop_init_40 = true;
+    float k_15 = (rf - radius_2) * (rf + radius_2);
+    uint2 loop_bound_45 = uint2(4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_40) {
-            uint _e127 = i_33;
-            i_33 = _e127 + 1u;
+        if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
+            uint _e127 = i_35;
+            i_35 = _e127 + 1u;
         }
-        loop_init_40 = false;
-        uint _e73 = i_33;
+        loop_init_44 = false;
+        uint _e73 = i_35;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            uint _e76 = i_33;
+            uint _e76 = i_35;
             metal::float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
             float _e89 = u_6.y;
             float _e93 = u_6.x;
-            e_8 = metal::float2((_e77.x * _e80) - (_e77.y * _e84), (_e77.x * _e89) + (_e77.y * _e93));
+            e_9 = metal::float2((_e77.x * _e80) - (_e77.y * _e84), (_e77.x * _e89) + (_e77.y * _e93));
             r_max_1 = (radius_2 + radius_2) * _e77.x;
             if (inside_2) {
-                e_8 = _e77.xy;
-                float b_24 = (fx * _e77.x) + (fy_1 * _e77.y);
-                float root_4 = metal::sqrt((b_24 * b_24) - k_13);
-                r_max_1 = (b_24 > 0.0) ? (-(k_13) / (b_24 + root_4)) : (root_4 - b_24);
+                e_9 = _e77.xy;
+                float b_25 = (fx * _e77.x) + (fy_1 * _e77.y);
+                float root_4 = metal::sqrt((b_25 * b_25) - k_15);
+                r_max_1 = (b_25 > 0.0) ? (-(k_15) / (b_25 + root_4)) : (root_4 - b_25);
             }
             float _e118 = sum_10;
             AirlightAbove _e120 = above_3;
-            metal::float2 _e121 = e_8;
+            metal::float2 _e121 = e_9;
             float _e122 = r_max_1;
             float _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = _e118 + (_e77.z * _e123);
@@ -8278,10 +8458,10 @@ float airlight_parallelogram(
     metal::float3 x_26
 ) {
     metal::float2 q_8 = {};
-    bool local_183 = {};
+    bool local_186 = {};
     float sum_11 = 0.0;
-    uint i_34 = 0u;
-    uint j_9 = {};
+    uint i_36 = 0u;
+    uint j_10 = {};
     metal::float3 rel_1 = x_26 - a_25.c;
     float z_21 = metal::dot(rel_1, a_25.n);
     if (!((z_21 > 0.0))) {
@@ -8303,11 +8483,11 @@ float airlight_parallelogram(
     q_8 = _e76.xy + foot;
     if (_e76.z > 0.0) {
         bool _e89 = airlight_far_from_edge(s_42, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
-        local_183 = _e89;
+        local_186 = _e89;
     } else {
-        local_183 = false;
+        local_186 = false;
     }
-    bool _e91 = local_183;
+    bool _e91 = local_186;
     if (_e91) {
         q_8 = foot;
     }
@@ -8315,50 +8495,50 @@ float airlight_parallelogram(
     AirlightAbove _e94 = airlight_above(z_21, _e92 - foot);
     float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
     float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    uint2 loop_bound_42 = uint2(4294967295u);
-    bool loop_init_41 = true;
+    uint2 loop_bound_46 = uint2(4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_41) {
-            uint _e145 = i_34;
-            i_34 = _e145 + 1u;
+        if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
+            uint _e145 = i_36;
+            i_36 = _e145 + 1u;
         }
-        loop_init_41 = false;
-        uint _e104 = i_34;
+        loop_init_45 = false;
+        uint _e104 = i_36;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            uint _e107 = i_34;
+            uint _e107 = i_36;
             metal::float2 _e109 = q_8;
             metal::float2 ca = corners.inner[metal::min(unsigned(_e107), 4u)] - _e109;
-            uint _e111 = i_34;
+            uint _e111 = i_36;
             metal::float2 _e115 = q_8;
             metal::float2 cb_1 = corners.inner[metal::min(unsigned(_e111 + 1u), 4u)] - _e115;
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
             AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_9 = 0u;
-            uint2 loop_bound_43 = uint2(4294967295u);
-            bool loop_init_42 = true;
+            j_10 = 0u;
+            uint2 loop_bound_47 = uint2(4294967295u);
+            bool loop_init_46 = true;
             while(true) {
-                if (metal::all(loop_bound_43 == uint2(0u))) { break; }
-                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                if (!loop_init_42) {
-                    uint _e142 = j_9;
-                    j_9 = _e142 + 1u;
+                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_46) {
+                    uint _e142 = j_10;
+                    j_10 = _e142 + 1u;
                 }
-                loop_init_42 = false;
-                uint _e129 = j_9;
+                loop_init_46 = false;
+                uint _e129 = j_10;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_9;
+                    uint _e132 = j_10;
                     metal::float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
                     float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
@@ -8396,7 +8576,7 @@ float airlight_sphere_cap(
 ) {
     airlight_type_24 rows = airlight_type_24 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
     float sum_12 = 0.0;
-    uint i_35 = 0u;
+    uint i_37 = 0u;
     float at_2 = {};
     metal::float3 _e4 = airlight_basis_e1_(cap_1.a);
     metal::float3 e2_2 = metal::cross(cap_1.a, _e4);
@@ -8405,39 +8585,39 @@ float airlight_sphere_cap(
     float e2d = metal::dot(e2_2, a_26.d);
     metal::float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_9 = _e15.y;
-    float c_20 = 0.5 * _e15.x;
-    float hw_6 = 0.5 * _e15.x;
-    metal::float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.09501251 * hw_6), 0.1894506 * hw_6);
+    float c_21 = 0.5 * _e15.x;
+    float hw_7 = 0.5 * _e15.x;
+    metal::float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[0] = _e63;
-    metal::float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.09501251 * hw_6), 0.1894506 * hw_6);
+    metal::float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[1] = _e70;
-    metal::float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.28160354 * hw_6), 0.18260342 * hw_6);
+    metal::float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[2] = _e77;
-    metal::float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.28160354 * hw_6), 0.18260342 * hw_6);
+    metal::float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[3] = _e84;
-    metal::float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.45801678 * hw_6), 0.16915652 * hw_6);
+    metal::float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[4] = _e91;
-    metal::float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.45801678 * hw_6), 0.16915652 * hw_6);
+    metal::float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[5] = _e98;
-    metal::float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.61787623 * hw_6), 0.14959599 * hw_6);
+    metal::float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[6] = _e105;
-    metal::float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.61787623 * hw_6), 0.14959599 * hw_6);
+    metal::float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[7] = _e112;
-    metal::float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.7554044 * hw_6), 0.12462897 * hw_6);
+    metal::float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[8] = _e119;
-    metal::float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.7554044 * hw_6), 0.12462897 * hw_6);
+    metal::float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[9] = _e126;
-    metal::float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.8656312 * hw_6), 0.09515851 * hw_6);
+    metal::float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[10] = _e133;
-    metal::float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.8656312 * hw_6), 0.09515851 * hw_6);
+    metal::float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[11] = _e140;
-    metal::float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.944575 * hw_6), 0.062253524 * hw_6);
+    metal::float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[12] = _e147;
-    metal::float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.944575 * hw_6), 0.062253524 * hw_6);
+    metal::float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[13] = _e154;
-    metal::float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, c_20 - (0.9894009 * hw_6), 0.02715246 * hw_6);
+    metal::float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[14] = _e161;
-    metal::float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, c_20 + (0.9894009 * hw_6), 0.02715246 * hw_6);
+    metal::float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[15] = _e168;
     if (a_26.isotropic) {
         float _e174 = airlight_area_phase(s_44, 0.0);
@@ -8493,23 +8673,23 @@ float airlight_sphere_cap(
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_44 = uint2(4294967295u);
-    bool loop_init_43 = true;
+    uint2 loop_bound_48 = uint2(4294967295u);
+    bool loop_init_47 = true;
     while(true) {
-        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
-        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_43) {
-            uint _e550 = i_35;
-            i_35 = _e550 + 1u;
+        if (metal::all(loop_bound_48 == uint2(0u))) { break; }
+        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+        if (!loop_init_47) {
+            uint _e550 = i_37;
+            i_37 = _e550 + 1u;
         }
-        loop_init_43 = false;
-        uint _e275 = i_35;
+        loop_init_47 = false;
+        uint _e275 = i_37;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            uint _e279 = i_35;
+            uint _e279 = i_37;
             metal::float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = (_e280.x * e1d) + (_e280.y * e2d);
             at_2 = 0.0;
@@ -8648,7 +8828,7 @@ float airlight_sphere_about_lobe(
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_36 = 0u;
+    uint i_38 = 0u;
     float big_b_1 = {};
     float wpsi = {};
     float start_5 = {};
@@ -8665,23 +8845,23 @@ float airlight_sphere_about_lobe(
         float _e42 = airlight_acos(metal::min(metal::sqrt(metal::max((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1), 0.0)) / sin_p, 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_45 = uint2(4294967295u);
-    bool loop_init_44 = true;
+    uint2 loop_bound_49 = uint2(4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (metal::all(loop_bound_45 == uint2(0u))) { break; }
-        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-        if (!loop_init_44) {
-            uint _e290 = i_36;
-            i_36 = _e290 + 1u;
+        if (metal::all(loop_bound_49 == uint2(0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
+            uint _e290 = i_38;
+            i_38 = _e290 + 1u;
         }
-        loop_init_44 = false;
-        uint _e47 = i_36;
+        loop_init_48 = false;
+        uint _e47 = i_38;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            uint _e50 = i_36;
+            uint _e50 = i_38;
             metal::float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -8706,89 +8886,89 @@ float airlight_sphere_about_lobe(
             float _e96 = start_5;
             metal::float2 _e98 = airlight_graded_from(scale_2, _e96, _e78 + _e89);
             float graded_10 = _e98.x;
-            float c_21 = 0.5 * _e98.y;
-            float hw_7 = 0.5 * _e98.y;
+            float c_22 = 0.5 * _e98.y;
+            float hw_8 = 0.5 * _e98.y;
             around = 0.0;
             float _e108 = around;
             float _e111 = big_b_1;
             float _e112 = start_5;
-            float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_21 - (0.09501251 * hw_7));
-            around = _e108 + ((0.1894506 * hw_7) * _e116);
+            float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_22 - (0.09501251 * hw_8));
+            around = _e108 + ((0.1894506 * hw_8) * _e116);
             float _e119 = around;
             float _e122 = big_b_1;
             float _e123 = start_5;
-            float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_21 + (0.09501251 * hw_7));
-            around = _e119 + ((0.1894506 * hw_7) * _e127);
+            float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_22 + (0.09501251 * hw_8));
+            around = _e119 + ((0.1894506 * hw_8) * _e127);
             float _e130 = around;
             float _e133 = big_b_1;
             float _e134 = start_5;
-            float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_21 - (0.28160354 * hw_7));
-            around = _e130 + ((0.18260342 * hw_7) * _e138);
+            float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_22 - (0.28160354 * hw_8));
+            around = _e130 + ((0.18260342 * hw_8) * _e138);
             float _e141 = around;
             float _e144 = big_b_1;
             float _e145 = start_5;
-            float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_21 + (0.28160354 * hw_7));
-            around = _e141 + ((0.18260342 * hw_7) * _e149);
+            float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_22 + (0.28160354 * hw_8));
+            around = _e141 + ((0.18260342 * hw_8) * _e149);
             float _e152 = around;
             float _e155 = big_b_1;
             float _e156 = start_5;
-            float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_21 - (0.45801678 * hw_7));
-            around = _e152 + ((0.16915652 * hw_7) * _e160);
+            float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_22 - (0.45801678 * hw_8));
+            around = _e152 + ((0.16915652 * hw_8) * _e160);
             float _e163 = around;
             float _e166 = big_b_1;
             float _e167 = start_5;
-            float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_21 + (0.45801678 * hw_7));
-            around = _e163 + ((0.16915652 * hw_7) * _e171);
+            float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_22 + (0.45801678 * hw_8));
+            around = _e163 + ((0.16915652 * hw_8) * _e171);
             float _e174 = around;
             float _e177 = big_b_1;
             float _e178 = start_5;
-            float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_21 - (0.61787623 * hw_7));
-            around = _e174 + ((0.14959599 * hw_7) * _e182);
+            float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_22 - (0.61787623 * hw_8));
+            around = _e174 + ((0.14959599 * hw_8) * _e182);
             float _e185 = around;
             float _e188 = big_b_1;
             float _e189 = start_5;
-            float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_21 + (0.61787623 * hw_7));
-            around = _e185 + ((0.14959599 * hw_7) * _e193);
+            float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_22 + (0.61787623 * hw_8));
+            around = _e185 + ((0.14959599 * hw_8) * _e193);
             float _e196 = around;
             float _e199 = big_b_1;
             float _e200 = start_5;
-            float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_21 - (0.7554044 * hw_7));
-            around = _e196 + ((0.12462897 * hw_7) * _e204);
+            float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_22 - (0.7554044 * hw_8));
+            around = _e196 + ((0.12462897 * hw_8) * _e204);
             float _e207 = around;
             float _e210 = big_b_1;
             float _e211 = start_5;
-            float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_21 + (0.7554044 * hw_7));
-            around = _e207 + ((0.12462897 * hw_7) * _e215);
+            float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_22 + (0.7554044 * hw_8));
+            around = _e207 + ((0.12462897 * hw_8) * _e215);
             float _e218 = around;
             float _e221 = big_b_1;
             float _e222 = start_5;
-            float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_21 - (0.8656312 * hw_7));
-            around = _e218 + ((0.09515851 * hw_7) * _e226);
+            float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_22 - (0.8656312 * hw_8));
+            around = _e218 + ((0.09515851 * hw_8) * _e226);
             float _e229 = around;
             float _e232 = big_b_1;
             float _e233 = start_5;
-            float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_21 + (0.8656312 * hw_7));
-            around = _e229 + ((0.09515851 * hw_7) * _e237);
+            float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_22 + (0.8656312 * hw_8));
+            around = _e229 + ((0.09515851 * hw_8) * _e237);
             float _e240 = around;
             float _e243 = big_b_1;
             float _e244 = start_5;
-            float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_21 - (0.944575 * hw_7));
-            around = _e240 + ((0.062253524 * hw_7) * _e248);
+            float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_22 - (0.944575 * hw_8));
+            around = _e240 + ((0.062253524 * hw_8) * _e248);
             float _e251 = around;
             float _e254 = big_b_1;
             float _e255 = start_5;
-            float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_21 + (0.944575 * hw_7));
-            around = _e251 + ((0.062253524 * hw_7) * _e259);
+            float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_22 + (0.944575 * hw_8));
+            around = _e251 + ((0.062253524 * hw_8) * _e259);
             float _e262 = around;
             float _e265 = big_b_1;
             float _e266 = start_5;
-            float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_21 - (0.9894009 * hw_7));
-            around = _e262 + ((0.02715246 * hw_7) * _e270);
+            float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_22 - (0.9894009 * hw_8));
+            around = _e262 + ((0.02715246 * hw_8) * _e270);
             float _e273 = around;
             float _e276 = big_b_1;
             float _e277 = start_5;
-            float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_21 + (0.9894009 * hw_7));
-            around = _e273 + ((0.02715246 * hw_7) * _e281);
+            float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_22 + (0.9894009 * hw_8));
+            around = _e273 + ((0.02715246 * hw_8) * _e281);
             float _e284 = sum_13;
             float _e285 = wpsi;
             float _e286 = around;
@@ -8807,12 +8987,12 @@ float airlight_sphere(
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_10 = 0u;
-    bool local_184 = {};
-    bool local_185 = {};
-    bool local_186 = {};
+    uint j_11 = 0u;
     bool local_187 = {};
     bool local_188 = {};
+    bool local_189 = {};
+    bool local_190 = {};
+    bool local_191 = {};
     metal::float3 v_11 = a_28.c - x_27;
     float _e5 = airlight_safe_length(v_11);
     if (!((_e5 > a_28.radius))) {
@@ -8821,61 +9001,61 @@ float airlight_sphere(
     float sin_a_2 = a_28.radius / _e5;
     AirlightCap cap_4 = AirlightCap {v_11 / metal::float3(_e5), _e5, a_28.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_46 = uint2(4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_50 = uint2(4294967295u);
+    bool loop_init_49 = true;
     while(true) {
-        if (metal::all(loop_bound_46 == uint2(0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
-            uint _e92 = j_10;
-            j_10 = _e92 + 1u;
+        if (metal::all(loop_bound_50 == uint2(0u))) { break; }
+        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+        if (!loop_init_49) {
+            uint _e92 = j_11;
+            j_11 = _e92 + 1u;
         }
-        loop_init_45 = false;
-        uint _e32 = j_10;
+        loop_init_49 = false;
+        uint _e32 = j_11;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            uint _e39 = j_10;
+            uint _e39 = j_11;
             metal::float2 lobe_5 = (_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy;
-            float c_22 = metal::dot(cap_4.a, lobe_5.x * a_28.d);
+            float c_23 = metal::dot(cap_4.a, lobe_5.x * a_28.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_184 = lobe_5.y > 0.0;
+                local_187 = lobe_5.y > 0.0;
             } else {
-                local_184 = false;
+                local_187 = false;
             }
-            bool _e57 = local_184;
+            bool _e57 = local_187;
             if (_e57) {
-                local_185 = lobe_5.y < (_e23 + _e23);
+                local_188 = lobe_5.y < (_e23 + _e23);
             } else {
-                local_185 = false;
+                local_188 = false;
             }
-            bool _e64 = local_185;
+            bool _e64 = local_188;
             if (_e64) {
-                if (!((c_22 > cap_4.cos_a))) {
-                    if (c_22 > -(cap_4.cos_a)) {
-                        float _e77 = airlight_acos(c_22);
-                        local_188 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
+                if (!((c_23 > cap_4.cos_a))) {
+                    if (c_23 > -(cap_4.cos_a)) {
+                        float _e77 = airlight_acos(c_23);
+                        local_191 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
                     } else {
-                        local_188 = false;
+                        local_191 = false;
                     }
-                    bool _e84 = local_188;
-                    local_187 = _e84;
+                    bool _e84 = local_191;
+                    local_190 = _e84;
                 } else {
-                    local_187 = true;
+                    local_190 = true;
                 }
-                bool _e86 = local_187;
-                local_186 = _e86;
+                bool _e86 = local_190;
+                local_189 = _e86;
             } else {
-                local_186 = false;
+                local_189 = false;
             }
-            bool _e88 = local_186;
+            bool _e88 = local_189;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_22;
+                cos_p_2 = c_23;
             }
         }
     }
@@ -8918,10 +9098,10 @@ float airlight_area_node(
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
-    float along = (a_30.h_eff * _e3.y) / _e3.x;
-    float t_13 = a_30.x_h + along;
-    float fade = metal::exp(metal::min(-(s_49.sigma_t) * metal::max((a_30.x_h - s_49.t_min) + along, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_49, a_30, s_49.origin + (t_13 * a_30.d));
+    float along_1 = (a_30.h_eff * _e3.y) / _e3.x;
+    float t_14 = a_30.x_h + along_1;
+    float fade = metal::exp(metal::min(-(s_49.sigma_t) * metal::max((a_30.x_h - s_49.t_min) + along_1, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_49, a_30, s_49.origin + (t_14 * a_30.d));
     return ((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
@@ -8930,10 +9110,10 @@ AirlightResult airlight_area_light(
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
-    float k_8 = {};
+    float k_10 = {};
     float gauss_1 = {};
-    uint j_11 = {};
-    bool local_189 = {};
+    uint j_12 = {};
+    bool local_192 = {};
     AirlightArea _e1 = airlight_area(s_50);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
@@ -8943,16 +9123,16 @@ AirlightResult airlight_area_light(
     st_1 = _e13;
     uint max_panels_3 = metal::max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = (2u * max_panels_3) - 1u;
-    uint2 loop_bound_47 = uint2(4294967295u);
-    bool loop_init_46 = true;
+    uint2 loop_bound_51 = uint2(4294967295u);
+    bool loop_init_50 = true;
     while(true) {
-        if (metal::all(loop_bound_47 == uint2(0u))) { break; }
-        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-        if (!loop_init_46) {
+        if (metal::all(loop_bound_51 == uint2(0u))) { break; }
+        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+        if (!loop_init_50) {
             uint _e97 = step_2;
             step_2 = _e97 + 1u;
         }
-        loop_init_46 = false;
+        loop_init_50 = false;
         uint _e24 = step_2;
         if (_e24 < evaluations) {
         } else {
@@ -8961,51 +9141,51 @@ AirlightResult airlight_area_light(
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_23 = 0.5 * (_e27 + _e29);
+            float c_24 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_8 = 0.5 * (_e34 - _e36);
-            k_8 = 0.0;
+            float hw_9 = 0.5 * (_e34 - _e36);
+            k_10 = 0.0;
             gauss_1 = 0.0;
-            j_11 = 0u;
-            uint2 loop_bound_48 = uint2(4294967295u);
-            bool loop_init_47 = true;
+            j_12 = 0u;
+            uint2 loop_bound_52 = uint2(4294967295u);
+            bool loop_init_51 = true;
             while(true) {
-                if (metal::all(loop_bound_48 == uint2(0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_47) {
-                    uint _e82 = j_11;
-                    j_11 = _e82 + 1u;
+                if (metal::all(loop_bound_52 == uint2(0u))) { break; }
+                loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+                if (!loop_init_51) {
+                    uint _e82 = j_12;
+                    j_12 = _e82 + 1u;
                 }
-                loop_init_47 = false;
-                uint _e46 = j_11;
+                loop_init_51 = false;
+                uint _e46 = j_12;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_11;
+                    uint _e49 = j_12;
                     metal::float3 node_4 = _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_11;
+                    uint _e59 = j_12;
                     if ((_e59 & 1u) == 0u) {
-                        uint _e66 = j_11;
-                        local_189 = _e66 < 14u;
+                        uint _e66 = j_12;
+                        local_192 = _e66 < 14u;
                     } else {
-                        local_189 = false;
+                        local_192 = false;
                     }
-                    bool _e70 = local_189;
-                    float x_37 = _e70 ? (c_23 - (hw_8 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_23 + (hw_8 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_50, _e1, x_37);
-                    float _e73 = k_8;
-                    k_8 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
+                    bool _e70 = local_192;
+                    float x_38 = _e70 ? (c_24 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_24 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_50, _e1, x_38);
+                    float _e73 = k_10;
+                    k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
                     gauss_1 = _e77 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].z * _e72);
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_8;
+            float _e85 = k_10;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_8, _e87 * hw_8, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_9, _e87 * hw_9, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -9027,21 +9207,21 @@ AirlightResult airlight_area_light(
 AirlightResult airlight_in_scatter_area(
     AirlightScene s_51
 ) {
-    bool local_190 = {};
-    bool local_191 = {};
+    bool local_193 = {};
+    bool local_194 = {};
     bool _e1 = airlight_valid(s_51);
     if (!(!(_e1))) {
-        local_190 = s_51.light_shape < AIRLIGHT_SHAPE_DISC;
+        local_193 = s_51.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
-        local_190 = true;
+        local_193 = true;
     }
-    bool _e10 = local_190;
+    bool _e10 = local_193;
     if (!(_e10)) {
-        local_191 = s_51.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_194 = s_51.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_191 = true;
+        local_194 = true;
     }
-    bool _e18 = local_191;
+    bool _e18 = local_194;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9052,14 +9232,14 @@ AirlightResult airlight_in_scatter_area(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_192 = {};
+    bool local_195 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_192 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_195 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_192 = true;
+        local_195 = true;
     }
-    bool _e11 = local_192;
+    bool _e11 = local_195;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9067,23 +9247,23 @@ AirlightResult airlight_overflowed(
 }
 
 AirlightResult airlight_node_integral(
-    AirlightNode n_3
+    AirlightNode n_4
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_193 = {};
+    bool local_196 = {};
     AirlightCanonical g_29 = {};
-    AirlightScene p_8 = n_3.scene;
-    bool _e7 = airlight_vec_finite(n_3.scene.light_position);
+    AirlightScene p_8 = n_4.scene;
+    bool _e7 = airlight_vec_finite(n_4.scene.light_position);
     if (_e7) {
-        bool _e11 = airlight_vec_finite(n_3.scene.dir);
-        local_193 = _e11;
+        bool _e11 = airlight_vec_finite(n_4.scene.dir);
+        local_196 = _e11;
     } else {
-        local_193 = false;
+        local_196 = false;
     }
-    bool _e13 = local_193;
+    bool _e13 = local_196;
     if (_e13) {
-        g_29 = n_3.canonical;
-        if (!(n_3.exact)) {
+        g_29 = n_4.canonical;
+        if (!(n_4.exact)) {
             AirlightCanonical _e18 = airlight_canonical(p_8);
             AirlightCanonical _e19 = airlight_refined(p_8, _e18);
             g_29 = _e19;
@@ -9108,21 +9288,21 @@ AirlightResult airlight_point_integral(
 AirlightResult airlight_in_scatter_point(
     AirlightScene s_52
 ) {
-    bool local_194 = {};
-    bool local_195 = {};
+    bool local_197 = {};
+    bool local_198 = {};
     bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_194 = s_52.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_197 = s_52.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_194 = true;
+        local_197 = true;
     }
-    bool _e10 = local_194;
+    bool _e10 = local_197;
     if (!(_e10)) {
-        local_195 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_198 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_195 = true;
+        local_198 = true;
     }
-    bool _e18 = local_195;
+    bool _e18 = local_198;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9133,21 +9313,21 @@ AirlightResult airlight_in_scatter_point(
 AirlightResult airlight_in_scatter_route(
     AirlightScene s_53
 ) {
-    bool local_196 = {};
-    bool local_197 = {};
+    bool local_199 = {};
+    bool local_200 = {};
     bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_196 = s_53.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_199 = s_53.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_196 = true;
+        local_199 = true;
     }
-    bool _e10 = local_196;
+    bool _e10 = local_199;
     if (!(_e10)) {
-        local_197 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_200 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_197 = true;
+        local_200 = true;
     }
-    bool _e18 = local_197;
+    bool _e18 = local_200;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9174,12 +9354,12 @@ AirlightResult airlight_in_scatter(
 ) {
     AirlightAdaptive st_2 = {};
     uint step_3 = 0u;
-    float k_9 = {};
+    float k_11 = {};
     float gauss_2 = {};
-    uint j_12 = {};
-    bool local_198 = {};
+    uint j_13 = {};
+    bool local_201 = {};
     float f = {};
-    bool local_199 = {};
+    bool local_202 = {};
     bool _e1 = airlight_valid(s_54);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -9198,16 +9378,16 @@ AirlightResult airlight_in_scatter(
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges.inner[0], _e12.edges.inner[1]);
     st_2 = _e30;
     uint evaluations_1 = (2u * _e12.max_panels) - 1u;
-    uint2 loop_bound_49 = uint2(4294967295u);
-    bool loop_init_48 = true;
+    uint2 loop_bound_53 = uint2(4294967295u);
+    bool loop_init_52 = true;
     while(true) {
-        if (metal::all(loop_bound_49 == uint2(0u))) { break; }
-        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-        if (!loop_init_48) {
+        if (metal::all(loop_bound_53 == uint2(0u))) { break; }
+        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+        if (!loop_init_52) {
             uint _e137 = step_3;
             step_3 = _e137 + 1u;
         }
-        loop_init_48 = false;
+        loop_init_52 = false;
         uint _e39 = step_3;
         if (_e39 < evaluations_1) {
         } else {
@@ -9216,40 +9396,40 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_24 = 0.5 * (_e42 + _e44);
+            float c_25 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_9 = 0.5 * (_e49 - _e51);
-            k_9 = 0.0;
+            float hw_10 = 0.5 * (_e49 - _e51);
+            k_11 = 0.0;
             gauss_2 = 0.0;
-            j_12 = 0u;
-            uint2 loop_bound_50 = uint2(4294967295u);
-            bool loop_init_49 = true;
+            j_13 = 0u;
+            uint2 loop_bound_54 = uint2(4294967295u);
+            bool loop_init_53 = true;
             while(true) {
-                if (metal::all(loop_bound_50 == uint2(0u))) { break; }
-                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-                if (!loop_init_49) {
-                    uint _e121 = j_12;
-                    j_12 = _e121 + 1u;
+                if (metal::all(loop_bound_54 == uint2(0u))) { break; }
+                loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+                if (!loop_init_53) {
+                    uint _e121 = j_13;
+                    j_13 = _e121 + 1u;
                 }
-                loop_init_49 = false;
-                uint _e61 = j_12;
+                loop_init_53 = false;
+                uint _e61 = j_13;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_12;
+                    uint _e64 = j_13;
                     metal::float3 node_5 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_12;
+                    uint _e74 = j_13;
                     if ((_e74 & 1u) == 0u) {
-                        uint _e81 = j_12;
-                        local_198 = _e81 < 6u;
+                        uint _e81 = j_13;
+                        local_201 = _e81 < 6u;
                     } else {
-                        local_198 = false;
+                        local_201 = false;
                     }
-                    bool _e85 = local_198;
-                    float w_11 = _e85 ? (c_24 - (hw_9 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_24 + (hw_9 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    bool _e85 = local_201;
+                    float w_11 = _e85 ? (c_25 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_25 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
                     AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
@@ -9258,28 +9438,28 @@ AirlightResult airlight_in_scatter(
                             return _e93;
                         }
                         if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_199 = s_54.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_202 = s_54.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_199 = false;
+                            local_202 = false;
                         }
-                        bool _e106 = local_199;
+                        bool _e106 = local_202;
                         if (_e106) {
                             return _e93;
                         }
                         f = _e93.in_scatter * _e87.weight;
                     }
-                    float _e110 = k_9;
+                    float _e110 = k_11;
                     float _e112 = f;
-                    k_9 = _e110 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].y * _e112);
+                    k_11 = _e110 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].y * _e112);
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = _e115 + (_e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].z * _e117);
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_9;
+            float _e124 = k_11;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_9, _e126 * hw_9, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_10, _e126 * hw_10, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

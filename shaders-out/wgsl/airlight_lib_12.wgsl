@@ -592,8 +592,8 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
     let x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
-    let y_6 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_29 * x_29) + (y_6 * y_6)) < 1f);
+    let y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
+    return (((x_29 * x_29) + (y_7 * y_7)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -1172,15 +1172,15 @@ fn airlight_moment_gauss(half: AirlightHalf) -> f32 {
         {
             let _e26 = j;
             let xi = nodes[_e26].x;
-            let y_7 = (yc + (hw * xi));
+            let y_8 = (yc + (hw * xi));
             dv = (hw * (1f + xi));
             if half.second {
-                dv = ((hw * (1f - xi)) / (y_7 * half.y_hi));
+                dv = ((hw * (1f - xi)) / (y_8 * half.y_hi));
             }
             let _e42 = m;
             let _e43 = j;
             let _e49 = dv;
-            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_7 * y_7))));
+            m = (_e42 + (((nodes[_e43].y * hw) * exp((-(half.big_h) * _e49))) / (1f + (y_8 * y_8))));
         }
         continuing {
             let _e59 = j;
@@ -2271,10 +2271,10 @@ fn airlight_y_panel(s_7: AirlightScene, g_9: AirlightCanonical, sigma_5: f32, ha
         {
             let _e28 = i_7;
             let _e29 = airlight_node(_e8, _e28);
-            let y_8 = (yc_1 + (r_9 * _e29));
-            let weight_2 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_8 * b_5)));
-            let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_8);
-            let over_1 = (1f / (1f + (y_8 * y_8)));
+            let y_9 = (yc_1 + (r_9 * _e29));
+            let weight_2 = exp(((-(half_7.big_h) * (r_9 * (1f - _e29))) / (y_9 * b_5)));
+            let _e41 = airlight_integrand(s_7, g_9, sigma_5, y_9);
+            let over_1 = (1f / (1f + (y_9 * y_9)));
             let _e47 = i_7;
             samples_1[_e47] = ((_e41 * over_1) * weight_2);
             let _e51 = f_max_2;
@@ -2441,10 +2441,10 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
         {
             let _e22 = i_8;
             let _e23 = airlight_node(_e6, _e22);
-            let y_9 = (yc_2 + (r_10 * _e23));
-            let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_9);
+            let y_10 = (yc_2 + (r_10 * _e23));
+            let _e26 = airlight_integrand(s_8, g_10, sigma_6, y_10);
             let _e27 = i_8;
-            samples_2[_e27] = (_e26 / (1f + (y_9 * y_9)));
+            samples_2[_e27] = (_e26 / (1f + (y_10 * y_10)));
             let _e33 = f_max_3;
             f_max_3 = max(_e33, abs(_e26));
             let _e36 = g_avg_1;
@@ -3212,8 +3212,8 @@ fn airlight_cut_length(big_h_1: f32, v_s: f32, span: f32) -> f32 {
     let inv_h = (1f / big_h_1);
     let w_4 = (v_s + inv_h);
     let r_11 = ((1f + (w_4 * w_4)) / (1f + (v_s * v_s)));
-    let e_9 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
-    return (e_9 * inv_h);
+    let e_10 = (1f + log(((8f * r_11) / AIRLIGHT_CUT_RESOLUTION)));
+    return (e_10 * inv_h);
 }
 
 fn airlight_weighted(sigma_s_1: f32, intensity_3: f32, h_2: f32, x_11: f32, j_1: f32) -> f32 {
@@ -3401,15 +3401,15 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let below_1 = (lower <= 1.5707964f);
             let _e248 = psi1_1;
             let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
-            let cs_2 = _e254.y;
+            let cs_3 = _e254.y;
             let sn = select(_e254.x, -(_e254.x), below_1);
             let near_pole = (1f + _e254.x);
-            let far_pole = ((cs_2 * cs_2) / near_pole);
+            let far_pole = ((cs_3 * cs_3) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_10 = select((near_pole / cs_2), (cs_2 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_10 - _e26)), 0f))), (cs_2 > 0f));
-            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_2)));
+            let y_11 = select((near_pole / cs_3), (cs_3 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_11 - _e26)), 0f))), (cs_3 > 0f));
+            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
             let gw = (weight_3 * f_2);
@@ -4843,9 +4843,9 @@ fn airlight_two_sum(a_13: f32, b_10: f32, key_1: u32) -> vec2<f32> {
     let _e4 = airlight_opaque((a_13 + b_10), key_1);
     let _e6 = airlight_opaque((_e4 - a_13), key_1);
     let _e8 = airlight_opaque((_e4 - _e6), key_1);
-    let e_10 = ((a_13 - _e8) + (b_10 - _e6));
-    let _e12 = airlight_is_finite(e_10);
-    return vec2<f32>(_e4, select(0f, e_10, _e12));
+    let e_11 = ((a_13 - _e8) + (b_10 - _e6));
+    let _e12 = airlight_is_finite(e_11);
+    return vec2<f32>(_e4, select(0f, e_11, _e12));
 }
 
 fn airlight_split_high(x_15: f32) -> f32 {
@@ -4858,9 +4858,9 @@ fn airlight_two_product(a_14: f32, b_11: f32, key_2: u32) -> vec2<f32> {
     let al = (a_14 - _e5);
     let _e7 = airlight_split_high(b_11);
     let bl = (b_11 - _e7);
-    let e_11 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
-    let _e17 = airlight_is_finite(e_11);
-    return vec2<f32>(_e4, select(0f, e_11, _e17));
+    let e_12 = (((((_e5 * _e7) - _e4) + (_e5 * bl)) + (al * _e7)) + (al * bl));
+    let _e17 = airlight_is_finite(e_12);
+    return vec2<f32>(_e4, select(0f, e_12, _e17));
 }
 
 fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u32) -> f32 {
@@ -4949,10 +4949,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_6);
-    let n_4 = -(cross(_e113, _e114));
+    let n_5 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_16;
-    out_2.d_c = dot(n_4, _e119);
+    out_2.d_c = dot(n_5, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -5582,20 +5582,20 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e112 = u_1;
         let x_36 = dot(_e111, _e112);
         let _e114 = u_1;
-        let y_11 = dot(_e111, cross(l_3, _e114));
+        let y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_36 * x_36) + (y_11 * y_11)));
+        g_22.sin_r = sqrt(((x_36 * x_36) + (y_12 * y_12)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_36, abs(y_11));
-            let phi_r = (select(1f, -1f, (y_11 < 0f)) * _e140);
+            let _e140 = airlight_angle(x_36, abs(y_12));
+            let phi_r = (select(1f, -1f, (y_12 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_36 / _e145), (-(y_11) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_36 / _e145), (-(y_12) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5737,33 +5737,33 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             }
             {
                 let _e339 = i_22;
-                let e_12 = g_22.gamma[_e339];
-                if !((e_12 == kinks[0])) {
-                    local_137 = (e_12 == kinks[1]);
+                let e_13 = g_22.gamma[_e339];
+                if !((e_13 == kinks[0])) {
+                    local_137 = (e_13 == kinks[1]);
                 } else {
                     local_137 = true;
                 }
                 let _e350 = local_137;
                 if !(_e350) {
-                    local_138 = (e_12 == kinks[2]);
+                    local_138 = (e_13 == kinks[2]);
                 } else {
                     local_138 = true;
                 }
                 let _e357 = local_138;
                 if !(_e357) {
-                    local_139 = (e_12 == kinks[3]);
+                    local_139 = (e_13 == kinks[3]);
                 } else {
                     local_139 = true;
                 }
                 let _e364 = local_139;
                 if !(_e364) {
-                    local_140 = (e_12 == kinks[4]);
+                    local_140 = (e_13 == kinks[4]);
                 } else {
                     local_140 = true;
                 }
                 let _e371 = local_140;
                 if !(_e371) {
-                    local_141 = (e_12 == kinks[5]);
+                    local_141 = (e_13 == kinks[5]);
                 } else {
                     local_141 = true;
                 }
@@ -6005,11 +6005,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         let _e37 = g_24;
         return _e37;
     }
-    let e_13 = (ab_1 / vec3(_e15));
+    let e_14 = (ab_1 / vec3(_e15));
     let _e41 = airlight_normalize(s_26.dir);
     let w0_ = (s_26.light_position - s_26.origin);
-    let cos_a_2 = dot(e_13, _e41);
-    let along_e = dot(e_13, w0_);
+    let cos_a_2 = dot(e_14, _e41);
+    let along_e = dot(e_14, w0_);
     let along_d = dot(_e41, w0_);
     let sin2_ = (1f - (cos_a_2 * cos_a_2));
     let infinite_5 = ((s_26.flags & 1u) != 0u);
@@ -6020,7 +6020,7 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     }
     let _e67 = t_star;
     let _e70 = s_star;
-    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_13 * _e70)));
+    let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_14 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
         local_147 = (sin_a_1 > 0f);
@@ -6114,7 +6114,7 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     if !(_e165) {
         scale = 0f;
     }
-    g_24.e = e_13;
+    g_24.e = e_14;
     let _e170 = s_star;
     g_24.s_star = _e170;
     let _e172 = scale;
@@ -6228,14 +6228,14 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_37 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_8 = (x_21 - f32(i_37));
-        let a_42 = g_25.gamma[i_37];
-        let b_20 = g_25.gamma[(i_37 + 1u)];
+        let i_39 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_8 = (x_21 - f32(i_39));
+        let a_42 = g_25.gamma[i_39];
+        let b_20 = g_25.gamma[(i_39 + 1u)];
         let w_8 = (b_20 - a_42);
         let u_8 = (1f - t_8);
-        let smooth_a = (((g_25.smooth_edges >> i_37) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_37 + 1u)) & 1u) != 0u);
+        let smooth_a = (((g_25.smooth_edges >> i_39) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u);
         gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3f - t_8) - t_8)));
         jacobian = (((w_8 * 6f) * t_8) * u_8);
         let _e58 = gamma_1;
@@ -6303,10 +6303,10 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_27.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_5 = s_27.brdf_exponent;
+            let n_6 = s_27.brdf_exponent;
             let _e161 = gamma_1;
-            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_5);
-            weight = (((s_27.brdf_scale * (n_5 + 2f)) * 0.15915494f) * _e162);
+            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
+            weight = (((s_27.brdf_scale * (n_6 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
@@ -6649,13 +6649,13 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         let b_21 = dot(oc, _e45);
         let _e72 = a_18.radius;
         let _e74 = a_18.radius;
-        let k_10 = (dot(oc, oc) - (_e72 * _e74));
-        let disc_2 = ((b_21 * b_21) - k_10);
+        let k_12 = (dot(oc, oc) - (_e72 * _e74));
+        let disc_2 = ((b_21 * b_21) - k_12);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
             let q_12 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
             cut0_ = q_12;
-            cut1_ = (k_10 / q_12);
+            cut1_ = (k_12 / q_12);
             cut_count = 2u;
         }
     } else {
@@ -6900,17 +6900,17 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
             let _e40 = i_28;
             let a_44 = o.corners[_e40];
             let _e43 = i_28;
-            let e_14 = (o.corners[((_e43 + 1u) % 4u)] - a_44);
+            let e_15 = (o.corners[((_e43 + 1u) % 4u)] - a_44);
             let _e50 = inside;
             if _e50 {
-                local_177 = ((((q_4.x - a_44.x) * e_14.y) - ((q_4.y - a_44.y) * e_14.x)) <= 0f);
+                local_177 = ((((q_4.x - a_44.x) * e_15.y) - ((q_4.y - a_44.y) * e_15.x)) <= 0f);
             } else {
                 local_177 = false;
             }
             let _e67 = local_177;
             inside = _e67;
-            let t_10 = clamp(((((q_4.x - a_44.x) * e_14.x) + ((q_4.y - a_44.y) * e_14.y)) / ((e_14.x * e_14.x) + (e_14.y * e_14.y))), 0f, 1f);
-            let p_5 = (a_44 + (t_10 * e_14));
+            let t_10 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
+            let p_5 = (a_44 + (t_10 * e_15));
             let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
@@ -6968,22 +6968,22 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
                 let _e49 = airlight_outline_nearest(o_2, q_13);
                 let to_near = vec3<f32>(_e49, -(z_11));
                 let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
-                let on_emitter = all((_e49 == q_13));
+                let on_emitter = (length((_e49 - q_13)) <= (0.0000019073486f * ((length(q_13) + size_1) + z_11)));
                 if !(on_emitter) {
-                    let _e63 = airlight_acos(cos_1);
-                    local_180 = (_e63 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    let _e69 = airlight_acos(cos_1);
+                    local_180 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
                     local_180 = true;
                 }
-                let _e69 = local_180;
-                if _e69 {
+                let _e75 = local_180;
+                if _e75 {
                     return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                 }
             }
         }
         continuing {
-            let _e74 = j_5;
-            j_5 = (_e74 + 1u);
+            let _e80 = j_5;
+            j_5 = (_e80 + 1u);
         }
     }
     return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f), false);
@@ -7013,15 +7013,15 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
         let a_45 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         let b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_11 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        let disc_3 = ((b_22 * b_22) - (a_45 * k_11));
+        let k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
+        let disc_3 = ((b_22 * b_22) - (a_45 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
         let t_11 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
         let r1_2 = (t_11 / a_45);
-        let r2_3 = (k_11 / t_11);
+        let r2_3 = (k_13 / t_11);
         let hi_8 = max(r1_2, r2_3);
         if !((hi_8 > 0f)) {
             return vec2(0f);
@@ -7069,72 +7069,72 @@ fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    let k_12 = (w_9.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_12 * lobe_2.p.xy)));
+    let k_14 = (w_9.z / -(lobe_2.p.z));
+    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
-    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_12 * _e23.x)));
-    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_12 * _e23.y)));
+    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
+    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     let graded_8 = _e42.x;
     let c_18 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_12, _e34, graded_8, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
 }
 
 fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 {
-    let y_12 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
-    let _e17 = airlight_atan2_(y_12, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
+    let y_13 = ((e_7.x * v_7.x) + (e_7.y * v_7.y));
+    let _e17 = airlight_atan2_(y_13, ((e_7.x * u_5.x) + (e_7.y * u_5.y)));
     return _e17;
 }
 
@@ -7149,9 +7149,9 @@ fn airlight_cos_sin_turns(x_23: f32) -> vec2<f32> {
 }
 
 fn airlight_edge_rule(a_23: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
-    let e_15 = (b_14 - a_23);
-    let el = sqrt(((e_15.x * e_15.x) + (e_15.y * e_15.y)));
-    let t_12 = (e_15 / vec2(el));
+    let e_16 = (b_14 - a_23);
+    let el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
+    let t_12 = (e_16 / vec2(el));
     let h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
     let reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
     let _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
@@ -7176,16 +7176,91 @@ fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
+fn airlight_entry_normal(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> vec2<f32> {
+    var nearest_1: f32 = AIRLIGHT_FLT_MAX;
+    var normal_3: vec2<f32> = vec2(0f);
+    var i_29: u32 = 0u;
+    var local_181: bool;
+    var local_182: bool;
+    var local_183: bool;
+
+    loop {
+        let _e9 = i_29;
+        if (_e9 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = i_29;
+            let a_47 = y_6[_e12];
+            let _e14 = i_29;
+            let d_5 = (y_6[((_e14 + 1u) % 4u)] - a_47);
+            let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
+            if (den_1 == 0f) {
+                continue;
+            }
+            let r_15 = (((a_47.x * d_5.y) - (a_47.y * d_5.x)) / den_1);
+            let along = (((a_47.x * e_8.y) - (a_47.y * e_8.x)) / den_1);
+            if (r_15 > 0f) {
+                local_181 = (along >= 0f);
+            } else {
+                local_181 = false;
+            }
+            let _e53 = local_181;
+            if _e53 {
+                local_182 = (along <= 1f);
+            } else {
+                local_182 = false;
+            }
+            let _e59 = local_182;
+            if _e59 {
+                let _e62 = nearest_1;
+                local_183 = (r_15 < _e62);
+            } else {
+                local_183 = false;
+            }
+            let _e65 = local_183;
+            if _e65 {
+                nearest_1 = r_15;
+                let n_7 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
+                normal_3 = select(n_7, -(n_7), (dot(n_7, a_47) < 0f));
+            }
+        }
+        continuing {
+            let _e80 = i_29;
+            i_29 = (_e80 + 1u);
+        }
+    }
+    let _e82 = normal_3;
+    return _e82;
+}
+
+fn airlight_mercator_cut(k_8: u32) -> f32 {
+    let cuts_5 = array<f32, 8>(-30f, -14f, -6f, -2f, 2f, 6f, 14f, 30f);
+    return cuts_5[k_8];
+}
+
+fn airlight_mercator(n_3: vec2<f32>, cs_2: vec2<f32>) -> f32 {
+    let _e3 = airlight_mercator_cut(7u);
+    let tangent = (((cs_2.y * n_3.x) - (cs_2.x * n_3.y)) / max(((cs_2.x * n_3.x) + (cs_2.y * n_3.y)), 0.000000000000000000000000000001f));
+    let _e21 = airlight_asinh(tangent);
+    return clamp(_e21, -(_e3), _e3);
+}
+
 fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
-    var i_29: u32 = 0u;
     var i_30: u32 = 0u;
     var i_31: u32 = 0u;
+    var area: vec4<f32> = vec4(0f);
+    var i_32: u32 = 0u;
+    var i_33: u32 = 0u;
     var ya: vec2<f32>;
     var yb: vec2<f32>;
     var j_7: u32;
-    var i_32: u32 = 0u;
+    var i_34: u32 = 0u;
     var j_8: u32;
+    var k_9: u32;
+    var j_9: u32;
 
     let _e5 = airlight_basis_e1_(lobe_3.p);
     let v_9 = cross(lobe_3.p, _e5);
@@ -7193,45 +7268,45 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
     if (o_5.radius > 0f) {
         if lobe_3.on_emitter {
             loop {
-                let _e17 = i_29;
+                let _e17 = i_30;
                 if (_e17 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e21 = i_29;
+                    let _e21 = i_30;
                     let _e22 = airlight_azimuths(true, _e21);
                     let _e23 = sum_9;
                     let _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
                     sum_9 = (_e23 + (_e22.z * _e26));
                 }
                 continuing {
-                    let _e30 = i_29;
-                    i_29 = (_e30 + 1u);
+                    let _e30 = i_30;
+                    i_30 = (_e30 + 1u);
                 }
             }
             let _e32 = sum_9;
             return _e32;
         }
-        let d_5 = (o_5.corners[0] - q_14);
-        let dq_2 = sqrt(((d_5.x * d_5.x) + (d_5.y * d_5.y)));
+        let d_6 = (o_5.corners[0] - q_14);
+        let dq_2 = sqrt(((d_6.x * d_6.x) + (d_6.y * d_6.y)));
         let sb_1 = (o_5.radius / dq_2);
         let cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        let _e53 = airlight_lobe_azimuth(_e5, v_9, d_5);
-        let _e65 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) - (d_5.y * sb_1)), ((d_5.y * cb) + (d_5.x * sb_1))));
+        let _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
+        let _e65 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_6.x * cb) - (d_6.y * sb_1)), ((d_6.y * cb) + (d_6.x * sb_1))));
         let _e67 = airlight_wrap_turn((_e65 - _e53));
-        let _e79 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_5.x * cb) + (d_5.y * sb_1)), ((d_5.y * cb) - (d_5.x * sb_1))));
+        let _e79 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_6.x * cb) + (d_6.y * sb_1)), ((d_6.y * cb) - (d_6.x * sb_1))));
         let _e81 = airlight_wrap_turn((_e79 - _e53));
         let centre_2 = (_e53 + ((_e67 + _e81) * 0.5f));
         let half_19 = (abs((_e67 - _e81)) * 0.5f);
         loop {
-            let _e92 = i_30;
+            let _e92 = i_31;
             if (_e92 < 32u) {
             } else {
                 break;
             }
             {
-                let _e96 = i_30;
+                let _e96 = i_31;
                 let _e97 = airlight_azimuths(false, _e96);
                 let _e98 = sum_9;
                 let _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
@@ -7239,133 +7314,211 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                 sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
             }
             continuing {
-                let _e111 = i_30;
-                i_30 = (_e111 + 1u);
+                let _e111 = i_31;
+                i_31 = (_e111 + 1u);
             }
         }
         let _e113 = sum_9;
         return _e113;
     }
+    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
     if lobe_3.on_emitter {
         loop {
-            let _e117 = i_31;
-            if (_e117 < 4u) {
+            let _e165 = i_32;
+            if (_e165 < 4u) {
             } else {
                 break;
             }
             {
-                let _e121 = i_31;
-                let ea = (o_5.corners[_e121] - q_14);
-                let _e125 = i_31;
-                let eb = (o_5.corners[((_e125 + 1u) % 4u)] - q_14);
-                ya = vec2<f32>(dot(ea, _e5.xy), dot(ea, v_9.xy));
-                yb = vec2<f32>(dot(eb, _e5.xy), dot(eb, v_9.xy));
-                let _e145 = ya.x;
-                let _e147 = yb.y;
-                let _e150 = ya.y;
-                let _e152 = yb.x;
-                let area = ((_e145 * _e147) - (_e150 * _e152));
-                if !((abs(area) > 0f)) {
+                let _e168 = i_32;
+                let b_24 = y_14[((_e168 + 1u) % 4u)];
+                let _e174 = i_32;
+                let _e176 = i_32;
+                let _e181 = i_32;
+                area[_e174] = ((y_14[_e176].x * b_24.y) - (y_14[_e181].y * b_24.x));
+            }
+            continuing {
+                let _e188 = i_32;
+                i_32 = (_e188 + 1u);
+            }
+        }
+        let _e191 = area.x;
+        let _e193 = area.y;
+        let _e196 = area.z;
+        let _e199 = area.w;
+        let turn = (((_e191 + _e193) + _e196) + _e199);
+        loop {
+            let _e203 = i_33;
+            if (_e203 < 4u) {
+            } else {
+                break;
+            }
+            {
+                let _e206 = i_33;
+                let _e208 = area[_e206];
+                if !(((_e208 * turn) > 0f)) {
                     continue;
                 }
-                if (area < 0f) {
-                    let swap = ya;
-                    let _e162 = yb;
-                    ya = _e162;
-                    yb = swap;
+                let _e213 = i_33;
+                ya = y_14[_e213];
+                let _e216 = i_33;
+                yb = y_14[((_e216 + 1u) % 4u)];
+                if (turn < 0f) {
+                    let _e225 = i_33;
+                    ya = y_14[((_e225 + 1u) % 4u)];
+                    let _e231 = i_33;
+                    yb = y_14[_e231];
                 }
-                let _e163 = ya;
-                let _e164 = yb;
-                let _e168 = airlight_edge_rule(_e163, _e164, (lobe_3.l * lobe_3.scale));
+                let _e233 = ya;
+                let _e234 = yb;
+                let _e238 = airlight_edge_rule(_e233, _e234, (lobe_3.l * lobe_3.scale));
                 j_7 = 0u;
                 loop {
-                    let _e171 = j_7;
-                    if (_e171 < 12u) {
+                    let _e241 = j_7;
+                    if (_e241 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e174 = j_7;
-                        let _e175 = airlight_edge_node(_e168, _e174);
-                        let _e176 = sum_9;
-                        let _e179 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e175.xy);
-                        sum_9 = (_e176 + (_e175.w * _e179));
+                        let _e244 = j_7;
+                        let _e245 = airlight_edge_node(_e238, _e244);
+                        let _e246 = sum_9;
+                        let _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
+                        sum_9 = (_e246 + (_e245.w * _e249));
                     }
                     continuing {
-                        let _e183 = j_7;
-                        j_7 = (_e183 + 1u);
+                        let _e253 = j_7;
+                        j_7 = (_e253 + 1u);
                     }
                 }
             }
             continuing {
-                let _e186 = i_31;
-                i_31 = (_e186 + 1u);
+                let _e256 = i_33;
+                i_33 = (_e256 + 1u);
             }
         }
-        let _e188 = sum_9;
-        return _e188;
+        let _e258 = sum_9;
+        return _e258;
     }
-    let _e197 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    let _e201 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    let _e203 = airlight_wrap_turn((_e201 - _e197));
-    let _e207 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    let _e209 = airlight_wrap_turn((_e207 - _e197));
-    let _e213 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    let _e215 = airlight_wrap_turn((_e213 - _e197));
-    let _e219 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    let _e221 = airlight_wrap_turn((_e219 - _e197));
-    let _e223 = airlight_sort4_(vec4<f32>(_e203, _e209, _e215, _e221));
+    let _e267 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    let _e271 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e273 = airlight_wrap_turn((_e271 - _e267));
+    let _e277 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e279 = airlight_wrap_turn((_e277 - _e267));
+    let _e283 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e285 = airlight_wrap_turn((_e283 - _e267));
+    let _e289 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e291 = airlight_wrap_turn((_e289 - _e267));
+    let _e293 = airlight_sort4_(vec4<f32>(_e273, _e279, _e285, _e291));
     loop {
-        let _e226 = i_32;
-        if (_e226 < 3u) {
+        let _e296 = i_34;
+        if (_e296 < 3u) {
         } else {
             break;
         }
         {
-            let _e229 = i_32;
-            let _e231 = i_32;
-            let c_19 = (_e197 + ((_e223[_e229] + _e223[(_e231 + 1u)]) * 0.5f));
-            let _e239 = i_32;
-            let _e243 = i_32;
-            let hw_5 = ((_e223[(_e239 + 1u)] - _e223[_e243]) * 0.5f);
-            j_8 = 0u;
+            let _e299 = i_34;
+            let first_2 = (_e267 + _e293[_e299]);
+            let _e302 = i_34;
+            let last_1 = (_e267 + _e293[(_e302 + 1u)]);
+            let _e310 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
+            let _e311 = airlight_entry_normal(y_14, _e310);
+            if all((_e311 == vec2(0f))) {
+                let c_19 = ((first_2 + last_1) * 0.5f);
+                let hw_5 = ((last_1 - first_2) * 0.5f);
+                j_8 = 0u;
+                loop {
+                    let _e324 = j_8;
+                    if (_e324 < 12u) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e327 = j_8;
+                        let _e328 = airlight_triangle_rule(_e327);
+                        let _e329 = sum_9;
+                        let _e335 = airlight_cos_sin_turns((c_19 + (hw_5 * _e328.x)));
+                        let _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
+                        sum_9 = (_e329 + ((_e328.y * hw_5) * _e336));
+                    }
+                    continuing {
+                        let _e340 = j_8;
+                        j_8 = (_e340 + 1u);
+                    }
+                }
+                continue;
+            }
+            let t_13 = vec2<f32>(-(_e311.y), _e311.x);
+            let _e346 = airlight_cos_sin_turns(first_2);
+            let _e347 = airlight_mercator(_e311, _e346);
+            let _e348 = airlight_cos_sin_turns(last_1);
+            let _e349 = airlight_mercator(_e311, _e348);
+            k_9 = 0u;
             loop {
-                let _e250 = j_8;
-                if (_e250 < 12u) {
+                let _e352 = k_9;
+                if (_e352 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e253 = j_8;
-                    let _e254 = airlight_triangle_rule(_e253);
-                    let _e255 = sum_9;
-                    let _e261 = airlight_cos_sin_turns((c_19 + (hw_5 * _e254.x)));
-                    let _e262 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e261);
-                    sum_9 = (_e255 + ((_e254.y * hw_5) * _e262));
+                    let _e355 = k_9;
+                    let _e356 = airlight_mercator_cut(_e355);
+                    let lo_8 = max(_e347, _e356);
+                    let _e358 = k_9;
+                    let _e361 = airlight_mercator_cut((_e358 + 1u));
+                    let hi_9 = min(_e349, _e361);
+                    if !((lo_8 < hi_9)) {
+                        continue;
+                    }
+                    let c_20 = ((lo_8 + hi_9) * 0.5f);
+                    let hw_6 = ((hi_9 - lo_8) * 0.5f);
+                    j_9 = 0u;
+                    loop {
+                        let _e373 = j_9;
+                        if (_e373 < 12u) {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e376 = j_9;
+                            let _e377 = airlight_triangle_rule(_e376);
+                            let x_37 = (c_20 + (hw_6 * _e377.x));
+                            let e_17 = exp(-(abs(x_37)));
+                            let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
+                            let th = ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17)));
+                            let _e399 = sum_9;
+                            let _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e311 * sech) + (t_13 * th)));
+                            sum_9 = (_e399 + (((_e377.y * hw_6) * sech) * _e406));
+                        }
+                        continuing {
+                            let _e410 = j_9;
+                            j_9 = (_e410 + 1u);
+                        }
+                    }
                 }
                 continuing {
-                    let _e266 = j_8;
-                    j_8 = (_e266 + 1u);
+                    let _e413 = k_9;
+                    k_9 = (_e413 + 1u);
                 }
             }
         }
         continuing {
-            let _e269 = i_32;
-            i_32 = (_e269 + 1u);
+            let _e416 = i_34;
+            i_34 = (_e416 + 1u);
         }
     }
-    let _e271 = sum_9;
-    return _e271;
+    let _e418 = sum_9;
+    return _e418;
 }
 
 fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
-    var local_181: bool;
-    var local_182: bool;
+    var local_184: bool;
+    var local_185: bool;
     var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
-    var i_33: u32 = 0u;
-    var e_8: vec2<f32>;
+    var i_35: u32 = 0u;
+    var e_9: vec2<f32>;
     var r_max_1: f32;
 
     let rel = (x_25 - a_24.c);
@@ -7387,16 +7540,16 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     if (rf <= radius_2) {
         if !((rf == 0f)) {
             let _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_182 = _e44;
+            local_185 = _e44;
         } else {
-            local_182 = true;
+            local_185 = true;
         }
-        let _e46 = local_182;
-        local_181 = _e46;
+        let _e46 = local_185;
+        local_184 = _e46;
     } else {
-        local_181 = false;
+        local_184 = false;
     }
-    let inside_2 = local_181;
+    let inside_2 = local_184;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
@@ -7405,38 +7558,38 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
         let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    let k_13 = ((rf - radius_2) * (rf + radius_2));
+    let k_15 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e73 = i_33;
+        let _e73 = i_35;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e76 = i_33;
+            let _e76 = i_35;
             let _e77 = airlight_azimuths(inside_2, _e76);
             let _e80 = u_6.x;
             let _e84 = u_6.y;
             let _e89 = u_6.y;
             let _e93 = u_6.x;
-            e_8 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
+            e_9 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
-                e_8 = _e77.xy;
-                let b_24 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_24 * b_24) - k_13));
-                r_max_1 = select((root_4 - b_24), (-(k_13) / (b_24 + root_4)), (b_24 > 0f));
+                e_9 = _e77.xy;
+                let b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_25 * b_25) - k_15));
+                r_max_1 = select((root_4 - b_25), (-(k_15) / (b_25 + root_4)), (b_25 > 0f));
             }
             let _e118 = sum_10;
             let _e120 = above_3;
-            let _e121 = e_8;
+            let _e121 = e_9;
             let _e122 = r_max_1;
             let _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e127 = i_33;
-            i_33 = (_e127 + 1u);
+            let _e127 = i_35;
+            i_35 = (_e127 + 1u);
         }
     }
     let _e129 = sum_10;
@@ -7445,10 +7598,10 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
 
 fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
-    var local_183: bool;
+    var local_186: bool;
     var sum_11: f32 = 0f;
-    var i_34: u32 = 0u;
-    var j_9: u32;
+    var i_36: u32 = 0u;
+    var j_10: u32;
 
     let rel_1 = (x_26 - a_25.c);
     let z_21 = dot(rel_1, a_25.n);
@@ -7471,11 +7624,11 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
     q_8 = (_e76.xy + foot);
     if (_e76.z > 0f) {
         let _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_183 = _e89;
+        local_186 = _e89;
     } else {
-        local_183 = false;
+        local_186 = false;
     }
-    let _e91 = local_183;
+    let _e91 = local_186;
     if _e91 {
         q_8 = foot;
     }
@@ -7484,45 +7637,45 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     let _e99 = airlight_narrowed(s_42, _e94.rho0_);
     loop {
-        let _e104 = i_34;
+        let _e104 = i_36;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            let _e107 = i_34;
+            let _e107 = i_36;
             let _e109 = q_8;
             let ca = (corners[_e107] - _e109);
-            let _e111 = i_34;
+            let _e111 = i_36;
             let _e115 = q_8;
             let cb_1 = (corners[(_e111 + 1u)] - _e115);
             if !((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin)) {
                 continue;
             }
             let _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_9 = 0u;
+            j_10 = 0u;
             loop {
-                let _e129 = j_9;
+                let _e129 = j_10;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e132 = j_9;
+                    let _e132 = j_10;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_11;
                     let _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e142 = j_9;
-                    j_9 = (_e142 + 1u);
+                    let _e142 = j_10;
+                    j_10 = (_e142 + 1u);
                 }
             }
         }
         continuing {
-            let _e145 = i_34;
-            i_34 = (_e145 + 1u);
+            let _e145 = i_36;
+            i_36 = (_e145 + 1u);
         }
     }
     let _e147 = sum_11;
@@ -7544,7 +7697,7 @@ fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2
 fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
-    var i_35: u32 = 0u;
+    var i_37: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
@@ -7554,39 +7707,39 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
     let e2d = dot(e2_2, a_26.d);
     let _e15 = airlight_graded_range(s_44, 1.5707964f);
     let graded_9 = _e15.y;
-    let c_20 = (0.5f * _e15.x);
-    let hw_6 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.09501251f * hw_6)), (0.1894506f * hw_6));
+    let c_21 = (0.5f * _e15.x);
+    let hw_7 = (0.5f * _e15.x);
+    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.09501251f * hw_6)), (0.1894506f * hw_6));
+    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.28160354f * hw_6)), (0.18260342f * hw_6));
+    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.28160354f * hw_6)), (0.18260342f * hw_6));
+    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.45801678f * hw_6)), (0.16915652f * hw_6));
+    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.45801678f * hw_6)), (0.16915652f * hw_6));
+    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.61787623f * hw_6)), (0.14959599f * hw_6));
+    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.61787623f * hw_6)), (0.14959599f * hw_6));
+    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.7554044f * hw_6)), (0.12462897f * hw_6));
+    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.7554044f * hw_6)), (0.12462897f * hw_6));
+    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.8656312f * hw_6)), (0.09515851f * hw_6));
+    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.8656312f * hw_6)), (0.09515851f * hw_6));
+    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.944575f * hw_6)), (0.062253524f * hw_6));
+    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.944575f * hw_6)), (0.062253524f * hw_6));
+    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 - (0.9894009f * hw_6)), (0.02715246f * hw_6));
+    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_20 + (0.9894009f * hw_6)), (0.02715246f * hw_6));
+    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
     if a_26.isotropic {
         let _e174 = airlight_area_phase(s_44, 0f);
@@ -7643,13 +7796,13 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
         return _e272;
     }
     loop {
-        let _e275 = i_35;
+        let _e275 = i_37;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e279 = i_35;
+            let _e279 = i_37;
             let _e280 = airlight_azimuths(true, _e279);
             let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
@@ -7754,8 +7907,8 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
             sum_12 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e550 = i_35;
-            i_35 = (_e550 + 1u);
+            let _e550 = i_37;
+            i_37 = (_e550 + 1u);
         }
     }
     let _e552 = sum_12;
@@ -7776,7 +7929,7 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
-    var i_36: u32 = 0u;
+    var i_38: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var start_5: f32;
@@ -7795,13 +7948,13 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_36;
+        let _e47 = i_38;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_36;
+            let _e50 = i_38;
             let _e51 = airlight_azimuths(inside_3, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
@@ -7826,97 +7979,97 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
             let _e96 = start_5;
             let _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
             let graded_10 = _e98.x;
-            let c_21 = (0.5f * _e98.y);
-            let hw_7 = (0.5f * _e98.y);
+            let c_22 = (0.5f * _e98.y);
+            let hw_8 = (0.5f * _e98.y);
             around = 0f;
             let _e108 = around;
             let _e111 = big_b_1;
             let _e112 = start_5;
-            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_21 - (0.09501251f * hw_7)));
-            around = (_e108 + ((0.1894506f * hw_7) * _e116));
+            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_22 - (0.09501251f * hw_8)));
+            around = (_e108 + ((0.1894506f * hw_8) * _e116));
             let _e119 = around;
             let _e122 = big_b_1;
             let _e123 = start_5;
-            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_21 + (0.09501251f * hw_7)));
-            around = (_e119 + ((0.1894506f * hw_7) * _e127));
+            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_22 + (0.09501251f * hw_8)));
+            around = (_e119 + ((0.1894506f * hw_8) * _e127));
             let _e130 = around;
             let _e133 = big_b_1;
             let _e134 = start_5;
-            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_21 - (0.28160354f * hw_7)));
-            around = (_e130 + ((0.18260342f * hw_7) * _e138));
+            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_22 - (0.28160354f * hw_8)));
+            around = (_e130 + ((0.18260342f * hw_8) * _e138));
             let _e141 = around;
             let _e144 = big_b_1;
             let _e145 = start_5;
-            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_21 + (0.28160354f * hw_7)));
-            around = (_e141 + ((0.18260342f * hw_7) * _e149));
+            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_22 + (0.28160354f * hw_8)));
+            around = (_e141 + ((0.18260342f * hw_8) * _e149));
             let _e152 = around;
             let _e155 = big_b_1;
             let _e156 = start_5;
-            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_21 - (0.45801678f * hw_7)));
-            around = (_e152 + ((0.16915652f * hw_7) * _e160));
+            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_22 - (0.45801678f * hw_8)));
+            around = (_e152 + ((0.16915652f * hw_8) * _e160));
             let _e163 = around;
             let _e166 = big_b_1;
             let _e167 = start_5;
-            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_21 + (0.45801678f * hw_7)));
-            around = (_e163 + ((0.16915652f * hw_7) * _e171));
+            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_22 + (0.45801678f * hw_8)));
+            around = (_e163 + ((0.16915652f * hw_8) * _e171));
             let _e174 = around;
             let _e177 = big_b_1;
             let _e178 = start_5;
-            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_21 - (0.61787623f * hw_7)));
-            around = (_e174 + ((0.14959599f * hw_7) * _e182));
+            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_22 - (0.61787623f * hw_8)));
+            around = (_e174 + ((0.14959599f * hw_8) * _e182));
             let _e185 = around;
             let _e188 = big_b_1;
             let _e189 = start_5;
-            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_21 + (0.61787623f * hw_7)));
-            around = (_e185 + ((0.14959599f * hw_7) * _e193));
+            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_22 + (0.61787623f * hw_8)));
+            around = (_e185 + ((0.14959599f * hw_8) * _e193));
             let _e196 = around;
             let _e199 = big_b_1;
             let _e200 = start_5;
-            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_21 - (0.7554044f * hw_7)));
-            around = (_e196 + ((0.12462897f * hw_7) * _e204));
+            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_22 - (0.7554044f * hw_8)));
+            around = (_e196 + ((0.12462897f * hw_8) * _e204));
             let _e207 = around;
             let _e210 = big_b_1;
             let _e211 = start_5;
-            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_21 + (0.7554044f * hw_7)));
-            around = (_e207 + ((0.12462897f * hw_7) * _e215));
+            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_22 + (0.7554044f * hw_8)));
+            around = (_e207 + ((0.12462897f * hw_8) * _e215));
             let _e218 = around;
             let _e221 = big_b_1;
             let _e222 = start_5;
-            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_21 - (0.8656312f * hw_7)));
-            around = (_e218 + ((0.09515851f * hw_7) * _e226));
+            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_22 - (0.8656312f * hw_8)));
+            around = (_e218 + ((0.09515851f * hw_8) * _e226));
             let _e229 = around;
             let _e232 = big_b_1;
             let _e233 = start_5;
-            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_21 + (0.8656312f * hw_7)));
-            around = (_e229 + ((0.09515851f * hw_7) * _e237));
+            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_22 + (0.8656312f * hw_8)));
+            around = (_e229 + ((0.09515851f * hw_8) * _e237));
             let _e240 = around;
             let _e243 = big_b_1;
             let _e244 = start_5;
-            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_21 - (0.944575f * hw_7)));
-            around = (_e240 + ((0.062253524f * hw_7) * _e248));
+            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_22 - (0.944575f * hw_8)));
+            around = (_e240 + ((0.062253524f * hw_8) * _e248));
             let _e251 = around;
             let _e254 = big_b_1;
             let _e255 = start_5;
-            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_21 + (0.944575f * hw_7)));
-            around = (_e251 + ((0.062253524f * hw_7) * _e259));
+            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_22 + (0.944575f * hw_8)));
+            around = (_e251 + ((0.062253524f * hw_8) * _e259));
             let _e262 = around;
             let _e265 = big_b_1;
             let _e266 = start_5;
-            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_21 - (0.9894009f * hw_7)));
-            around = (_e262 + ((0.02715246f * hw_7) * _e270));
+            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_22 - (0.9894009f * hw_8)));
+            around = (_e262 + ((0.02715246f * hw_8) * _e270));
             let _e273 = around;
             let _e276 = big_b_1;
             let _e277 = start_5;
-            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_21 + (0.9894009f * hw_7)));
-            around = (_e273 + ((0.02715246f * hw_7) * _e281));
+            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_22 + (0.9894009f * hw_8)));
+            around = (_e273 + ((0.02715246f * hw_8) * _e281));
             let _e284 = sum_13;
             let _e285 = wpsi;
             let _e286 = around;
             sum_13 = (_e284 + (_e285 * _e286));
         }
         continuing {
-            let _e290 = i_36;
-            i_36 = (_e290 + 1u);
+            let _e290 = i_38;
+            i_38 = (_e290 + 1u);
         }
     }
     let _e292 = sum_13;
@@ -7927,12 +8080,12 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_10: u32 = 0u;
-    var local_184: bool;
-    var local_185: bool;
-    var local_186: bool;
+    var j_11: u32 = 0u;
     var local_187: bool;
     var local_188: bool;
+    var local_189: bool;
+    var local_190: bool;
+    var local_191: bool;
 
     let v_11 = (a_28.c - x_27);
     let _e5 = airlight_safe_length(v_11);
@@ -7943,56 +8096,56 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
     let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_10;
+        let _e32 = j_11;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_10;
+            let _e39 = j_11;
             let lobe_5 = select(a_28.lobes.xy, a_28.lobes.zw, (_e39 == 1u));
-            let c_22 = dot(cap_4.a, (lobe_5.x * a_28.d));
+            let c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_184 = (lobe_5.y > 0f);
+                local_187 = (lobe_5.y > 0f);
             } else {
-                local_184 = false;
+                local_187 = false;
             }
-            let _e57 = local_184;
+            let _e57 = local_187;
             if _e57 {
-                local_185 = (lobe_5.y < (_e23 + _e23));
+                local_188 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_185 = false;
+                local_188 = false;
             }
-            let _e64 = local_185;
+            let _e64 = local_188;
             if _e64 {
-                if !((c_22 > cap_4.cos_a)) {
-                    if (c_22 > -(cap_4.cos_a)) {
-                        let _e77 = airlight_acos(c_22);
-                        local_188 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                if !((c_23 > cap_4.cos_a)) {
+                    if (c_23 > -(cap_4.cos_a)) {
+                        let _e77 = airlight_acos(c_23);
+                        local_191 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_188 = false;
+                        local_191 = false;
                     }
-                    let _e84 = local_188;
-                    local_187 = _e84;
+                    let _e84 = local_191;
+                    local_190 = _e84;
                 } else {
-                    local_187 = true;
+                    local_190 = true;
                 }
-                let _e86 = local_187;
-                local_186 = _e86;
+                let _e86 = local_190;
+                local_189 = _e86;
             } else {
-                local_186 = false;
+                local_189 = false;
             }
-            let _e88 = local_186;
+            let _e88 = local_189;
             if _e88 {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_22;
+                cos_p_2 = c_23;
             }
         }
         continuing {
-            let _e92 = j_10;
-            j_10 = (_e92 + 1u);
+            let _e92 = j_11;
+            j_11 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -8026,20 +8179,20 @@ fn airlight_emitter_radiance(s_48: AirlightScene, a_29: AirlightArea, x_28: vec3
 
 fn airlight_area_node(s_49: AirlightScene, a_30: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along = ((a_30.h_eff * _e3.y) / _e3.x);
-    let t_13 = (a_30.x_h + along);
-    let fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_13 * a_30.d)));
+    let along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
+    let t_14 = (a_30.x_h + along_1);
+    let fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
-    var k_8: f32;
+    var k_10: f32;
     var gauss_1: f32;
-    var j_11: u32;
-    var local_189: bool;
+    var j_12: u32;
+    var local_192: bool;
 
     let _e1 = airlight_area(s_50);
     if (_e1.outcome == 1u) {
@@ -8059,46 +8212,46 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_23 = (0.5f * (_e27 + _e29));
+            let c_24 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_8 = (0.5f * (_e34 - _e36));
-            k_8 = 0f;
+            let hw_9 = (0.5f * (_e34 - _e36));
+            k_10 = 0f;
             gauss_1 = 0f;
-            j_11 = 0u;
+            j_12 = 0u;
             loop {
-                let _e46 = j_11;
+                let _e46 = j_12;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_11;
+                    let _e49 = j_12;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_11;
+                    let _e59 = j_12;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_11;
-                        local_189 = (_e66 < 14u);
+                        let _e66 = j_12;
+                        local_192 = (_e66 < 14u);
                     } else {
-                        local_189 = false;
+                        local_192 = false;
                     }
-                    let _e70 = local_189;
-                    let x_37 = select((c_23 + (hw_8 * node_4.x)), (c_23 - (hw_8 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_50, _e1, x_37);
-                    let _e73 = k_8;
-                    k_8 = (_e73 + (node_4.y * _e72));
+                    let _e70 = local_192;
+                    let x_38 = select((c_24 + (hw_9 * node_4.x)), (c_24 - (hw_9 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_50, _e1, x_38);
+                    let _e73 = k_10;
+                    k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_11;
-                    j_11 = (_e82 + 1u);
+                    let _e82 = j_12;
+                    j_12 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
-            let _e85 = k_8;
+            let _e85 = k_10;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_8), (_e87 * hw_8), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -8122,22 +8275,22 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
-    var local_190: bool;
-    var local_191: bool;
+    var local_193: bool;
+    var local_194: bool;
 
     let _e1 = airlight_valid(s_51);
     if !(!(_e1)) {
-        local_190 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_193 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_190 = true;
+        local_193 = true;
     }
-    let _e10 = local_190;
+    let _e10 = local_193;
     if !(_e10) {
-        local_191 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_194 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_191 = true;
+        local_194 = true;
     }
-    let _e18 = local_191;
+    let _e18 = local_194;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8146,38 +8299,38 @@ fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_192: bool;
+    var local_195: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_192 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_195 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_192 = true;
+        local_195 = true;
     }
-    let _e11 = local_192;
+    let _e11 = local_195;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return r_5;
 }
 
-fn airlight_node_integral(n_3: AirlightNode) -> AirlightResult {
+fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_193: bool;
+    var local_196: bool;
     var g_29: AirlightCanonical;
 
-    let p_8 = n_3.scene;
+    let p_8 = n_4.scene;
     let _e7 = airlight_vec_finite(p_8.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_8.dir);
-        local_193 = _e11;
+        local_196 = _e11;
     } else {
-        local_193 = false;
+        local_196 = false;
     }
-    let _e13 = local_193;
+    let _e13 = local_196;
     if _e13 {
-        g_29 = n_3.canonical;
-        if !(n_3.exact) {
+        g_29 = n_4.canonical;
+        if !(n_4.exact) {
             let _e18 = airlight_canonical(p_8);
             let _e19 = airlight_refined(p_8, _e18);
             g_29 = _e19;
@@ -8198,22 +8351,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
-    var local_194: bool;
-    var local_195: bool;
+    var local_197: bool;
+    var local_198: bool;
 
     let _e1 = airlight_valid(s_52);
     if !(!(_e1)) {
-        local_194 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_197 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_194 = true;
+        local_197 = true;
     }
-    let _e10 = local_194;
+    let _e10 = local_197;
     if !(_e10) {
-        local_195 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_198 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_195 = true;
+        local_198 = true;
     }
-    let _e18 = local_195;
+    let _e18 = local_198;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8222,22 +8375,22 @@ fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
-    var local_196: bool;
-    var local_197: bool;
+    var local_199: bool;
+    var local_200: bool;
 
     let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_196 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_199 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_196 = true;
+        local_199 = true;
     }
-    let _e10 = local_196;
+    let _e10 = local_199;
     if !(_e10) {
-        local_197 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_200 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_197 = true;
+        local_200 = true;
     }
-    let _e18 = local_197;
+    let _e18 = local_200;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8262,12 +8415,12 @@ fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
 fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
-    var k_9: f32;
+    var k_11: f32;
     var gauss_2: f32;
-    var j_12: u32;
-    var local_198: bool;
+    var j_13: u32;
+    var local_201: bool;
     var f: f32;
-    var local_199: bool;
+    var local_202: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(_e1) {
@@ -8296,31 +8449,31 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_24 = (0.5f * (_e42 + _e44));
+            let c_25 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_9 = (0.5f * (_e49 - _e51));
-            k_9 = 0f;
+            let hw_10 = (0.5f * (_e49 - _e51));
+            k_11 = 0f;
             gauss_2 = 0f;
-            j_12 = 0u;
+            j_13 = 0u;
             loop {
-                let _e61 = j_12;
+                let _e61 = j_13;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_12;
+                    let _e64 = j_13;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_12;
+                    let _e74 = j_13;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_12;
-                        local_198 = (_e81 < 6u);
+                        let _e81 = j_13;
+                        local_201 = (_e81 < 6u);
                     } else {
-                        local_198 = false;
+                        local_201 = false;
                     }
-                    let _e85 = local_198;
-                    let w_11 = select((c_24 + (hw_9 * node_5.x)), (c_24 - (hw_9 * node_5.x)), _e85);
+                    let _e85 = local_201;
+                    let w_11 = select((c_25 + (hw_10 * node_5.x)), (c_25 - (hw_10 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_54, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8329,32 +8482,32 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_199 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_202 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_199 = false;
+                            local_202 = false;
                         }
-                        let _e106 = local_199;
+                        let _e106 = local_202;
                         if _e106 {
                             return _e93;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e110 = k_9;
+                    let _e110 = k_11;
                     let _e112 = f;
-                    k_9 = (_e110 + (node_5.y * _e112));
+                    k_11 = (_e110 + (node_5.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_12;
-                    j_12 = (_e121 + 1u);
+                    let _e121 = j_13;
+                    j_13 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;
-            let _e124 = k_9;
+            let _e124 = k_11;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_9), (_e126 * hw_9), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

@@ -1,6 +1,6 @@
 //! The bounded area-light method (`AreaScene::in_scatter_bounded`, docs/DESIGN.md §12) on rays
 //! that cross a rectangle's plane just inside or outside its corners and the middles of its
-//! edges, in Henyey–Greenstein fog of `g` = 0.95 and 0.99: there the phase lobe's point `q_L`
+//! edges (and a disc's plane by its rim), in Henyey–Greenstein fog of `g` = 0.95 and 0.99: there the phase lobe's point `q_L`
 //! (where the ray's line meets the plane) lies next to the edge, and the emitter is taken about
 //! it (`flat_about_lobe`; docs/DESIGN.md §12 gives what this prints and what is not yet met).
 //! Relative error against the nested construction at 1e-10
@@ -35,6 +35,23 @@ fn main() {
                     worst = [worst[0].max(errors[0]), worst[1].max(errors[1])];
                     println!("| {g} | ({u}, {v}) | {offset} | {label} | {:.1e} | {:.1e} |", errors[0], errors[1]);
                 }
+            }
+        }
+    }
+    // a disc of the rectangle's plane and size, crossed next to its rim across it (radially) and
+    // along it (its tangent)
+    let (center, normal, radius) = (corner + 0.5 * (eu + ev), eu.cross(ev).normalize(), 0.6);
+    let disc = Emitter::Disc { center, normal, radius };
+    let (radial, tangent) = (eu.normalize(), normal.cross(eu.normalize()));
+    for g in [0.95, 0.99] {
+        for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
+            for (label, dir) in [("across the rim", center + radial * (radius - offset)), ("along the rim", center + radial * (radius - offset) + tangent * 0.05)] {
+                let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
+                let scene = AreaScene::new(ray, AreaLight::new(disc, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+                let exact = scene.in_scatter_counted(1e-10).0;
+                let errors = [scene.in_scatter_bounded(), scene.in_scatter_bounded_counted(1e-7, 1000).0].map(|x| (x - exact).abs() / exact);
+                worst = [worst[0].max(errors[0]), worst[1].max(errors[1])];
+                println!("| {g} | disc's rim | {offset} | {label} | {:.1e} | {:.1e} |", errors[0], errors[1]);
             }
         }
     }

@@ -479,10 +479,17 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
             }
         }
     }
-    // the rectangle in g = 0.99 fog on rays crossing its plane just inside an edge's middle and a
-    // corner (tests/area.rs bounded_rectangle_with_the_lobe_next_to_an_edge)
+    // the rectangle in g = 0.99 fog on rays crossing its plane just inside and outside an edge's
+    // middle, inside a corner and on an edge by a corner (tests/area.rs
+    // bounded_rectangle_with_the_lobe_next_to_an_edge)
     let rectangle = AreaLight::new(Emitter::Rectangle { corner, edge_u, edge_v }, 2.0);
-    for (label, inside, inward) in [("inside an edge", corner + 0.5 * edge_u, edge_v), ("inside a corner", corner, edge_u + edge_v)] {
+    let crossings = [
+        ("inside an edge", corner + 0.5 * edge_u, edge_v),
+        ("outside an edge", corner + 0.5 * edge_u, -edge_v),
+        ("inside a corner", corner, edge_u + edge_v),
+        ("on an edge from a corner", corner, edge_u),
+    ];
+    for (label, inside, inward) in crossings {
         for offset in [0.0005f32, 0.002] {
             let dir = inside + inward.normalize() * offset;
             let medium = Medium { sigma_s: 0.05f32, sigma_t: 0.08 };

@@ -3104,7 +3104,8 @@ fn airlight_flat_lobe(a: AirlightArea, z: f32, o: AirlightOutline, centre: vec2<
             let near = airlight_outline_nearest(o, q);
             let to_near = vec3<f32>(near, -z);
             let cos = min(dot(p, to_near) / sqrt(dot(to_near, to_near)), 1.0);
-            let on_emitter = all(near == q);
+            // on it, or outside by no more than the rounding of q_L and the corners about the foot
+            let on_emitter = length(near - q) <= 16.0 * AIRLIGHT_FLT_EPS * (length(q) + size + z);
             if (on_emitter || airlight_acos(cos) < AIRLIGHT_LOBE_REACH * lobe.y) {
                 return AirlightFlatLobe(p, lobe.x, lobe.y, l, q, on_emitter);
             }
@@ -3212,21 +3213,29 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         }
         return sum;
     }
+    // the corners about q_L in the lobe's plane, e ↦ (e·u, e·v): its angle is ψ
+    let y = array<vec2<f32>, 4>(
+        vec2<f32>(dot(o.corners[0] - q, u.xy), dot(o.corners[0] - q, v.xy)),
+        vec2<f32>(dot(o.corners[1] - q, u.xy), dot(o.corners[1] - q, v.xy)),
+        vec2<f32>(dot(o.corners[2] - q, u.xy), dot(o.corners[2] - q, v.xy)),
+        vec2<f32>(dot(o.corners[3] - q, u.xy), dot(o.corners[3] - q, v.xy)));
     if (lobe.on_emitter) {
-        // the chords of the wedge between two corners end on the edge between them, in the lobe's
-        // plane (e ↦ (e·u, e·v): its angle is ψ) the segment between the corners' images; the
-        // image keeps or reverses the corners' turn; q_L on an edge: no chords
+        // the chords of the wedge between two corners end on the edge between them; the image
+        // keeps or reverses the corners' turn; an edge q_L is on (or outside by rounding) has no
+        // chords of its own
+        var area = vec4<f32>(0.0);
         for (var i = 0u; i < 4u; i++) {
-            let ea = o.corners[i] - q;
-            let eb = o.corners[(i + 1u) % 4u] - q;
-            var ya = vec2<f32>(dot(ea, u.xy), dot(ea, v.xy));
-            var yb = vec2<f32>(dot(eb, u.xy), dot(eb, v.xy));
-            let area = ya.x * yb.y - ya.y * yb.x;
-            if (!(abs(area) > 0.0)) { continue; }
-            if (area < 0.0) {
-                let swap = ya;
-                ya = yb;
-                yb = swap;
+            let b = y[(i + 1u) % 4u];
+            area[i] = y[i].x * b.y - y[i].y * b.x;
+        }
+        let turn = area.x + area.y + area.z + area.w;
+        for (var i = 0u; i < 4u; i++) {
+            if (!(area[i] * turn > 0.0)) { continue; }
+            var ya = y[i];
+            var yb = y[(i + 1u) % 4u];
+            if (turn < 0.0) {
+                ya = y[(i + 1u) % 4u];
+                yb = y[i];
             }
             let rule = airlight_edge_rule(ya, yb, lobe.l * lobe.scale);
             for (var j = 0u; j < 12u; j++) {
@@ -3236,7 +3245,8 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         }
         return sum;
     }
-    // the wedges between the corners' azimuths about the centre's, in order
+    // the wedges between the corners' azimuths about the centre's, in order, each in the
+    // Mercator angle of the edge its chords enter by
     let mid = airlight_lobe_azimuth(u, v, 0.5 * (o.corners[0] + o.corners[2]) - q);
     let psi = airlight_sort4(vec4<f32>(
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[0] - q) - mid),
@@ -3244,14 +3254,74 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[2] - q) - mid),
         airlight_wrap_turn(airlight_lobe_azimuth(u, v, o.corners[3] - q) - mid)));
     for (var i = 0u; i < 3u; i++) {
-        let c = mid + (psi[i] + psi[i + 1u]) * 0.5;
-        let hw = (psi[i + 1u] - psi[i]) * 0.5;
-        for (var j = 0u; j < 12u; j++) {
-            let node = airlight_triangle_rule(j);
-            sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
+        let first = mid + psi[i];
+        let last = mid + psi[i + 1u];
+        let n = airlight_entry_normal(y, airlight_cos_sin_turns(0.5 * (first + last)));
+        if (all(n == vec2<f32>(0.0))) {
+            let c = (first + last) * 0.5;
+            let hw = (last - first) * 0.5;
+            for (var j = 0u; j < 12u; j++) {
+                let node = airlight_triangle_rule(j);
+                sum += node.y * hw * airlight_flat_lobe_along(s, z, o, lobe, u, v, airlight_cos_sin_turns(c + hw * node.x));
+            }
+            continue;
+        }
+        let t = vec2<f32>(-n.y, n.x);
+        let ua = airlight_mercator(n, airlight_cos_sin_turns(first));
+        let ub = airlight_mercator(n, airlight_cos_sin_turns(last));
+        for (var k = 0u; k < 7u; k++) {
+            let lo = max(ua, airlight_mercator_cut(k));
+            let hi = min(ub, airlight_mercator_cut(k + 1u));
+            if (!(lo < hi)) { continue; }
+            let c = (lo + hi) * 0.5;
+            let hw = (hi - lo) * 0.5;
+            for (var j = 0u; j < 12u; j++) {
+                let node = airlight_triangle_rule(j);
+                let x = c + hw * node.x;
+                // sech x and tanh x from e^{−|x|}
+                let e = exp(-abs(x));
+                let sech = 2.0 * e / (1.0 + e * e);
+                let th = sign(x) * (1.0 - e * e) / (1.0 + e * e);
+                sum += node.y * hw * sech * airlight_flat_lobe_along(s, z, o, lobe, u, v, n * sech + t * th);
+            }
         }
     }
     return sum;
+}
+
+/// outer.rs `MERCATOR_CUTS[k]`.
+fn airlight_mercator_cut(k: u32) -> f32 {
+    let cuts = array<f32, 8>(@MERCATOR_CUTS@);
+    return cuts[k];
+}
+
+/// The Mercator angle asinh(tan δ) of the direction `cs` = (cos ψ, sin ψ) about the unit normal
+/// `n` of a line (outer.rs `mercator_rule`), clamped to the outermost cut.
+fn airlight_mercator(n: vec2<f32>, cs: vec2<f32>) -> f32 {
+    let cap = airlight_mercator_cut(7u);
+    let tangent = (cs.y * n.x - cs.x * n.y) / max(cs.x * n.x + cs.y * n.y, 1e-30);
+    return clamp(airlight_asinh(tangent), -cap, cap);
+}
+
+/// The unit normal, from the origin, of the edge by which the half-line r e (r > 0) enters the
+/// convex polygon `y`; (0, 0) if it misses it (outer.rs `entry_normal`).
+fn airlight_entry_normal(y: array<vec2<f32>, 4>, e: vec2<f32>) -> vec2<f32> {
+    var nearest = AIRLIGHT_FLT_MAX;
+    var normal = vec2<f32>(0.0);
+    for (var i = 0u; i < 4u; i++) {
+        let a = y[i];
+        let d = y[(i + 1u) % 4u] - a;
+        let den = e.x * d.y - e.y * d.x;
+        if (den == 0.0) { continue; }
+        let r = (a.x * d.y - a.y * d.x) / den;
+        let along = (a.x * e.y - a.y * e.x) / den;
+        if (r > 0.0 && along >= 0.0 && along <= 1.0 && r < nearest) {
+            nearest = r;
+            let n = vec2<f32>(d.y, -d.x) / sqrt(dot(d, d));
+            normal = select(n, -n, dot(n, a) < 0.0);
+        }
+    }
+    return normal;
 }
 
 /// The cap a sphere subtends from x (outer.rs `Cap`): its centre's unit direction `a` at

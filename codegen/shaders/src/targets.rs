@@ -311,6 +311,7 @@ impl Constants {
             ("@AZIMUTHS_CIRCLE@", azimuths(std::f64::consts::PI, std::f64::consts::PI)),
             ("@AZIMUTHS_HALF@", azimuths(0.0, std::f64::consts::FRAC_PI_2)),
             ("@TRIANGLE_RULE@", triangle),
+            ("@MERCATOR_CUTS@", list(airlight::area::outer::MERCATOR_CUTS.iter().map(|&c| f(c)).collect())),
             ("@RADIAL_NODES@", (2 * radial.len()).to_string()),
             ("@ZEROS_RADIAL_ROWS@", list(vec!["vec3<f32>(0.0)".to_string(); 2 * radial.len()])),
             ("@RADIAL_FLAT@", unrolled::gauss_lines(radial, "    sum += @W@ * hw * airlight_flat_node(s, a, above, e, graded, @NODE@);\n")),

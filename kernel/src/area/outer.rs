@@ -27,6 +27,8 @@
 //!   the emitter points at it (its direction `±d` meets the plane on the emitter or within
 //!   [`LOBE_REACH`] of its widths), polar about that direction instead (`flat_about_lobe`):
 //!   about the foot, a Henyey–Greenstein `g = 0.99` lobe on a disc or rectangle left 1e-2 to 1e-1.
+//!   A parallelogram's wedges of chords there in the angle `β` of the edge they end on, or, where
+//!   the lobe's point is off the emitter, in the Mercator angle of the edge they start on.
 //! * A sphere: the cap it subtends, `sin α = R/|c − x|`, about the direction of its centre, in
 //!   `φ` with `sin β = sin α sin φ` (then the distance to the surface, `|c − x| cos β − R cos φ`,
 //!   has no square root left at the cap's rim, and the emitted cosine is `cos φ`):
@@ -135,6 +137,58 @@ fn edge_rule<T: Real>(a: (T, T), b: (T, T), width: T, mut f: impl FnMut((T, T), 
         let r = r2.sqrt();
         f(((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r), r, w * h * reach / (cos * cos * r2));
     });
+}
+
+/// Where a flat emitter's wedge of chords from a phase lobe's point `q_L` off the emitter is
+/// split into panels of [`TRIANGLE_AZIMUTHAL`] in the Mercator angle `u = asinh(tan δ)` of the
+/// edge the chords enter by (`δ` the angle from that edge's normal through `q_L`; `dψ = sech u du`,
+/// docs/DESIGN.md §12), and (the outermost) where it ends. The weight `sech u` falls as `2e^{−|u|}`,
+/// so the panels widen as it falls (the lobe's edge, a step about one wide in `u`, a pole `π/2`
+/// off the real axis, costs least where the weight is small): in the model of
+/// `python3 scripts/mercator_panels.py`, that step anywhere in wedges up to 30 long, within
+/// 6.5e-9 (one panel: 7.8e-3); beyond ±30 lies `2e^{−30} ≈ 1.9e-13` of the edge's angle.
+pub const MERCATOR_CUTS: [f64; 8] = [-30.0, -14.0, -6.0, -2.0, 2.0, 6.0, 14.0, 30.0];
+
+/// `f((cos ψ, sin ψ), w)` over the wedge of directions between `ends` (`(sin, cos)` of each)
+/// whose half-lines meet the line `h n + σ t` (`n` its unit normal from the origin, `t = n`
+/// turned by `+π/2`), in the Mercator angle `u = asinh(tan δ)` of the direction's angle
+/// `δ = ψ − ψ_n` from `n` (`σ = h sinh u`, `dψ = sech u du`), panels at [`MERCATOR_CUTS`]. A
+/// phase lobe's chords entering by the line (`flat_about_lobe` off the emitter) start at
+/// `θ ≈ h cosh u / L`: flat in `ψ` but for the last `h/(L s)` before `δ = ±π/2`, where `ψ` puts no
+/// node; in `u` that edge is a step about one wide at `u ≈ ln(2 L s/h)`, for every `h`.
+fn mercator_rule<T: Real>(n: (T, T), ends: [(T, T); 2], mut f: impl FnMut((T, T), T)) {
+    let t = (-n.1, n.0);
+    let cap = T::lit(MERCATOR_CUTS[MERCATOR_CUTS.len() - 1]);
+    // an end parallel to the line (or past it by rounding) at ±∞, clamped
+    let [a, b] = ends.map(|(s, c)| ((s * n.0 - c * n.1) / (c * n.0 + s * n.1).max(T::zero())).asinh().max(-cap).min(cap));
+    for cut in MERCATOR_CUTS.windows(2) {
+        let (lo, hi) = (a.max(T::lit(cut[0])), b.min(T::lit(cut[1])));
+        if lo < hi {
+            each_node(&TRIANGLE_AZIMUTHAL, lo, hi, |x, w| {
+                let (cosh, tanh) = (x.cosh(), x.tanh());
+                f((n.0 / cosh + t.0 * tanh, n.1 / cosh + t.1 * tanh), w / cosh);
+            });
+        }
+    }
+}
+
+/// The unit normal `n`, from the origin, of the edge by which the half-line `r e` (`r > 0`)
+/// enters the convex polygon `corners` (`None` if it misses it).
+fn entry_normal<T: Real>(corners: &[(T, T); 4], e: (T, T)) -> Option<(T, T)> {
+    let cross = |a: (T, T), b: (T, T)| a.0 * b.1 - a.1 * b.0;
+    let mut best: Option<(T, (T, T))> = None;
+    for i in 0..4 {
+        let (a, b) = (corners[i], corners[(i + 1) % 4]);
+        let d = (b.0 - a.0, b.1 - a.1);
+        let den = cross(e, d);
+        let (r, along) = (cross(a, d) / den, cross(a, e) / den);
+        if r > T::zero() && along >= T::zero() && along <= T::one() && best.map_or(true, |(nearest, _)| r < nearest) {
+            let len = d.0.hypot(d.1);
+            let n = (d.1 / len, -d.0 / len);
+            best = Some((r, if n.0 * a.0 + n.1 * a.1 < T::zero() { (-n.0, -n.1) } else { n }));
+        }
+    }
+    best.map(|(_, n)| n)
 }
 
 /// The azimuths of [`AZIMUTHAL`], once per ray: `(cos ψ, sin ψ, weight)` over the whole circle and
@@ -453,7 +507,8 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
         let near = outline.nearest(q);
         let to_near = [near.0, near.1, -z];
         let cos = (dot(p, to_near) / length(to_near)).min(T::one());
-        let on_emitter = near == q;
+        // on it, or outside by no more than the rounding of q_L and the corners about the foot
+        let on_emitter = (near.0 - q.0).hypot(near.1 - q.1) <= T::lit(16.0) * T::epsilon() * (q.0.hypot(q.1) + size + z);
         (on_emitter || cos.acos() < T::lit(LOBE_REACH) * scale).then_some(FlatLobe { p, sign, scale, l, q, on_emitter })
     })
 }
@@ -465,10 +520,12 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
 /// `c = −(p·n)(cos θ − k sin θ)`. Each `θ` range (the emitter's chord of that half-line), graded
 /// from its start by `θ = θ_a + max(s, θ_a) tan γ`, by [`RADIAL`]; `ψ` over the whole circle
 /// ([`AZIMUTHAL`]) if `q_L` is on a disc, else over the wedge of the disc's tangents from it
-/// (`ψ = ψ_m + Ψ sin φ`, the chords close like a square root there); over the wedges between a
-/// parallelogram's corners seen from `q_L` (its chords' ends stay on one edge each) by
-/// [`TRIANGLE_AZIMUTHAL`], in `ψ` off the emitter and on it in the angle `β` of the edge the
-/// wedge's chords end on, as [`parallelogram`]'s triangles (docs/DESIGN.md §12).
+/// (`ψ = ψ_m + Ψ sin φ`, the chords close like a square root there). A parallelogram holding
+/// `q_L` ([`flat_lobe`]: also where rounding puts it just outside) is taken edge by edge, each
+/// wedge of chords ending on an edge in the angle `β` that edge subtends ([`edge_rule`], as
+/// [`parallelogram`]'s triangles); off it, over the wedges between its corners seen from `q_L`
+/// (each chord's ends on one edge each), each in the Mercator angle of the edge its chords
+/// enter by ([`mercator_rule`]); docs/DESIGN.md §12.
 fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, outline: &Outline<T>, lobe: &FlatLobe<T>) -> T {
     let FlatLobe { p, sign, scale, l, q, on_emitter } = *lobe;
     let (u, v) = basis(p);
@@ -523,26 +580,35 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             // segment between the corners' images; they turn as a parallelogram's triangles do,
             // with the lobe's footprint L s in place of ρ₀ min(1, s)
             let lobe_plane = corners.map(|c| ((c.0 - q.0) * u[0] + (c.1 - q.1) * u[1], (c.0 - q.0) * v[0] + (c.1 - q.1) * v[1]));
+            // the image keeps or reverses the corners' turn; an edge q_L is on (or outside by
+            // rounding, [`flat_lobe`]) has no chords of its own
+            let cross = |i: usize| lobe_plane[i].0 * lobe_plane[(i + 1) % 4].1 - lobe_plane[i].1 * lobe_plane[(i + 1) % 4].0;
+            let turn = (0..4).fold(T::zero(), |sum, i| sum + cross(i));
             for i in 0..4 {
                 let (a, b) = (lobe_plane[i], lobe_plane[(i + 1) % 4]);
-                // the image keeps or reverses the corners' turn; q_L on an edge: no chords
-                let area = a.0 * b.1 - a.1 * b.0;
-                let (a, b) = if area < T::zero() { (b, a) } else { (a, b) };
-                if area.abs() > T::zero() {
+                if cross(i) * turn > T::zero() {
+                    let (a, b) = if turn < T::zero() { (b, a) } else { (a, b) };
                     edge_rule(a, b, l * scale, |dir, _, w| sum = sum + w * along(dir.0, dir.1));
                 }
             }
         }
         Outline::Polygon(corners) => {
-            // the wedges between the corners' azimuths about the centre's, in order
+            // the wedges between the corners' azimuths about the centre's, in order, each in the
+            // Mercator angle of the edge its chords enter by
+            let lobe_plane = corners.map(|c| ((c.0 - q.0) * u[0] + (c.1 - q.1) * u[1], (c.0 - q.0) * v[0] + (c.1 - q.1) * v[1]));
             let mid = azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1));
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
             for i in 0..3 {
-                each_node(&TRIANGLE_AZIMUTHAL, mid + psi[i], mid + psi[i + 1], |a, w| {
-                    let (s, c) = sin_cos_turns(a);
-                    sum = sum + w * along(c, s);
-                });
+                let (from, to) = (mid + psi[i], mid + psi[i + 1]);
+                let (sm, cm) = sin_cos_turns(T::lit(0.5) * (from + to));
+                match entry_normal(&lobe_plane, (cm, sm)) {
+                    Some(n) => mercator_rule(n, [from, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s)),
+                    None => each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
+                        let (s, c) = sin_cos_turns(a);
+                        sum = sum + w * along(c, s);
+                    }),
+                }
             }
         }
     }
