@@ -405,11 +405,11 @@ vec2 airlight_cdiv(vec2 a_1, vec2 b_1) {
 }
 
 float airlight_cabs(vec2 z) {
-    float m_4 = max(abs(z.x), abs(z.y));
-    if ((m_4 == 0.0)) {
+    float m_5 = max(abs(z.x), abs(z.y));
+    if ((m_5 == 0.0)) {
         return 0.0;
     }
-    return (m_4 * length((z / vec2(m_4))));
+    return (m_5 * length((z / vec2(m_5))));
 }
 
 vec2 airlight_csqrt(vec2 z_1) {
@@ -425,11 +425,11 @@ vec2 airlight_csqrt(vec2 z_1) {
     }
     float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
-        return vec2(t_4, (z_1.y / (t_4 + t_4)));
+        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
+        return vec2(t_5, (z_1.y / (t_5 + t_5)));
     }
-    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
-    return vec2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
+    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
+    return vec2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
 }
 
 vec2 airlight_cos_sin(float x) {
@@ -440,9 +440,9 @@ vec2 airlight_cos_sin(float x) {
 }
 
 vec2 airlight_cexp(vec2 z_2) {
-    float m_5 = exp(z_2.x);
+    float m_6 = exp(z_2.x);
     vec2 _e4 = airlight_cos_sin(z_2.y);
-    return vec2((m_5 * _e4.x), (m_5 * _e4.y));
+    return vec2((m_6 * _e4.x), (m_6 * _e4.y));
 }
 
 float airlight_atan(float x_1) {
@@ -718,9 +718,9 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     uint i_1 = 0u;
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
-    float m_6 = float(_e2);
-    float b_16 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_31 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float m_7 = float(_e2);
+    float b_16 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
+    float a_31 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
     float disc = (1.0 - ((4.0 * a_31) / (b_16 * b_16)));
     t_2 = b_16;
     if ((disc > 0.0)) {
@@ -2153,26 +2153,26 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e53[8] = samples_2;
     float _e54[8] = airlight_legendre(_e53);
     float alpha = (b_6 / r_10);
-    float beta = (-(yc_2) / r_10);
+    float beta_1 = (-(yc_2) / r_10);
     float _e58[8] = airlight_legendre_to_monomial(_e54);
     float _e59[8] = airlight_zero_terms();
     q = _e59;
     q = float[8](_e58[7], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e71 = q[0];
     float _e76 = q[0];
-    q = float[8](((_e71 * beta) + _e58[6]), (_e76 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = float[8](((_e71 * beta_1) + _e58[6]), (_e76 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e86 = q[0];
     float _e91 = q[0];
     float _e94 = q[1];
     float _e98 = q[1];
-    q = float[8](((_e86 * beta) + _e58[5]), ((_e91 * alpha) + (_e94 * beta)), (_e98 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = float[8](((_e86 * beta_1) + _e58[5]), ((_e91 * alpha) + (_e94 * beta_1)), (_e98 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e107 = q[0];
     float _e112 = q[0];
     float _e115 = q[1];
     float _e119 = q[1];
     float _e122 = q[2];
     float _e126 = q[2];
-    q = float[8](((_e107 * beta) + _e58[4]), ((_e112 * alpha) + (_e115 * beta)), ((_e119 * alpha) + (_e122 * beta)), (_e126 * alpha), 0.0, 0.0, 0.0, 0.0);
+    q = float[8](((_e107 * beta_1) + _e58[4]), ((_e112 * alpha) + (_e115 * beta_1)), ((_e119 * alpha) + (_e122 * beta_1)), (_e126 * alpha), 0.0, 0.0, 0.0, 0.0);
     float _e134 = q[0];
     float _e139 = q[0];
     float _e142 = q[1];
@@ -2181,7 +2181,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e153 = q[2];
     float _e156 = q[3];
     float _e160 = q[3];
-    q = float[8](((_e134 * beta) + _e58[3]), ((_e139 * alpha) + (_e142 * beta)), ((_e146 * alpha) + (_e149 * beta)), ((_e153 * alpha) + (_e156 * beta)), (_e160 * alpha), 0.0, 0.0, 0.0);
+    q = float[8](((_e134 * beta_1) + _e58[3]), ((_e139 * alpha) + (_e142 * beta_1)), ((_e146 * alpha) + (_e149 * beta_1)), ((_e153 * alpha) + (_e156 * beta_1)), (_e160 * alpha), 0.0, 0.0, 0.0);
     float _e167 = q[0];
     float _e172 = q[0];
     float _e175 = q[1];
@@ -2192,7 +2192,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e193 = q[3];
     float _e196 = q[4];
     float _e200 = q[4];
-    q = float[8](((_e167 * beta) + _e58[2]), ((_e172 * alpha) + (_e175 * beta)), ((_e179 * alpha) + (_e182 * beta)), ((_e186 * alpha) + (_e189 * beta)), ((_e193 * alpha) + (_e196 * beta)), (_e200 * alpha), 0.0, 0.0);
+    q = float[8](((_e167 * beta_1) + _e58[2]), ((_e172 * alpha) + (_e175 * beta_1)), ((_e179 * alpha) + (_e182 * beta_1)), ((_e186 * alpha) + (_e189 * beta_1)), ((_e193 * alpha) + (_e196 * beta_1)), (_e200 * alpha), 0.0, 0.0);
     float _e206 = q[0];
     float _e211 = q[0];
     float _e214 = q[1];
@@ -2205,7 +2205,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e239 = q[4];
     float _e242 = q[5];
     float _e246 = q[5];
-    q = float[8](((_e206 * beta) + _e58[1]), ((_e211 * alpha) + (_e214 * beta)), ((_e218 * alpha) + (_e221 * beta)), ((_e225 * alpha) + (_e228 * beta)), ((_e232 * alpha) + (_e235 * beta)), ((_e239 * alpha) + (_e242 * beta)), (_e246 * alpha), 0.0);
+    q = float[8](((_e206 * beta_1) + _e58[1]), ((_e211 * alpha) + (_e214 * beta_1)), ((_e218 * alpha) + (_e221 * beta_1)), ((_e225 * alpha) + (_e228 * beta_1)), ((_e232 * alpha) + (_e235 * beta_1)), ((_e239 * alpha) + (_e242 * beta_1)), (_e246 * alpha), 0.0);
     float _e251 = q[0];
     float _e256 = q[0];
     float _e259 = q[1];
@@ -2220,7 +2220,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e291 = q[5];
     float _e294 = q[6];
     float _e298 = q[6];
-    q = float[8](((_e251 * beta) + _e58[0]), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), ((_e270 * alpha) + (_e273 * beta)), ((_e277 * alpha) + (_e280 * beta)), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), (_e298 * alpha));
+    q = float[8](((_e251 * beta_1) + _e58[0]), ((_e256 * alpha) + (_e259 * beta_1)), ((_e263 * alpha) + (_e266 * beta_1)), ((_e270 * alpha) + (_e273 * beta_1)), ((_e277 * alpha) + (_e280 * beta_1)), ((_e284 * alpha) + (_e287 * beta_1)), ((_e291 * alpha) + (_e294 * beta_1)), (_e298 * alpha));
     float big_h_6 = half_8.big_h;
     float _e303[10] = airlight_en_scaled((big_h_6 / b_6));
     if ((a_7 > 0.0)) {
@@ -2327,7 +2327,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_35 = (abs(alpha) + abs(beta));
+    float x_35 = (abs(alpha) + abs(beta_1));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
@@ -2452,8 +2452,8 @@ AirlightPanel airlight_panel(AirlightScene s_9, AirlightCanonical g_11, float si
 
 float airlight_graded_split(float a_9, float b_8, vec3 heights_3) {
     bool local_20 = false;
-    float t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    float d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
+    float t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    float d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
     if ((d_2 > 0.0)) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25));
     } else {
@@ -3240,13 +3240,13 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                         float _e94 = cuts[(_e90 + 1u)];
                         if ((_e89 > _e94)) {
                             uint _e96 = j_2;
-                            float t_7 = cuts[_e96];
+                            float t_8 = cuts[_e96];
                             uint _e99 = j_2;
                             uint _e101 = j_2;
                             float _e105 = cuts[(_e101 + 1u)];
                             cuts[_e99] = _e105;
                             uint _e106 = j_2;
-                            cuts[(_e106 + 1u)] = t_7;
+                            cuts[(_e106 + 1u)] = t_8;
                         }
                     }
                 }
@@ -3855,11 +3855,11 @@ bool airlight_vec_finite(vec3 v) {
 }
 
 float airlight_safe_length(vec3 v_1) {
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_8 == 0.0)) {
         return 0.0;
     }
-    return (m_7 * length((v_1 / vec3(m_7))));
+    return (m_8 * length((v_1 / vec3(m_8))));
 }
 
 bool airlight_normalisable(vec3 v_2) {
@@ -3876,8 +3876,8 @@ bool airlight_normalisable(vec3 v_2) {
 }
 
 vec3 airlight_normalize(vec3 v_3) {
-    float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    vec3 u_7 = (v_3 / vec3(m_8));
+    float m_9 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    vec3 u_7 = (v_3 / vec3(m_9));
     return (u_7 / vec3(length(u_7)));
 }
 
@@ -4419,10 +4419,10 @@ float airlight_diff_of_products(float a_15, float b_12, float c_5, float d_1, ui
 bool airlight_in_exact_range(vec3 v_4) {
     bool local_126 = false;
     bool local_127 = false;
-    float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
-    if (!((m_9 == 0.0))) {
-        if ((m_9 >= 9.313226e-10)) {
-            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+    float m_10 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if (!((m_10 == 0.0))) {
+        if ((m_10 >= 9.313226e-10)) {
+            local_127 = (m_10 <= AIRLIGHT_EXACT_RANGE);
         } else {
             local_127 = false;
         }
@@ -5777,16 +5777,16 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_39 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_21 - float(i_39));
-        float a_42 = g_25.gamma[i_39];
-        float b_20 = g_25.gamma[(i_39 + 1u)];
+        uint i_40 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_40));
+        float a_42 = g_25.gamma[i_40];
+        float b_20 = g_25.gamma[(i_40 + 1u)];
         float w_8 = (b_20 - a_42);
-        float u_8 = (1.0 - t_8);
-        bool smooth_a = (((g_25.smooth_edges >> i_39) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
-        jacobian = (((w_8 * 6.0) * t_8) * u_8);
+        float u_8 = (1.0 - t_9);
+        bool smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        jacobian = (((w_8 * 6.0) * t_9) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -5794,7 +5794,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_8) * t_8)) : _e58);
+        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -5802,7 +5802,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e75 = local_164;
-        jacobian = (_e75 ? (w_8 * (t_8 + t_8)) : _e68);
+        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
             local_165 = !(smooth_b);
@@ -5826,7 +5826,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_42 + (w_8 * t_8)) : _e96);
+        gamma_1 = (_e102 ? (a_42 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -5897,8 +5897,8 @@ vec3 airlight_azimuths(bool circle, uint i_25) {
 }
 
 vec2 airlight_triangle_rule(uint i_26) {
-    vec2 rule_2[12] = vec2[12](vec2(-0.12523341, 0.24914704), vec2(0.12523341, 0.24914704), vec2(-0.3678315, 0.23349254), vec2(0.3678315, 0.23349254), vec2(-0.58731794, 0.20316742), vec2(0.58731794, 0.20316742), vec2(-0.76990265, 0.16007833), vec2(0.76990265, 0.16007833), vec2(-0.9041172, 0.10693932), vec2(0.9041172, 0.10693932), vec2(-0.98156065, 0.047175337), vec2(0.98156065, 0.047175337));
-    return rule_2[i_26];
+    vec2 rule_3[12] = vec2[12](vec2(-0.12523341, 0.24914704), vec2(0.12523341, 0.24914704), vec2(-0.3678315, 0.23349254), vec2(0.3678315, 0.23349254), vec2(-0.58731794, 0.20316742), vec2(0.58731794, 0.20316742), vec2(-0.76990265, 0.16007833), vec2(0.76990265, 0.16007833), vec2(-0.9041172, 0.10693932), vec2(0.9041172, 0.10693932), vec2(-0.98156065, 0.047175337), vec2(0.98156065, 0.047175337));
+    return rule_3[i_26];
 }
 
 float airlight_area_phase(AirlightScene s_28, float mu_2) {
@@ -6125,9 +6125,9 @@ vec4 airlight_phase_lobes(AirlightScene s_34) {
 vec3 airlight_basis_e1_(vec3 n_2) {
     vec3 u_3 = vec3(0.0, 0.0, 1.0);
     bool local_171 = false;
-    vec3 m_10 = abs(n_2);
-    if ((m_10.x <= m_10.y)) {
-        local_171 = (m_10.x <= m_10.z);
+    vec3 m_11 = abs(n_2);
+    if ((m_11.x <= m_11.y)) {
+        local_171 = (m_11.x <= m_11.z);
     } else {
         local_171 = false;
     }
@@ -6135,7 +6135,7 @@ vec3 airlight_basis_e1_(vec3 n_2) {
     if (_e16) {
         u_3 = vec3(1.0, 0.0, 0.0);
     } else {
-        if ((m_10.y <= m_10.z)) {
+        if ((m_11.y <= m_11.z)) {
             u_3 = vec3(0.0, 1.0, 0.0);
         }
     }
@@ -6308,12 +6308,12 @@ AirlightArea airlight_area(AirlightScene s_35) {
         }
         {
             uint _e245 = i_27;
-            float t_9 = cuts_4[_e245];
+            float t_10 = cuts_4[_e245];
             uint _e248 = i_27;
             cuts_4[_e248] = _e217;
-            bool _e250 = airlight_is_finite(t_9);
+            bool _e250 = airlight_is_finite(t_10);
             if (_e250) {
-                local_174 = (t_9 >= t0_2);
+                local_174 = (t_10 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -6322,7 +6322,7 @@ AirlightArea airlight_area(AirlightScene s_35) {
                 bool _e258 = end_infinite;
                 if (!(_e258)) {
                     float _e262 = t_end_1;
-                    local_176 = (t_9 <= _e262);
+                    local_176 = (t_10 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -6335,7 +6335,7 @@ AirlightArea airlight_area(AirlightScene s_35) {
             if (_e267) {
                 uint _e268 = i_27;
                 AirlightArea _e270 = a_18;
-                float _e272 = airlight_area_theta(_e270, t_9, false);
+                float _e272 = airlight_area_theta(_e270, t_10, false);
                 cuts_4[_e268] = _e272;
             }
         }
@@ -6463,8 +6463,8 @@ vec3 airlight_outline_boundary(AirlightOutline o, vec2 q_4) {
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_10 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
-            vec2 p_5 = (a_44 + (t_10 * e_15));
+            float t_11 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
+            vec2 p_5 = (a_44 + (t_11 * e_15));
             float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
@@ -6540,10 +6540,24 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
     return AirlightFlatLobe(vec3(0.0), 1.0, 0.0, 0.0, vec2(0.0), false);
 }
 
+vec2 airlight_radial_rule(uint i_29) {
+    vec2 rule_4[16] = vec2[16](vec2(-0.09501251, 0.1894506), vec2(0.09501251, 0.1894506), vec2(-0.28160354, 0.18260342), vec2(0.28160354, 0.18260342), vec2(-0.45801678, 0.16915652), vec2(0.45801678, 0.16915652), vec2(-0.61787623, 0.14959599), vec2(0.61787623, 0.14959599), vec2(-0.7554044, 0.12462897), vec2(0.7554044, 0.12462897), vec2(-0.8656312, 0.09515851), vec2(0.8656312, 0.09515851), vec2(-0.944575, 0.062253524), vec2(0.944575, 0.062253524), vec2(-0.9894009, 0.02715246), vec2(0.9894009, 0.02715246));
+    return rule_4[i_29];
+}
+
+vec4 airlight_edge_at(AirlightEdgeRule rule_1, float beta) {
+    vec2 _e4 = airlight_cos_sin_half_turn((beta + 1.5707964));
+    float sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
+    float r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
+    float r_14 = sqrt(r2_3);
+    vec2 m_12 = vec2(rule_1.t.y, -(rule_1.t.x));
+    return vec4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+}
+
 vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_6, vec2 e_5) {
-    vec2 m_11 = vec2((b_13.y - a_22.y), (a_22.x - b_13.x));
-    float num = (((q_6.x - a_22.x) * m_11.x) + ((q_6.y - a_22.y) * m_11.y));
-    float den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
+    vec2 m_13 = vec2((b_13.y - a_22.y), (a_22.x - b_13.x));
+    float num = (((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y));
+    float den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if ((den > 0.0)) {
         return vec2(chord.x, min(chord.y, (-(num) / den)));
     }
@@ -6569,14 +6583,14 @@ vec2 airlight_outline_chord(AirlightOutline o_3, vec2 q_7, vec2 e_6) {
             return vec2(0.0);
         }
         float root_3 = sqrt(disc_3);
-        float t_11 = (-(b_22) - (((floatBitsToUint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_11 / a_45);
-        float r2_3 = (k_13 / t_11);
-        float hi_8 = max(r1_2, r2_3);
+        float t_12 = (-(b_22) - (((floatBitsToUint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_12 / a_45);
+        float r2_4 = (k_13 / t_12);
+        float hi_8 = max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
             return vec2(0.0);
         }
-        return vec2(max(min(r1_2, r2_3), 0.0), hi_8);
+        return vec2(max(min(r1_2, r2_4), 0.0), hi_8);
     }
     vec2 _e70 = chord_1;
     vec2 _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
@@ -6700,23 +6714,19 @@ vec2 airlight_cos_sin_turns(float x_23) {
 AirlightEdgeRule airlight_edge_rule(vec2 a_23, vec2 b_14, float width_1) {
     vec2 e_16 = (b_14 - a_23);
     float el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
-    vec2 t_12 = (e_16 / vec2(el));
+    vec2 t_13 = (e_16 / vec2(el));
     float h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
     float reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    float _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
-    float _e29 = airlight_atan2_(dot(b_14, t_12), reach_2);
-    return AirlightEdgeRule(h_9, t_12, reach_2, _e27, _e29);
+    float _e27 = airlight_atan2_(dot(a_23, t_13), reach_2);
+    float _e29 = airlight_atan2_(dot(b_14, t_13), reach_2);
+    return AirlightEdgeRule(h_9, t_13, reach_2, _e27, _e29);
 }
 
-vec4 airlight_edge_node(AirlightEdgeRule rule_1, uint j_6) {
+vec4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_6) {
     vec2 _e2 = airlight_triangle_rule(j_6);
-    float hw_4 = (0.5 * (rule_1.last - rule_1.first));
-    vec2 _e18 = airlight_cos_sin_half_turn((((0.5 * (rule_1.first + rule_1.last)) + (hw_4 * _e2.x)) + 1.5707964));
-    float sigma_13 = ((rule_1.reach * -(_e18.x)) / _e18.y);
-    float r2_4 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    float r_14 = sqrt(r2_4);
-    vec2 m_12 = vec2(rule_1.t.y, -(rule_1.t.x));
-    return vec4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((((_e2.y * hw_4) * rule_1.h) * rule_1.reach) / ((_e18.y * _e18.y) * r2_4)));
+    float hw_4 = (0.5 * (rule_2.last - rule_2.first));
+    vec4 _e16 = airlight_edge_at(rule_2, ((0.5 * (rule_2.first + rule_2.last)) + (hw_4 * _e2.x)));
+    return vec4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
 vec4 airlight_sort4_(vec4 x_24) {
@@ -6728,26 +6738,26 @@ vec4 airlight_sort4_(vec4 x_24) {
 vec2 airlight_entry_normal(vec2 y_6[4], vec2 e_8) {
     float nearest_1 = AIRLIGHT_FLT_MAX;
     vec2 normal_3 = vec2(0.0);
-    uint i_29 = 0u;
+    uint i_30 = 0u;
     bool local_181 = false;
     bool local_182 = false;
     bool local_183 = false;
     bool loop_init_34 = true;
     while(true) {
         if (!loop_init_34) {
-            uint _e80 = i_29;
-            i_29 = (_e80 + 1u);
+            uint _e80 = i_30;
+            i_30 = (_e80 + 1u);
         }
         loop_init_34 = false;
-        uint _e9 = i_29;
+        uint _e9 = i_30;
         if ((_e9 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e12 = i_29;
+            uint _e12 = i_30;
             vec2 a_47 = y_6[_e12];
-            uint _e14 = i_29;
+            uint _e14 = i_30;
             vec2 d_5 = (y_6[((_e14 + 1u) % 4u)] - a_47);
             float den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if ((den_1 == 0.0)) {
@@ -6799,283 +6809,339 @@ float airlight_mercator(vec2 n_3, vec2 cs_2) {
 
 float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3) {
     float sum_9 = 0.0;
-    uint i_30 = 0u;
+    vec2 m_4 = vec2(1.0, 0.0);
+    vec2 t_4 = vec2(0.0);
+    uint j_7 = 0u;
     uint i_31 = 0u;
-    vec4 area = vec4(0.0);
     uint i_32 = 0u;
+    vec4 area = vec4(0.0);
     uint i_33 = 0u;
+    uint i_34 = 0u;
     vec2 ya = vec2(0.0);
     vec2 yb = vec2(0.0);
-    uint j_7 = 0u;
-    uint i_34 = 0u;
     uint j_8 = 0u;
-    uint k_9 = 0u;
+    uint i_35 = 0u;
     uint j_9 = 0u;
+    uint k_9 = 0u;
+    uint j_10 = 0u;
     vec3 _e5 = airlight_basis_e1_(lobe_3.p);
     vec3 v_9 = cross(lobe_3.p, _e5);
     vec2 q_14 = lobe_3.q;
     if ((o_5.radius > 0.0)) {
         if (lobe_3.on_emitter) {
+            vec2 dq_2 = (q_14 - o_5.corners[0]);
+            float d_6 = sqrt(dot(dq_2, dq_2));
+            if ((d_6 > 0.0)) {
+                m_4 = (dq_2 / vec2(d_6));
+            }
+            vec2 _e31 = m_4;
+            vec2 rim_e = ((o_5.corners[0] + (o_5.radius * _e31)) - q_14);
+            vec2 rim = vec2(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
+            float _e41 = m_4.y;
+            float _e46 = m_4.x;
+            float _e51 = m_4.y;
+            float _e56 = m_4.x;
+            vec2 along_rim = vec2(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
+            float tl = sqrt(dot(along_rim, along_rim));
+            t_4 = (along_rim / vec2(tl));
+            float _e67 = t_4.y;
+            float _e71 = t_4.x;
+            if ((((_e67 * rim.x) - (_e71 * rim.y)) < 0.0)) {
+                vec2 _e77 = t_4;
+                t_4 = -(_e77);
+            }
+            float _e80 = t_4.y;
+            float _e84 = t_4.x;
+            float h_10 = ((_e80 * rim.x) - (_e84 * rim.y));
+            float half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0.0)));
+            float width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
+            vec2 _e101 = t_4;
+            AirlightEdgeRule rule_5 = AirlightEdgeRule(h_10, _e101, sqrt(((h_10 * h_10) + (width_5 * width_5))), -1.5707964, 1.5707964);
             bool loop_init_35 = true;
             while(true) {
                 if (!loop_init_35) {
-                    uint _e30 = i_30;
-                    i_30 = (_e30 + 1u);
+                    uint _e133 = j_7;
+                    j_7 = (_e133 + 1u);
                 }
                 loop_init_35 = false;
-                uint _e17 = i_30;
-                if ((_e17 < 32u)) {
+                uint _e111 = j_7;
+                if ((_e111 < 16u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e21 = i_30;
-                    vec3 _e22 = airlight_azimuths(true, _e21);
-                    float _e23 = sum_9;
-                    float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
-                    sum_9 = (_e23 + (_e22.z * _e26));
+                    uint _e114 = j_7;
+                    vec2 _e115 = airlight_radial_rule(_e114);
+                    vec4 _e119 = airlight_edge_at(rule_5, (1.5707964 * _e115.x));
+                    float _e120 = sum_9;
+                    float _e129 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e119.xy);
+                    sum_9 = (_e120 + ((((_e115.y * 0.5) * AIRLIGHT_PI) * _e119.w) * _e129));
                 }
             }
-            float _e32 = sum_9;
-            return _e32;
+            float _e136 = t_4.y;
+            float _e138 = t_4.x;
+            vec2 n_8 = vec2(_e136, -(_e138));
+            bool loop_init_36 = true;
+            while(true) {
+                if (!loop_init_36) {
+                    uint _e162 = i_31;
+                    i_31 = (_e162 + 1u);
+                }
+                loop_init_36 = false;
+                uint _e143 = i_31;
+                if ((_e143 < 32u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e147 = i_31;
+                    vec3 _e148 = airlight_azimuths(false, _e147);
+                    float _e149 = sum_9;
+                    vec2 _e153 = t_4;
+                    float _e158 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e148.x) + (_e153 * _e148.y))));
+                    sum_9 = (_e149 + (_e148.z * _e158));
+                }
+            }
+            float _e164 = sum_9;
+            return _e164;
         }
-        vec2 d_6 = (o_5.corners[0] - q_14);
-        float dq_2 = sqrt(((d_6.x * d_6.x) + (d_6.y * d_6.y)));
-        float sb_1 = (o_5.radius / dq_2);
-        float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        float _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
-        float _e65 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_6.x * cb) - (d_6.y * sb_1)), ((d_6.y * cb) + (d_6.x * sb_1))));
-        float _e67 = airlight_wrap_turn((_e65 - _e53));
-        float _e79 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_6.x * cb) + (d_6.y * sb_1)), ((d_6.y * cb) - (d_6.x * sb_1))));
-        float _e81 = airlight_wrap_turn((_e79 - _e53));
-        float centre_2 = (_e53 + ((_e67 + _e81) * 0.5));
-        float half_19 = (abs((_e67 - _e81)) * 0.5);
-        bool loop_init_36 = true;
-        while(true) {
-            if (!loop_init_36) {
-                uint _e111 = i_31;
-                i_31 = (_e111 + 1u);
-            }
-            loop_init_36 = false;
-            uint _e92 = i_31;
-            if ((_e92 < 32u)) {
-            } else {
-                break;
-            }
-            {
-                uint _e96 = i_31;
-                vec3 _e97 = airlight_azimuths(false, _e96);
-                float _e98 = sum_9;
-                vec2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                float _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
-                sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
-            }
-        }
-        float _e113 = sum_9;
-        return _e113;
-    }
-    vec2 y_14[4] = vec2[4](vec2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
-    if (lobe_3.on_emitter) {
+        vec2 d_7 = (o_5.corners[0] - q_14);
+        float dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
+        float sb_1 = (o_5.radius / dq_3);
+        float cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
+        float _e185 = airlight_lobe_azimuth(_e5, v_9, d_7);
+        float _e197 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        float _e199 = airlight_wrap_turn((_e197 - _e185));
+        float _e211 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        float _e213 = airlight_wrap_turn((_e211 - _e185));
+        float centre_2 = (_e185 + ((_e199 + _e213) * 0.5));
+        float half_19 = (abs((_e199 - _e213)) * 0.5);
         bool loop_init_37 = true;
         while(true) {
             if (!loop_init_37) {
-                uint _e188 = i_32;
-                i_32 = (_e188 + 1u);
+                uint _e243 = i_32;
+                i_32 = (_e243 + 1u);
             }
             loop_init_37 = false;
-            uint _e165 = i_32;
-            if ((_e165 < 4u)) {
+            uint _e224 = i_32;
+            if ((_e224 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e168 = i_32;
-                vec2 b_24 = y_14[((_e168 + 1u) % 4u)];
-                uint _e174 = i_32;
-                uint _e176 = i_32;
-                uint _e181 = i_32;
-                area[_e174] = ((y_14[_e176].x * b_24.y) - (y_14[_e181].y * b_24.x));
+                uint _e228 = i_32;
+                vec3 _e229 = airlight_azimuths(false, _e228);
+                float _e230 = sum_9;
+                vec2 _e238 = airlight_cos_sin_turns((centre_2 + (half_19 * _e229.y)));
+                float _e239 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e238);
+                sum_9 = (_e230 + (((_e229.z * half_19) * _e229.x) * _e239));
             }
         }
-        float _e191 = area.x;
-        float _e193 = area.y;
-        float _e196 = area.z;
-        float _e199 = area.w;
-        float turn = (((_e191 + _e193) + _e196) + _e199);
+        float _e245 = sum_9;
+        return _e245;
+    }
+    vec2 y_14[4] = vec2[4](vec2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
+    if (lobe_3.on_emitter) {
         bool loop_init_38 = true;
         while(true) {
             if (!loop_init_38) {
-                uint _e256 = i_33;
-                i_33 = (_e256 + 1u);
+                uint _e320 = i_33;
+                i_33 = (_e320 + 1u);
             }
             loop_init_38 = false;
-            uint _e203 = i_33;
-            if ((_e203 < 4u)) {
+            uint _e297 = i_33;
+            if ((_e297 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e206 = i_33;
-                float _e208 = area[_e206];
-                if (!(((_e208 * turn) > 0.0))) {
+                uint _e300 = i_33;
+                vec2 b_24 = y_14[((_e300 + 1u) % 4u)];
+                uint _e306 = i_33;
+                uint _e308 = i_33;
+                uint _e313 = i_33;
+                area[_e306] = ((y_14[_e308].x * b_24.y) - (y_14[_e313].y * b_24.x));
+            }
+        }
+        float _e323 = area.x;
+        float _e325 = area.y;
+        float _e328 = area.z;
+        float _e331 = area.w;
+        float turn = (((_e323 + _e325) + _e328) + _e331);
+        bool loop_init_39 = true;
+        while(true) {
+            if (!loop_init_39) {
+                uint _e388 = i_34;
+                i_34 = (_e388 + 1u);
+            }
+            loop_init_39 = false;
+            uint _e335 = i_34;
+            if ((_e335 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e338 = i_34;
+                float _e340 = area[_e338];
+                if (!(((_e340 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e213 = i_33;
-                ya = y_14[_e213];
-                uint _e216 = i_33;
-                yb = y_14[((_e216 + 1u) % 4u)];
+                uint _e345 = i_34;
+                ya = y_14[_e345];
+                uint _e348 = i_34;
+                yb = y_14[((_e348 + 1u) % 4u)];
                 if ((turn < 0.0)) {
-                    uint _e225 = i_33;
-                    ya = y_14[((_e225 + 1u) % 4u)];
-                    uint _e231 = i_33;
-                    yb = y_14[_e231];
+                    uint _e357 = i_34;
+                    ya = y_14[((_e357 + 1u) % 4u)];
+                    uint _e363 = i_34;
+                    yb = y_14[_e363];
                 }
-                vec2 _e233 = ya;
-                vec2 _e234 = yb;
-                AirlightEdgeRule _e238 = airlight_edge_rule(_e233, _e234, (lobe_3.l * lobe_3.scale));
-                j_7 = 0u;
-                bool loop_init_39 = true;
+                vec2 _e365 = ya;
+                vec2 _e366 = yb;
+                AirlightEdgeRule _e370 = airlight_edge_rule(_e365, _e366, (lobe_3.l * lobe_3.scale));
+                j_8 = 0u;
+                bool loop_init_40 = true;
                 while(true) {
-                    if (!loop_init_39) {
-                        uint _e253 = j_7;
-                        j_7 = (_e253 + 1u);
+                    if (!loop_init_40) {
+                        uint _e385 = j_8;
+                        j_8 = (_e385 + 1u);
                     }
-                    loop_init_39 = false;
-                    uint _e241 = j_7;
-                    if ((_e241 < 12u)) {
+                    loop_init_40 = false;
+                    uint _e373 = j_8;
+                    if ((_e373 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e244 = j_7;
-                        vec4 _e245 = airlight_edge_node(_e238, _e244);
-                        float _e246 = sum_9;
-                        float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
-                        sum_9 = (_e246 + (_e245.w * _e249));
+                        uint _e376 = j_8;
+                        vec4 _e377 = airlight_edge_node(_e370, _e376);
+                        float _e378 = sum_9;
+                        float _e381 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e377.xy);
+                        sum_9 = (_e378 + (_e377.w * _e381));
                     }
                 }
             }
         }
-        float _e258 = sum_9;
-        return _e258;
+        float _e390 = sum_9;
+        return _e390;
     }
-    float _e267 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    float _e271 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    float _e273 = airlight_wrap_turn((_e271 - _e267));
-    float _e277 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    float _e279 = airlight_wrap_turn((_e277 - _e267));
-    float _e283 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    float _e285 = airlight_wrap_turn((_e283 - _e267));
-    float _e289 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    float _e291 = airlight_wrap_turn((_e289 - _e267));
-    vec4 _e293 = airlight_sort4_(vec4(_e273, _e279, _e285, _e291));
-    bool loop_init_40 = true;
+    float _e399 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    float _e403 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    float _e405 = airlight_wrap_turn((_e403 - _e399));
+    float _e409 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    float _e411 = airlight_wrap_turn((_e409 - _e399));
+    float _e415 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    float _e417 = airlight_wrap_turn((_e415 - _e399));
+    float _e421 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    float _e423 = airlight_wrap_turn((_e421 - _e399));
+    vec4 _e425 = airlight_sort4_(vec4(_e405, _e411, _e417, _e423));
+    bool loop_init_41 = true;
     while(true) {
-        if (!loop_init_40) {
-            uint _e416 = i_34;
-            i_34 = (_e416 + 1u);
+        if (!loop_init_41) {
+            uint _e548 = i_35;
+            i_35 = (_e548 + 1u);
         }
-        loop_init_40 = false;
-        uint _e296 = i_34;
-        if ((_e296 < 3u)) {
+        loop_init_41 = false;
+        uint _e428 = i_35;
+        if ((_e428 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e299 = i_34;
-            float first_2 = (_e267 + _e293[_e299]);
-            uint _e302 = i_34;
-            float last_1 = (_e267 + _e293[(_e302 + 1u)]);
-            vec2 _e310 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
-            vec2 _e311 = airlight_entry_normal(y_14, _e310);
-            if (all(equal(_e311, vec2(0.0)))) {
+            uint _e431 = i_35;
+            float first_2 = (_e399 + _e425[_e431]);
+            uint _e434 = i_35;
+            float last_1 = (_e399 + _e425[(_e434 + 1u)]);
+            vec2 _e442 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
+            vec2 _e443 = airlight_entry_normal(y_14, _e442);
+            if (all(equal(_e443, vec2(0.0)))) {
                 float c_19 = ((first_2 + last_1) * 0.5);
                 float hw_5 = ((last_1 - first_2) * 0.5);
-                j_8 = 0u;
-                bool loop_init_41 = true;
+                j_9 = 0u;
+                bool loop_init_42 = true;
                 while(true) {
-                    if (!loop_init_41) {
-                        uint _e340 = j_8;
-                        j_8 = (_e340 + 1u);
+                    if (!loop_init_42) {
+                        uint _e472 = j_9;
+                        j_9 = (_e472 + 1u);
                     }
-                    loop_init_41 = false;
-                    uint _e324 = j_8;
-                    if ((_e324 < 12u)) {
+                    loop_init_42 = false;
+                    uint _e456 = j_9;
+                    if ((_e456 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e327 = j_8;
-                        vec2 _e328 = airlight_triangle_rule(_e327);
-                        float _e329 = sum_9;
-                        vec2 _e335 = airlight_cos_sin_turns((c_19 + (hw_5 * _e328.x)));
-                        float _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
-                        sum_9 = (_e329 + ((_e328.y * hw_5) * _e336));
+                        uint _e459 = j_9;
+                        vec2 _e460 = airlight_triangle_rule(_e459);
+                        float _e461 = sum_9;
+                        vec2 _e467 = airlight_cos_sin_turns((c_19 + (hw_5 * _e460.x)));
+                        float _e468 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e467);
+                        sum_9 = (_e461 + ((_e460.y * hw_5) * _e468));
                     }
                 }
                 continue;
             }
-            vec2 t_13 = vec2(-(_e311.y), _e311.x);
-            vec2 _e346 = airlight_cos_sin_turns(first_2);
-            float _e347 = airlight_mercator(_e311, _e346);
-            vec2 _e348 = airlight_cos_sin_turns(last_1);
-            float _e349 = airlight_mercator(_e311, _e348);
+            vec2 t_14 = vec2(-(_e443.y), _e443.x);
+            vec2 _e478 = airlight_cos_sin_turns(first_2);
+            float _e479 = airlight_mercator(_e443, _e478);
+            vec2 _e480 = airlight_cos_sin_turns(last_1);
+            float _e481 = airlight_mercator(_e443, _e480);
             k_9 = 0u;
-            bool loop_init_42 = true;
+            bool loop_init_43 = true;
             while(true) {
-                if (!loop_init_42) {
-                    uint _e413 = k_9;
-                    k_9 = (_e413 + 1u);
+                if (!loop_init_43) {
+                    uint _e545 = k_9;
+                    k_9 = (_e545 + 1u);
                 }
-                loop_init_42 = false;
-                uint _e352 = k_9;
-                if ((_e352 < 7u)) {
+                loop_init_43 = false;
+                uint _e484 = k_9;
+                if ((_e484 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e355 = k_9;
-                    float _e356 = airlight_mercator_cut(_e355);
-                    float lo_8 = max(_e347, _e356);
-                    uint _e358 = k_9;
-                    float _e361 = airlight_mercator_cut((_e358 + 1u));
-                    float hi_9 = min(_e349, _e361);
+                    uint _e487 = k_9;
+                    float _e488 = airlight_mercator_cut(_e487);
+                    float lo_8 = max(_e479, _e488);
+                    uint _e490 = k_9;
+                    float _e493 = airlight_mercator_cut((_e490 + 1u));
+                    float hi_9 = min(_e481, _e493);
                     if (!((lo_8 < hi_9))) {
                         continue;
                     }
                     float c_20 = ((lo_8 + hi_9) * 0.5);
                     float hw_6 = ((hi_9 - lo_8) * 0.5);
-                    j_9 = 0u;
-                    bool loop_init_43 = true;
+                    j_10 = 0u;
+                    bool loop_init_44 = true;
                     while(true) {
-                        if (!loop_init_43) {
-                            uint _e410 = j_9;
-                            j_9 = (_e410 + 1u);
+                        if (!loop_init_44) {
+                            uint _e542 = j_10;
+                            j_10 = (_e542 + 1u);
                         }
-                        loop_init_43 = false;
-                        uint _e373 = j_9;
-                        if ((_e373 < 12u)) {
+                        loop_init_44 = false;
+                        uint _e505 = j_10;
+                        if ((_e505 < 12u)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e376 = j_9;
-                            vec2 _e377 = airlight_triangle_rule(_e376);
-                            float x_37 = (c_20 + (hw_6 * _e377.x));
+                            uint _e508 = j_10;
+                            vec2 _e509 = airlight_triangle_rule(_e508);
+                            float x_37 = (c_20 + (hw_6 * _e509.x));
                             float e_17 = exp(-(abs(x_37)));
                             float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
                             float th = ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)));
-                            float _e399 = sum_9;
-                            float _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e311 * sech) + (t_13 * th)));
-                            sum_9 = (_e399 + (((_e377.y * hw_6) * sech) * _e406));
+                            float _e531 = sum_9;
+                            float _e538 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e443 * sech) + (t_14 * th)));
+                            sum_9 = (_e531 + (((_e509.y * hw_6) * sech) * _e538));
                         }
                     }
                 }
             }
         }
     }
-    float _e418 = sum_9;
-    return _e418;
+    float _e550 = sum_9;
+    return _e550;
 }
 
 float airlight_disc(AirlightScene s_41, AirlightArea a_24, vec3 x_25) {
@@ -7084,7 +7150,7 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, vec3 x_25) {
     vec2 u_6 = vec2(0.0);
     AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
     float sum_10 = 0.0;
-    uint i_35 = 0u;
+    uint i_36 = 0u;
     vec2 e_9 = vec2(0.0);
     float r_max_1 = 0.0;
     vec3 rel = (x_25 - a_24.c);
@@ -7125,20 +7191,20 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, vec3 x_25) {
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
-    bool loop_init_44 = true;
+    bool loop_init_45 = true;
     while(true) {
-        if (!loop_init_44) {
-            uint _e127 = i_35;
-            i_35 = (_e127 + 1u);
+        if (!loop_init_45) {
+            uint _e127 = i_36;
+            i_36 = (_e127 + 1u);
         }
-        loop_init_44 = false;
-        uint _e73 = i_35;
+        loop_init_45 = false;
+        uint _e73 = i_36;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_35;
+            uint _e76 = i_36;
             vec3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
@@ -7168,8 +7234,8 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, vec3 x_26) {
     vec2 q_8 = vec2(0.0);
     bool local_186 = false;
     float sum_11 = 0.0;
-    uint i_36 = 0u;
-    uint j_10 = 0u;
+    uint i_37 = 0u;
+    uint j_11 = 0u;
     vec3 rel_1 = (x_26 - a_25.c);
     float z_21 = dot(rel_1, a_25.n);
     if (!((z_21 > 0.0))) {
@@ -7203,44 +7269,44 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, vec3 x_26) {
     AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    bool loop_init_45 = true;
+    bool loop_init_46 = true;
     while(true) {
-        if (!loop_init_45) {
-            uint _e145 = i_36;
-            i_36 = (_e145 + 1u);
+        if (!loop_init_46) {
+            uint _e145 = i_37;
+            i_37 = (_e145 + 1u);
         }
-        loop_init_45 = false;
-        uint _e104 = i_36;
+        loop_init_46 = false;
+        uint _e104 = i_37;
         if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e107 = i_36;
+            uint _e107 = i_37;
             vec2 _e109 = q_8;
             vec2 ca = (corners[_e107] - _e109);
-            uint _e111 = i_36;
+            uint _e111 = i_37;
             vec2 _e115 = q_8;
             vec2 cb_1 = (corners[(_e111 + 1u)] - _e115);
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
             AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_10 = 0u;
-            bool loop_init_46 = true;
+            j_11 = 0u;
+            bool loop_init_47 = true;
             while(true) {
-                if (!loop_init_46) {
-                    uint _e142 = j_10;
-                    j_10 = (_e142 + 1u);
+                if (!loop_init_47) {
+                    uint _e142 = j_11;
+                    j_11 = (_e142 + 1u);
                 }
-                loop_init_46 = false;
-                uint _e129 = j_10;
+                loop_init_47 = false;
+                uint _e129 = j_11;
                 if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_10;
+                    uint _e132 = j_11;
                     vec4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
                     float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
@@ -7268,7 +7334,7 @@ vec3 airlight_cap_row(AirlightScene s_43, AirlightCap cap, float graded_4, float
 float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap_1) {
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     float sum_12 = 0.0;
-    uint i_37 = 0u;
+    uint i_38 = 0u;
     float at_2 = 0.0;
     vec3 _e4 = airlight_basis_e1_(cap_1.a);
     vec3 e2_2 = cross(cap_1.a, _e4);
@@ -7365,20 +7431,20 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    bool loop_init_47 = true;
+    bool loop_init_48 = true;
     while(true) {
-        if (!loop_init_47) {
-            uint _e550 = i_37;
-            i_37 = (_e550 + 1u);
+        if (!loop_init_48) {
+            uint _e550 = i_38;
+            i_38 = (_e550 + 1u);
         }
-        loop_init_47 = false;
-        uint _e275 = i_37;
+        loop_init_48 = false;
+        uint _e275 = i_38;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_37;
+            uint _e279 = i_38;
             vec3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -7501,7 +7567,7 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_38 = 0u;
+    uint i_39 = 0u;
     float big_b_1 = 0.0;
     float wpsi = 0.0;
     float start_5 = 0.0;
@@ -7518,20 +7584,20 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
         float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    bool loop_init_48 = true;
+    bool loop_init_49 = true;
     while(true) {
-        if (!loop_init_48) {
-            uint _e290 = i_38;
-            i_38 = (_e290 + 1u);
+        if (!loop_init_49) {
+            uint _e290 = i_39;
+            i_39 = (_e290 + 1u);
         }
-        loop_init_48 = false;
-        uint _e47 = i_38;
+        loop_init_49 = false;
+        uint _e47 = i_39;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_38;
+            uint _e50 = i_39;
             vec3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -7653,7 +7719,7 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, vec3 x_27) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_11 = 0u;
+    uint j_12 = 0u;
     bool local_187 = false;
     bool local_188 = false;
     bool local_189 = false;
@@ -7667,20 +7733,20 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, vec3 x_27) {
     float sin_a_2 = (a_28.radius / _e5);
     AirlightCap cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    bool loop_init_49 = true;
+    bool loop_init_50 = true;
     while(true) {
-        if (!loop_init_49) {
-            uint _e92 = j_11;
-            j_11 = (_e92 + 1u);
+        if (!loop_init_50) {
+            uint _e92 = j_12;
+            j_12 = (_e92 + 1u);
         }
-        loop_init_49 = false;
-        uint _e32 = j_11;
+        loop_init_50 = false;
+        uint _e32 = j_12;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_11;
+            uint _e39 = j_12;
             vec2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
             float c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
             float _e48 = chosen;
@@ -7754,9 +7820,9 @@ float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_29, vec3 x_28
 float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta) {
     vec2 _e3 = airlight_cos_sin(theta);
     float along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
-    float t_14 = (a_30.x_h + along_1);
+    float t_15 = (a_30.x_h + along_1);
     float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
-    float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_15 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -7765,7 +7831,7 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
     uint step_2 = 0u;
     float k_10 = 0.0;
     float gauss_1 = 0.0;
-    uint j_12 = 0u;
+    uint j_13 = 0u;
     bool local_192 = false;
     AirlightArea _e1 = airlight_area(s_50);
     if ((_e1.outcome == 1u)) {
@@ -7776,13 +7842,13 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    bool loop_init_50 = true;
+    bool loop_init_51 = true;
     while(true) {
-        if (!loop_init_50) {
+        if (!loop_init_51) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_50 = false;
+        loop_init_51 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -7797,25 +7863,25 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
             float hw_9 = (0.5 * (_e34 - _e36));
             k_10 = 0.0;
             gauss_1 = 0.0;
-            j_12 = 0u;
-            bool loop_init_51 = true;
+            j_13 = 0u;
+            bool loop_init_52 = true;
             while(true) {
-                if (!loop_init_51) {
-                    uint _e82 = j_12;
-                    j_12 = (_e82 + 1u);
+                if (!loop_init_52) {
+                    uint _e82 = j_13;
+                    j_13 = (_e82 + 1u);
                 }
-                loop_init_51 = false;
-                uint _e46 = j_12;
+                loop_init_52 = false;
+                uint _e46 = j_13;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_12;
+                    uint _e49 = j_13;
                     vec3 node_4 = _e8[(_e49 / 2u)];
-                    uint _e59 = j_12;
+                    uint _e59 = j_13;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_12;
+                        uint _e66 = j_13;
                         local_192 = (_e66 < 14u);
                     } else {
                         local_192 = false;
@@ -7989,7 +8055,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
     uint step_3 = 0u;
     float k_11 = 0.0;
     float gauss_2 = 0.0;
-    uint j_13 = 0u;
+    uint j_14 = 0u;
     bool local_201 = false;
     float f = 0.0;
     bool local_202 = false;
@@ -8011,13 +8077,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    bool loop_init_52 = true;
+    bool loop_init_53 = true;
     while(true) {
-        if (!loop_init_52) {
+        if (!loop_init_53) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_52 = false;
+        loop_init_53 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -8032,25 +8098,25 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
             float hw_10 = (0.5 * (_e49 - _e51));
             k_11 = 0.0;
             gauss_2 = 0.0;
-            j_13 = 0u;
-            bool loop_init_53 = true;
+            j_14 = 0u;
+            bool loop_init_54 = true;
             while(true) {
-                if (!loop_init_53) {
-                    uint _e121 = j_13;
-                    j_13 = (_e121 + 1u);
+                if (!loop_init_54) {
+                    uint _e121 = j_14;
+                    j_14 = (_e121 + 1u);
                 }
-                loop_init_53 = false;
-                uint _e61 = j_13;
+                loop_init_54 = false;
+                uint _e61 = j_14;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_13;
+                    uint _e64 = j_14;
                     vec3 node_5 = _e25[(_e64 / 2u)];
-                    uint _e74 = j_13;
+                    uint _e74 = j_14;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_13;
+                        uint _e81 = j_14;
                         local_201 = (_e81 < 6u);
                     } else {
                         local_201 = false;

@@ -598,11 +598,11 @@ float2 airlight_cdiv(float2 a_1, float2 b_1)
 
 float airlight_cabs(float2 z)
 {
-    float m_4 = max(abs(z.x), abs(z.y));
-    if ((m_4 == 0.0)) {
+    float m_5 = max(abs(z.x), abs(z.y));
+    if ((m_5 == 0.0)) {
         return 0.0;
     }
-    return (m_4 * length((z / (m_4).xx)));
+    return (m_5 * length((z / (m_5).xx)));
 }
 
 float2 airlight_csqrt(float2 z_1)
@@ -620,11 +620,11 @@ float2 airlight_csqrt(float2 z_1)
     }
     const float _e14 = airlight_cabs(z_1);
     if ((z_1.x >= 0.0)) {
-        float t_4 = sqrt(((_e14 + z_1.x) * 0.5));
-        return float2(t_4, (z_1.y / (t_4 + t_4)));
+        float t_5 = sqrt(((_e14 + z_1.x) * 0.5));
+        return float2(t_5, (z_1.y / (t_5 + t_5)));
     }
-    float t_5 = sqrt(((_e14 - z_1.x) * 0.5));
-    return float2((abs(z_1.y) / (t_5 + t_5)), ((z_1.y >= 0.0) ? t_5 : -(t_5)));
+    float t_6 = sqrt(((_e14 - z_1.x) * 0.5));
+    return float2((abs(z_1.y) / (t_6 + t_6)), ((z_1.y >= 0.0) ? t_6 : -(t_6)));
 }
 
 float2 airlight_cos_sin(float x)
@@ -637,9 +637,9 @@ float2 airlight_cos_sin(float x)
 
 float2 airlight_cexp(float2 z_2)
 {
-    float m_5 = exp(z_2.x);
+    float m_6 = exp(z_2.x);
     const float2 _e4 = airlight_cos_sin(z_2.y);
-    return float2((m_5 * _e4.x), (m_5 * _e4.y));
+    return float2((m_6 * _e4.x), (m_6 * _e4.y));
 }
 
 float airlight_atan(float x_1)
@@ -944,9 +944,9 @@ float airlight_en_scaled_cf(float x_4, uint n)
 
     const uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
-    float m_6 = float(_e2);
-    float b_16 = ((x_4 + nf_1) + (2.0 * (m_6 + 1.0)));
-    float a_31 = ((m_6 + 2.0) * ((nf_1 + m_6) + 1.0));
+    float m_7 = float(_e2);
+    float b_16 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
+    float a_31 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
     float disc = (1.0 - ((4.0 * a_31) / (b_16 * b_16)));
     t_2 = b_16;
     if ((disc > 0.0)) {
@@ -2800,26 +2800,26 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e53[12] = samples_2;
     const float _e54[12] = airlight_legendre(_e53);
     float alpha = (b_6 / r_10);
-    float beta = (-(yc_2) / r_10);
+    float beta_1 = (-(yc_2) / r_10);
     const float _e58[12] = airlight_legendre_to_monomial(_e54);
     const float _e59[12] = airlight_zero_terms();
     q = _e59;
     q = airlight_Constructarray12_float_(_e58[11], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e75 = q[0];
     float _e80 = q[0];
-    q = airlight_Constructarray12_float_(((_e75 * beta) + _e58[10]), (_e80 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e75 * beta_1) + _e58[10]), (_e80 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e94 = q[0];
     float _e99 = q[0];
     float _e102 = q[1];
     float _e106 = q[1];
-    q = airlight_Constructarray12_float_(((_e94 * beta) + _e58[9]), ((_e99 * alpha) + (_e102 * beta)), (_e106 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e94 * beta_1) + _e58[9]), ((_e99 * alpha) + (_e102 * beta_1)), (_e106 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e119 = q[0];
     float _e124 = q[0];
     float _e127 = q[1];
     float _e131 = q[1];
     float _e134 = q[2];
     float _e138 = q[2];
-    q = airlight_Constructarray12_float_(((_e119 * beta) + _e58[8]), ((_e124 * alpha) + (_e127 * beta)), ((_e131 * alpha) + (_e134 * beta)), (_e138 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e119 * beta_1) + _e58[8]), ((_e124 * alpha) + (_e127 * beta_1)), ((_e131 * alpha) + (_e134 * beta_1)), (_e138 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e150 = q[0];
     float _e155 = q[0];
     float _e158 = q[1];
@@ -2828,7 +2828,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e169 = q[2];
     float _e172 = q[3];
     float _e176 = q[3];
-    q = airlight_Constructarray12_float_(((_e150 * beta) + _e58[7]), ((_e155 * alpha) + (_e158 * beta)), ((_e162 * alpha) + (_e165 * beta)), ((_e169 * alpha) + (_e172 * beta)), (_e176 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e150 * beta_1) + _e58[7]), ((_e155 * alpha) + (_e158 * beta_1)), ((_e162 * alpha) + (_e165 * beta_1)), ((_e169 * alpha) + (_e172 * beta_1)), (_e176 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e187 = q[0];
     float _e192 = q[0];
     float _e195 = q[1];
@@ -2839,7 +2839,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e213 = q[3];
     float _e216 = q[4];
     float _e220 = q[4];
-    q = airlight_Constructarray12_float_(((_e187 * beta) + _e58[6]), ((_e192 * alpha) + (_e195 * beta)), ((_e199 * alpha) + (_e202 * beta)), ((_e206 * alpha) + (_e209 * beta)), ((_e213 * alpha) + (_e216 * beta)), (_e220 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e187 * beta_1) + _e58[6]), ((_e192 * alpha) + (_e195 * beta_1)), ((_e199 * alpha) + (_e202 * beta_1)), ((_e206 * alpha) + (_e209 * beta_1)), ((_e213 * alpha) + (_e216 * beta_1)), (_e220 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e230 = q[0];
     float _e235 = q[0];
     float _e238 = q[1];
@@ -2852,7 +2852,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e263 = q[4];
     float _e266 = q[5];
     float _e270 = q[5];
-    q = airlight_Constructarray12_float_(((_e230 * beta) + _e58[5]), ((_e235 * alpha) + (_e238 * beta)), ((_e242 * alpha) + (_e245 * beta)), ((_e249 * alpha) + (_e252 * beta)), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), (_e270 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e230 * beta_1) + _e58[5]), ((_e235 * alpha) + (_e238 * beta_1)), ((_e242 * alpha) + (_e245 * beta_1)), ((_e249 * alpha) + (_e252 * beta_1)), ((_e256 * alpha) + (_e259 * beta_1)), ((_e263 * alpha) + (_e266 * beta_1)), (_e270 * alpha), 0.0, 0.0, 0.0, 0.0, 0.0);
     float _e279 = q[0];
     float _e284 = q[0];
     float _e287 = q[1];
@@ -2867,7 +2867,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e319 = q[5];
     float _e322 = q[6];
     float _e326 = q[6];
-    q = airlight_Constructarray12_float_(((_e279 * beta) + _e58[4]), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), ((_e298 * alpha) + (_e301 * beta)), ((_e305 * alpha) + (_e308 * beta)), ((_e312 * alpha) + (_e315 * beta)), ((_e319 * alpha) + (_e322 * beta)), (_e326 * alpha), 0.0, 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e279 * beta_1) + _e58[4]), ((_e284 * alpha) + (_e287 * beta_1)), ((_e291 * alpha) + (_e294 * beta_1)), ((_e298 * alpha) + (_e301 * beta_1)), ((_e305 * alpha) + (_e308 * beta_1)), ((_e312 * alpha) + (_e315 * beta_1)), ((_e319 * alpha) + (_e322 * beta_1)), (_e326 * alpha), 0.0, 0.0, 0.0, 0.0);
     float _e334 = q[0];
     float _e339 = q[0];
     float _e342 = q[1];
@@ -2884,7 +2884,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e381 = q[6];
     float _e384 = q[7];
     float _e388 = q[7];
-    q = airlight_Constructarray12_float_(((_e334 * beta) + _e58[3]), ((_e339 * alpha) + (_e342 * beta)), ((_e346 * alpha) + (_e349 * beta)), ((_e353 * alpha) + (_e356 * beta)), ((_e360 * alpha) + (_e363 * beta)), ((_e367 * alpha) + (_e370 * beta)), ((_e374 * alpha) + (_e377 * beta)), ((_e381 * alpha) + (_e384 * beta)), (_e388 * alpha), 0.0, 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e334 * beta_1) + _e58[3]), ((_e339 * alpha) + (_e342 * beta_1)), ((_e346 * alpha) + (_e349 * beta_1)), ((_e353 * alpha) + (_e356 * beta_1)), ((_e360 * alpha) + (_e363 * beta_1)), ((_e367 * alpha) + (_e370 * beta_1)), ((_e374 * alpha) + (_e377 * beta_1)), ((_e381 * alpha) + (_e384 * beta_1)), (_e388 * alpha), 0.0, 0.0, 0.0);
     float _e395 = q[0];
     float _e400 = q[0];
     float _e403 = q[1];
@@ -2903,7 +2903,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e449 = q[7];
     float _e452 = q[8];
     float _e456 = q[8];
-    q = airlight_Constructarray12_float_(((_e395 * beta) + _e58[2]), ((_e400 * alpha) + (_e403 * beta)), ((_e407 * alpha) + (_e410 * beta)), ((_e414 * alpha) + (_e417 * beta)), ((_e421 * alpha) + (_e424 * beta)), ((_e428 * alpha) + (_e431 * beta)), ((_e435 * alpha) + (_e438 * beta)), ((_e442 * alpha) + (_e445 * beta)), ((_e449 * alpha) + (_e452 * beta)), (_e456 * alpha), 0.0, 0.0);
+    q = airlight_Constructarray12_float_(((_e395 * beta_1) + _e58[2]), ((_e400 * alpha) + (_e403 * beta_1)), ((_e407 * alpha) + (_e410 * beta_1)), ((_e414 * alpha) + (_e417 * beta_1)), ((_e421 * alpha) + (_e424 * beta_1)), ((_e428 * alpha) + (_e431 * beta_1)), ((_e435 * alpha) + (_e438 * beta_1)), ((_e442 * alpha) + (_e445 * beta_1)), ((_e449 * alpha) + (_e452 * beta_1)), (_e456 * alpha), 0.0, 0.0);
     float _e462 = q[0];
     float _e467 = q[0];
     float _e470 = q[1];
@@ -2924,7 +2924,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e523 = q[8];
     float _e526 = q[9];
     float _e530 = q[9];
-    q = airlight_Constructarray12_float_(((_e462 * beta) + _e58[1]), ((_e467 * alpha) + (_e470 * beta)), ((_e474 * alpha) + (_e477 * beta)), ((_e481 * alpha) + (_e484 * beta)), ((_e488 * alpha) + (_e491 * beta)), ((_e495 * alpha) + (_e498 * beta)), ((_e502 * alpha) + (_e505 * beta)), ((_e509 * alpha) + (_e512 * beta)), ((_e516 * alpha) + (_e519 * beta)), ((_e523 * alpha) + (_e526 * beta)), (_e530 * alpha), 0.0);
+    q = airlight_Constructarray12_float_(((_e462 * beta_1) + _e58[1]), ((_e467 * alpha) + (_e470 * beta_1)), ((_e474 * alpha) + (_e477 * beta_1)), ((_e481 * alpha) + (_e484 * beta_1)), ((_e488 * alpha) + (_e491 * beta_1)), ((_e495 * alpha) + (_e498 * beta_1)), ((_e502 * alpha) + (_e505 * beta_1)), ((_e509 * alpha) + (_e512 * beta_1)), ((_e516 * alpha) + (_e519 * beta_1)), ((_e523 * alpha) + (_e526 * beta_1)), (_e530 * alpha), 0.0);
     float _e535 = q[0];
     float _e540 = q[0];
     float _e543 = q[1];
@@ -2947,7 +2947,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e603 = q[9];
     float _e606 = q[10];
     float _e610 = q[10];
-    q = airlight_Constructarray12_float_(((_e535 * beta) + _e58[0]), ((_e540 * alpha) + (_e543 * beta)), ((_e547 * alpha) + (_e550 * beta)), ((_e554 * alpha) + (_e557 * beta)), ((_e561 * alpha) + (_e564 * beta)), ((_e568 * alpha) + (_e571 * beta)), ((_e575 * alpha) + (_e578 * beta)), ((_e582 * alpha) + (_e585 * beta)), ((_e589 * alpha) + (_e592 * beta)), ((_e596 * alpha) + (_e599 * beta)), ((_e603 * alpha) + (_e606 * beta)), (_e610 * alpha));
+    q = airlight_Constructarray12_float_(((_e535 * beta_1) + _e58[0]), ((_e540 * alpha) + (_e543 * beta_1)), ((_e547 * alpha) + (_e550 * beta_1)), ((_e554 * alpha) + (_e557 * beta_1)), ((_e561 * alpha) + (_e564 * beta_1)), ((_e568 * alpha) + (_e571 * beta_1)), ((_e575 * alpha) + (_e578 * beta_1)), ((_e582 * alpha) + (_e585 * beta_1)), ((_e589 * alpha) + (_e592 * beta_1)), ((_e596 * alpha) + (_e599 * beta_1)), ((_e603 * alpha) + (_e606 * beta_1)), (_e610 * alpha));
     float big_h_6 = half_8.big_h;
     const float _e615[14] = airlight_en_scaled((big_h_6 / b_6));
     if ((a_7 > 0.0)) {
@@ -3094,7 +3094,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     const float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_35 = (abs(alpha) + abs(beta));
+    float x_35 = (abs(alpha) + abs(beta_1));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
@@ -3267,8 +3267,8 @@ float airlight_graded_split(float a_9, float b_8, float3 heights_3)
 {
     bool local_20 = (bool)0;
 
-    float t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    float d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
+    float t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    float d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
     if ((d_2 > 0.0)) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25));
     } else {
@@ -4117,13 +4117,13 @@ float airlight_half(AirlightScene s_12, AirlightCanonical g_16, float sigma_12, 
                         float _e94 = cuts[min(uint((_e90 + 1u)), 3u)];
                         if ((_e89 > _e94)) {
                             uint _e96 = j_2;
-                            float t_7 = cuts[min(uint(_e96), 3u)];
+                            float t_8 = cuts[min(uint(_e96), 3u)];
                             uint _e99 = j_2;
                             uint _e101 = j_2;
                             float _e105 = cuts[min(uint((_e101 + 1u)), 3u)];
                             cuts[min(uint(_e99), 3u)] = _e105;
                             uint _e106 = j_2;
-                            cuts[min(uint((_e106 + 1u)), 3u)] = t_7;
+                            cuts[min(uint((_e106 + 1u)), 3u)] = t_8;
                         }
                     }
                 }
@@ -4782,11 +4782,11 @@ bool airlight_vec_finite(float3 v)
 
 float airlight_safe_length(float3 v_1)
 {
-    float m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if ((m_7 == 0.0)) {
+    float m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if ((m_8 == 0.0)) {
         return 0.0;
     }
-    return (m_7 * length((v_1 / (m_7).xxx)));
+    return (m_8 * length((v_1 / (m_8).xxx)));
 }
 
 bool airlight_normalisable(float3 v_2)
@@ -4806,8 +4806,8 @@ bool airlight_normalisable(float3 v_2)
 
 float3 airlight_normalize(float3 v_3)
 {
-    float m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    float3 u_7 = (v_3 / (m_8).xxx);
+    float m_9 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    float3 u_7 = (v_3 / (m_9).xxx);
     return (u_7 / (length(u_7)).xxx);
 }
 
@@ -5373,10 +5373,10 @@ bool airlight_in_exact_range(float3 v_4)
     bool local_126 = (bool)0;
     bool local_127 = (bool)0;
 
-    float m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
-    if (!((m_9 == 0.0))) {
-        if ((m_9 >= 9.313226e-10)) {
-            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+    float m_10 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if (!((m_10 == 0.0))) {
+        if ((m_10 >= 9.313226e-10)) {
+            local_127 = (m_10 <= AIRLIGHT_EXACT_RANGE);
         } else {
             local_127 = false;
         }
@@ -6961,16 +6961,16 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_39 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_8 = (x_21 - float(i_39));
-        float a_42 = g_25.gamma[min(uint(i_39), 12u)];
-        float b_20 = g_25.gamma[min(uint((i_39 + 1u)), 12u)];
+        uint i_40 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_40));
+        float a_42 = g_25.gamma[min(uint(i_40), 12u)];
+        float b_20 = g_25.gamma[min(uint((i_40 + 1u)), 12u)];
         float w_8 = (b_20 - a_42);
-        float u_8 = (1.0 - t_8);
-        bool smooth_a = (((g_25.smooth_edges >> i_39) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3.0 - t_8) - t_8)));
-        jacobian = (((w_8 * 6.0) * t_8) * u_8);
+        float u_8 = (1.0 - t_9);
+        bool smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        jacobian = (((w_8 * 6.0) * t_9) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -6978,7 +6978,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_8) * t_8)) : _e58);
+        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6986,7 +6986,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_164 = false;
         }
         bool _e75 = local_164;
-        jacobian = (_e75 ? (w_8 * (t_8 + t_8)) : _e68);
+        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
         float _e77 = gamma_1;
         if (smooth_a) {
             local_165 = !(smooth_b);
@@ -7010,7 +7010,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_42 + (w_8 * t_8)) : _e96);
+        gamma_1 = (_e102 ? (a_42 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -7108,8 +7108,8 @@ airlight_ret_Constructarray12_float2_ airlight_Constructarray12_float2_(float2 a
 
 float2 airlight_triangle_rule(uint i_26)
 {
-    float2 rule_2[12] = airlight_Constructarray12_float2_(float2(-0.12523341, 0.24914704), float2(0.12523341, 0.24914704), float2(-0.3678315, 0.23349254), float2(0.3678315, 0.23349254), float2(-0.58731794, 0.20316742), float2(0.58731794, 0.20316742), float2(-0.76990265, 0.16007833), float2(0.76990265, 0.16007833), float2(-0.9041172, 0.10693932), float2(0.9041172, 0.10693932), float2(-0.98156065, 0.047175337), float2(0.98156065, 0.047175337));
-    return rule_2[min(uint(i_26), 11u)];
+    float2 rule_3[12] = airlight_Constructarray12_float2_(float2(-0.12523341, 0.24914704), float2(0.12523341, 0.24914704), float2(-0.3678315, 0.23349254), float2(0.3678315, 0.23349254), float2(-0.58731794, 0.20316742), float2(0.58731794, 0.20316742), float2(-0.76990265, 0.16007833), float2(0.76990265, 0.16007833), float2(-0.9041172, 0.10693932), float2(0.9041172, 0.10693932), float2(-0.98156065, 0.047175337), float2(0.98156065, 0.047175337));
+    return rule_3[min(uint(i_26), 11u)];
 }
 
 float airlight_area_phase(AirlightScene s_28, float mu_2)
@@ -7351,9 +7351,9 @@ float3 airlight_basis_e1_(float3 n_2)
     float3 u_3 = float3(0.0, 0.0, 1.0);
     bool local_171 = (bool)0;
 
-    float3 m_10 = abs(n_2);
-    if ((m_10.x <= m_10.y)) {
-        local_171 = (m_10.x <= m_10.z);
+    float3 m_11 = abs(n_2);
+    if ((m_11.x <= m_11.y)) {
+        local_171 = (m_11.x <= m_11.z);
     } else {
         local_171 = false;
     }
@@ -7361,7 +7361,7 @@ float3 airlight_basis_e1_(float3 n_2)
     if (_e16) {
         u_3 = float3(1.0, 0.0, 0.0);
     } else {
-        if ((m_10.y <= m_10.z)) {
+        if ((m_11.y <= m_11.z)) {
             u_3 = float3(0.0, 1.0, 0.0);
         }
     }
@@ -7563,12 +7563,12 @@ AirlightArea airlight_area(AirlightScene s_35)
         }
         {
             uint _e245 = i_27;
-            float t_9 = cuts_4[min(uint(_e245), 2u)];
+            float t_10 = cuts_4[min(uint(_e245), 2u)];
             uint _e248 = i_27;
             cuts_4[min(uint(_e248), 2u)] = _e217;
-            const bool _e250 = airlight_is_finite(t_9);
+            const bool _e250 = airlight_is_finite(t_10);
             if (_e250) {
-                local_174 = (t_9 >= t0_2);
+                local_174 = (t_10 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -7577,7 +7577,7 @@ AirlightArea airlight_area(AirlightScene s_35)
                 bool _e258 = end_infinite;
                 if (!(_e258)) {
                     float _e262 = t_end_1;
-                    local_176 = (t_9 <= _e262);
+                    local_176 = (t_10 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -7590,7 +7590,7 @@ AirlightArea airlight_area(AirlightScene s_35)
             if (_e267) {
                 uint _e268 = i_27;
                 AirlightArea _e270 = a_18;
-                const float _e272 = airlight_area_theta(_e270, t_9, false);
+                const float _e272 = airlight_area_theta(_e270, t_10, false);
                 cuts_4[min(uint(_e268), 2u)] = _e272;
             }
         }
@@ -7737,8 +7737,8 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_10 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
-            float2 p_5 = (a_44 + (t_10 * e_15));
+            float t_11 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
+            float2 p_5 = (a_44 + (t_11 * e_15));
             float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
@@ -7833,11 +7833,33 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
     return airlightflatlobe_1;
 }
 
+typedef float2 airlight_ret_Constructarray16_float2_[16];
+airlight_ret_Constructarray16_float2_ airlight_Constructarray16_float2_(float2 arg0, float2 arg1, float2 arg2, float2 arg3, float2 arg4, float2 arg5, float2 arg6, float2 arg7, float2 arg8, float2 arg9, float2 arg10, float2 arg11, float2 arg12, float2 arg13, float2 arg14, float2 arg15) {
+    float2 ret[16] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15 };
+    return ret;
+}
+
+float2 airlight_radial_rule(uint i_29)
+{
+    float2 rule_4[16] = airlight_Constructarray16_float2_(float2(-0.09501251, 0.1894506), float2(0.09501251, 0.1894506), float2(-0.28160354, 0.18260342), float2(0.28160354, 0.18260342), float2(-0.45801678, 0.16915652), float2(0.45801678, 0.16915652), float2(-0.61787623, 0.14959599), float2(0.61787623, 0.14959599), float2(-0.7554044, 0.12462897), float2(0.7554044, 0.12462897), float2(-0.8656312, 0.09515851), float2(0.8656312, 0.09515851), float2(-0.944575, 0.062253524), float2(0.944575, 0.062253524), float2(-0.9894009, 0.02715246), float2(0.9894009, 0.02715246));
+    return rule_4[min(uint(i_29), 15u)];
+}
+
+float4 airlight_edge_at(AirlightEdgeRule rule_1, float beta)
+{
+    const float2 _e4 = airlight_cos_sin_half_turn((beta + 1.5707964));
+    float sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
+    float r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
+    float r_14 = sqrt(r2_3);
+    float2 m_12 = float2(rule_1.t.y, -(rule_1.t.x));
+    return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_14).xx), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+}
+
 float2 airlight_clip(float2 chord, float2 a_22, float2 b_13, float2 q_6, float2 e_5)
 {
-    float2 m_11 = float2((b_13.y - a_22.y), (a_22.x - b_13.x));
-    float num = (((q_6.x - a_22.x) * m_11.x) + ((q_6.y - a_22.y) * m_11.y));
-    float den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
+    float2 m_13 = float2((b_13.y - a_22.y), (a_22.x - b_13.x));
+    float num = (((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y));
+    float den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if ((den > 0.0)) {
         return float2(chord.x, min(chord.y, (-(num) / den)));
     }
@@ -7865,14 +7887,14 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
-        float t_11 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_11 / a_45);
-        float r2_3 = (k_13 / t_11);
-        float hi_8 = max(r1_2, r2_3);
+        float t_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_12 / a_45);
+        float r2_4 = (k_13 / t_12);
+        float hi_8 = max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
             return (0.0).xx;
         }
-        return float2(max(min(r1_2, r2_3), 0.0), hi_8);
+        return float2(max(min(r1_2, r2_4), 0.0), hi_8);
     }
     float2 _e70 = chord_1;
     const float2 _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
@@ -8015,25 +8037,21 @@ AirlightEdgeRule airlight_edge_rule(float2 a_23, float2 b_14, float width_1)
 {
     float2 e_16 = (b_14 - a_23);
     float el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
-    float2 t_12 = (e_16 / (el).xx);
+    float2 t_13 = (e_16 / (el).xx);
     float h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
     float reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    const float _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
-    const float _e29 = airlight_atan2_(dot(b_14, t_12), reach_2);
-    const AirlightEdgeRule airlightedgerule = ConstructAirlightEdgeRule(h_9, t_12, reach_2, _e27, _e29);
+    const float _e27 = airlight_atan2_(dot(a_23, t_13), reach_2);
+    const float _e29 = airlight_atan2_(dot(b_14, t_13), reach_2);
+    const AirlightEdgeRule airlightedgerule = ConstructAirlightEdgeRule(h_9, t_13, reach_2, _e27, _e29);
     return airlightedgerule;
 }
 
-float4 airlight_edge_node(AirlightEdgeRule rule_1, uint j_6)
+float4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_6)
 {
     const float2 _e2 = airlight_triangle_rule(j_6);
-    float hw_4 = (0.5 * (rule_1.last - rule_1.first));
-    const float2 _e18 = airlight_cos_sin_half_turn((((0.5 * (rule_1.first + rule_1.last)) + (hw_4 * _e2.x)) + 1.5707964));
-    float sigma_13 = ((rule_1.reach * -(_e18.x)) / _e18.y);
-    float r2_4 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    float r_14 = sqrt(r2_4);
-    float2 m_12 = float2(rule_1.t.y, -(rule_1.t.x));
-    return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_14).xx), r_14, ((((_e2.y * hw_4) * rule_1.h) * rule_1.reach) / ((_e18.y * _e18.y) * r2_4)));
+    float hw_4 = (0.5 * (rule_2.last - rule_2.first));
+    const float4 _e16 = airlight_edge_at(rule_2, ((0.5 * (rule_2.first + rule_2.last)) + (hw_4 * _e2.x)));
+    return float4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
 float4 airlight_sort4_(float4 x_24)
@@ -8047,7 +8065,7 @@ float2 airlight_entry_normal(float2 y_6[4], float2 e_8)
 {
     float nearest_1 = AIRLIGHT_FLT_MAX;
     float2 normal_3 = (0.0).xx;
-    uint i_29 = 0u;
+    uint i_30 = 0u;
     bool local_181 = (bool)0;
     bool local_182 = (bool)0;
     bool local_183 = (bool)0;
@@ -8058,19 +8076,19 @@ float2 airlight_entry_normal(float2 y_6[4], float2 e_8)
         if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
         if (!loop_init_34) {
-            uint _e80 = i_29;
-            i_29 = (_e80 + 1u);
+            uint _e80 = i_30;
+            i_30 = (_e80 + 1u);
         }
         loop_init_34 = false;
-        uint _e9 = i_29;
+        uint _e9 = i_30;
         if ((_e9 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e12 = i_29;
+            uint _e12 = i_30;
             float2 a_47 = y_6[min(uint(_e12), 3u)];
-            uint _e14 = i_29;
+            uint _e14 = i_30;
             float2 d_5 = (y_6[min(uint(airlight_naga_mod((_e14 + 1u), 4u)), 3u)] - a_47);
             float den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if ((den_1 == 0.0)) {
@@ -8125,311 +8143,370 @@ float airlight_mercator(float2 n_3, float2 cs_2)
 float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3)
 {
     float sum_9 = 0.0;
-    uint i_30 = 0u;
+    float2 m_4 = float2(1.0, 0.0);
+    float2 t_4 = (float2)0;
+    uint j_7 = 0u;
     uint i_31 = 0u;
-    float4 area = (0.0).xxxx;
     uint i_32 = 0u;
+    float4 area = (0.0).xxxx;
     uint i_33 = 0u;
+    uint i_34 = 0u;
     float2 ya = (float2)0;
     float2 yb = (float2)0;
-    uint j_7 = (uint)0;
-    uint i_34 = 0u;
     uint j_8 = (uint)0;
-    uint k_9 = (uint)0;
+    uint i_35 = 0u;
     uint j_9 = (uint)0;
+    uint k_9 = (uint)0;
+    uint j_10 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_3.p);
     float3 v_9 = cross(lobe_3.p, _e5);
     float2 q_14 = lobe_3.q;
     if ((o_5.radius > 0.0)) {
         if (lobe_3.on_emitter) {
+            float2 dq_2 = (q_14 - o_5.corners[0]);
+            float d_6 = sqrt(dot(dq_2, dq_2));
+            if ((d_6 > 0.0)) {
+                m_4 = (dq_2 / (d_6).xx);
+            }
+            float2 _e31 = m_4;
+            float2 rim_e = ((o_5.corners[0] + (o_5.radius * _e31)) - q_14);
+            float2 rim = float2(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
+            float _e41 = m_4.y;
+            float _e46 = m_4.x;
+            float _e51 = m_4.y;
+            float _e56 = m_4.x;
+            float2 along_rim = float2(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
+            float tl = sqrt(dot(along_rim, along_rim));
+            t_4 = (along_rim / (tl).xx);
+            float _e67 = t_4.y;
+            float _e71 = t_4.x;
+            if ((((_e67 * rim.x) - (_e71 * rim.y)) < 0.0)) {
+                float2 _e77 = t_4;
+                t_4 = -(_e77);
+            }
+            float _e80 = t_4.y;
+            float _e84 = t_4.x;
+            float h_10 = ((_e80 * rim.x) - (_e84 * rim.y));
+            float half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0.0)));
+            float width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
+            float2 _e101 = t_4;
+            AirlightEdgeRule rule_5 = ConstructAirlightEdgeRule(h_10, _e101, sqrt(((h_10 * h_10) + (width_5 * width_5))), -1.5707964, 1.5707964);
             uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
             bool loop_init_35 = true;
             while(true) {
                 if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
                 loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
                 if (!loop_init_35) {
-                    uint _e30 = i_30;
-                    i_30 = (_e30 + 1u);
+                    uint _e133 = j_7;
+                    j_7 = (_e133 + 1u);
                 }
                 loop_init_35 = false;
-                uint _e17 = i_30;
-                if ((_e17 < 32u)) {
+                uint _e111 = j_7;
+                if ((_e111 < 16u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e21 = i_30;
-                    const float3 _e22 = airlight_azimuths(true, _e21);
-                    float _e23 = sum_9;
-                    const float _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
-                    sum_9 = (_e23 + (_e22.z * _e26));
+                    uint _e114 = j_7;
+                    const float2 _e115 = airlight_radial_rule(_e114);
+                    const float4 _e119 = airlight_edge_at(rule_5, (1.5707964 * _e115.x));
+                    float _e120 = sum_9;
+                    const float _e129 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e119.xy);
+                    sum_9 = (_e120 + ((((_e115.y * 0.5) * AIRLIGHT_PI) * _e119.w) * _e129));
                 }
             }
-            float _e32 = sum_9;
-            return _e32;
+            float _e136 = t_4.y;
+            float _e138 = t_4.x;
+            float2 n_8 = float2(_e136, -(_e138));
+            uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+            bool loop_init_36 = true;
+            while(true) {
+                if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                if (!loop_init_36) {
+                    uint _e162 = i_31;
+                    i_31 = (_e162 + 1u);
+                }
+                loop_init_36 = false;
+                uint _e143 = i_31;
+                if ((_e143 < 32u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e147 = i_31;
+                    const float3 _e148 = airlight_azimuths(false, _e147);
+                    float _e149 = sum_9;
+                    float2 _e153 = t_4;
+                    const float _e158 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e148.x) + (_e153 * _e148.y))));
+                    sum_9 = (_e149 + (_e148.z * _e158));
+                }
+            }
+            float _e164 = sum_9;
+            return _e164;
         }
-        float2 d_6 = (o_5.corners[0] - q_14);
-        float dq_2 = sqrt(((d_6.x * d_6.x) + (d_6.y * d_6.y)));
-        float sb_1 = (o_5.radius / dq_2);
-        float cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        const float _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
-        const float _e65 = airlight_lobe_azimuth(_e5, v_9, float2(((d_6.x * cb) - (d_6.y * sb_1)), ((d_6.y * cb) + (d_6.x * sb_1))));
-        const float _e67 = airlight_wrap_turn((_e65 - _e53));
-        const float _e79 = airlight_lobe_azimuth(_e5, v_9, float2(((d_6.x * cb) + (d_6.y * sb_1)), ((d_6.y * cb) - (d_6.x * sb_1))));
-        const float _e81 = airlight_wrap_turn((_e79 - _e53));
-        float centre_2 = (_e53 + ((_e67 + _e81) * 0.5));
-        float half_19 = (abs((_e67 - _e81)) * 0.5);
-        uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-        bool loop_init_36 = true;
-        while(true) {
-            if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-            loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-            if (!loop_init_36) {
-                uint _e111 = i_31;
-                i_31 = (_e111 + 1u);
-            }
-            loop_init_36 = false;
-            uint _e92 = i_31;
-            if ((_e92 < 32u)) {
-            } else {
-                break;
-            }
-            {
-                uint _e96 = i_31;
-                const float3 _e97 = airlight_azimuths(false, _e96);
-                float _e98 = sum_9;
-                const float2 _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                const float _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
-                sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
-            }
-        }
-        float _e113 = sum_9;
-        return _e113;
-    }
-    float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), float2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), float2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), float2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
-    if (lobe_3.on_emitter) {
+        float2 d_7 = (o_5.corners[0] - q_14);
+        float dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
+        float sb_1 = (o_5.radius / dq_3);
+        float cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
+        const float _e185 = airlight_lobe_azimuth(_e5, v_9, d_7);
+        const float _e197 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        const float _e199 = airlight_wrap_turn((_e197 - _e185));
+        const float _e211 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        const float _e213 = airlight_wrap_turn((_e211 - _e185));
+        float centre_2 = (_e185 + ((_e199 + _e213) * 0.5));
+        float half_19 = (abs((_e199 - _e213)) * 0.5);
         uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
         bool loop_init_37 = true;
         while(true) {
             if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
             loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
             if (!loop_init_37) {
-                uint _e188 = i_32;
-                i_32 = (_e188 + 1u);
+                uint _e243 = i_32;
+                i_32 = (_e243 + 1u);
             }
             loop_init_37 = false;
-            uint _e165 = i_32;
-            if ((_e165 < 4u)) {
+            uint _e224 = i_32;
+            if ((_e224 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e168 = i_32;
-                float2 b_24 = y_14[min(uint(airlight_naga_mod((_e168 + 1u), 4u)), 3u)];
-                uint _e174 = i_32;
-                uint _e176 = i_32;
-                uint _e181 = i_32;
-                area[min(uint(_e174), 3u)] = ((y_14[min(uint(_e176), 3u)].x * b_24.y) - (y_14[min(uint(_e181), 3u)].y * b_24.x));
+                uint _e228 = i_32;
+                const float3 _e229 = airlight_azimuths(false, _e228);
+                float _e230 = sum_9;
+                const float2 _e238 = airlight_cos_sin_turns((centre_2 + (half_19 * _e229.y)));
+                const float _e239 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e238);
+                sum_9 = (_e230 + (((_e229.z * half_19) * _e229.x) * _e239));
             }
         }
-        float _e191 = area.x;
-        float _e193 = area.y;
-        float _e196 = area.z;
-        float _e199 = area.w;
-        float turn = (((_e191 + _e193) + _e196) + _e199);
+        float _e245 = sum_9;
+        return _e245;
+    }
+    float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), float2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), float2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), float2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
+    if (lobe_3.on_emitter) {
         uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
         bool loop_init_38 = true;
         while(true) {
             if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
             loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
             if (!loop_init_38) {
-                uint _e256 = i_33;
-                i_33 = (_e256 + 1u);
+                uint _e320 = i_33;
+                i_33 = (_e320 + 1u);
             }
             loop_init_38 = false;
-            uint _e203 = i_33;
-            if ((_e203 < 4u)) {
+            uint _e297 = i_33;
+            if ((_e297 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e206 = i_33;
-                float _e208 = area[min(uint(_e206), 3u)];
-                if (!(((_e208 * turn) > 0.0))) {
+                uint _e300 = i_33;
+                float2 b_24 = y_14[min(uint(airlight_naga_mod((_e300 + 1u), 4u)), 3u)];
+                uint _e306 = i_33;
+                uint _e308 = i_33;
+                uint _e313 = i_33;
+                area[min(uint(_e306), 3u)] = ((y_14[min(uint(_e308), 3u)].x * b_24.y) - (y_14[min(uint(_e313), 3u)].y * b_24.x));
+            }
+        }
+        float _e323 = area.x;
+        float _e325 = area.y;
+        float _e328 = area.z;
+        float _e331 = area.w;
+        float turn = (((_e323 + _e325) + _e328) + _e331);
+        uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+        bool loop_init_39 = true;
+        while(true) {
+            if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+            loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+            if (!loop_init_39) {
+                uint _e388 = i_34;
+                i_34 = (_e388 + 1u);
+            }
+            loop_init_39 = false;
+            uint _e335 = i_34;
+            if ((_e335 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e338 = i_34;
+                float _e340 = area[min(uint(_e338), 3u)];
+                if (!(((_e340 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e213 = i_33;
-                ya = y_14[min(uint(_e213), 3u)];
-                uint _e216 = i_33;
-                yb = y_14[min(uint(airlight_naga_mod((_e216 + 1u), 4u)), 3u)];
+                uint _e345 = i_34;
+                ya = y_14[min(uint(_e345), 3u)];
+                uint _e348 = i_34;
+                yb = y_14[min(uint(airlight_naga_mod((_e348 + 1u), 4u)), 3u)];
                 if ((turn < 0.0)) {
-                    uint _e225 = i_33;
-                    ya = y_14[min(uint(airlight_naga_mod((_e225 + 1u), 4u)), 3u)];
-                    uint _e231 = i_33;
-                    yb = y_14[min(uint(_e231), 3u)];
+                    uint _e357 = i_34;
+                    ya = y_14[min(uint(airlight_naga_mod((_e357 + 1u), 4u)), 3u)];
+                    uint _e363 = i_34;
+                    yb = y_14[min(uint(_e363), 3u)];
                 }
-                float2 _e233 = ya;
-                float2 _e234 = yb;
-                const AirlightEdgeRule _e238 = airlight_edge_rule(_e233, _e234, (lobe_3.l * lobe_3.scale));
-                j_7 = 0u;
-                uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-                bool loop_init_39 = true;
+                float2 _e365 = ya;
+                float2 _e366 = yb;
+                const AirlightEdgeRule _e370 = airlight_edge_rule(_e365, _e366, (lobe_3.l * lobe_3.scale));
+                j_8 = 0u;
+                uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+                bool loop_init_40 = true;
                 while(true) {
-                    if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-                    loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                    if (!loop_init_39) {
-                        uint _e253 = j_7;
-                        j_7 = (_e253 + 1u);
+                    if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+                    loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                    if (!loop_init_40) {
+                        uint _e385 = j_8;
+                        j_8 = (_e385 + 1u);
                     }
-                    loop_init_39 = false;
-                    uint _e241 = j_7;
-                    if ((_e241 < 12u)) {
+                    loop_init_40 = false;
+                    uint _e373 = j_8;
+                    if ((_e373 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e244 = j_7;
-                        const float4 _e245 = airlight_edge_node(_e238, _e244);
-                        float _e246 = sum_9;
-                        const float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
-                        sum_9 = (_e246 + (_e245.w * _e249));
+                        uint _e376 = j_8;
+                        const float4 _e377 = airlight_edge_node(_e370, _e376);
+                        float _e378 = sum_9;
+                        const float _e381 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e377.xy);
+                        sum_9 = (_e378 + (_e377.w * _e381));
                     }
                 }
             }
         }
-        float _e258 = sum_9;
-        return _e258;
+        float _e390 = sum_9;
+        return _e390;
     }
-    const float _e267 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    const float _e271 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    const float _e273 = airlight_wrap_turn((_e271 - _e267));
-    const float _e277 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    const float _e279 = airlight_wrap_turn((_e277 - _e267));
-    const float _e283 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    const float _e285 = airlight_wrap_turn((_e283 - _e267));
-    const float _e289 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    const float _e291 = airlight_wrap_turn((_e289 - _e267));
-    const float4 _e293 = airlight_sort4_(float4(_e273, _e279, _e285, _e291));
-    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-    bool loop_init_40 = true;
+    const float _e399 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    const float _e403 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    const float _e405 = airlight_wrap_turn((_e403 - _e399));
+    const float _e409 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    const float _e411 = airlight_wrap_turn((_e409 - _e399));
+    const float _e415 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    const float _e417 = airlight_wrap_turn((_e415 - _e399));
+    const float _e421 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    const float _e423 = airlight_wrap_turn((_e421 - _e399));
+    const float4 _e425 = airlight_sort4_(float4(_e405, _e411, _e417, _e423));
+    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+    bool loop_init_41 = true;
     while(true) {
-        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_40) {
-            uint _e416 = i_34;
-            i_34 = (_e416 + 1u);
+        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_41) {
+            uint _e548 = i_35;
+            i_35 = (_e548 + 1u);
         }
-        loop_init_40 = false;
-        uint _e296 = i_34;
-        if ((_e296 < 3u)) {
+        loop_init_41 = false;
+        uint _e428 = i_35;
+        if ((_e428 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e299 = i_34;
-            float first_2 = (_e267 + _e293[min(uint(_e299), 3u)]);
-            uint _e302 = i_34;
-            float last_1 = (_e267 + _e293[min(uint((_e302 + 1u)), 3u)]);
-            const float2 _e310 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
-            const float2 _e311 = airlight_entry_normal(y_14, _e310);
-            if (all((_e311 == (0.0).xx))) {
+            uint _e431 = i_35;
+            float first_2 = (_e399 + _e425[min(uint(_e431), 3u)]);
+            uint _e434 = i_35;
+            float last_1 = (_e399 + _e425[min(uint((_e434 + 1u)), 3u)]);
+            const float2 _e442 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
+            const float2 _e443 = airlight_entry_normal(y_14, _e442);
+            if (all((_e443 == (0.0).xx))) {
                 float c_19 = ((first_2 + last_1) * 0.5);
                 float hw_5 = ((last_1 - first_2) * 0.5);
-                j_8 = 0u;
-                uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-                bool loop_init_41 = true;
+                j_9 = 0u;
+                uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+                bool loop_init_42 = true;
                 while(true) {
-                    if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-                    loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-                    if (!loop_init_41) {
-                        uint _e340 = j_8;
-                        j_8 = (_e340 + 1u);
+                    if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+                    loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                    if (!loop_init_42) {
+                        uint _e472 = j_9;
+                        j_9 = (_e472 + 1u);
                     }
-                    loop_init_41 = false;
-                    uint _e324 = j_8;
-                    if ((_e324 < 12u)) {
+                    loop_init_42 = false;
+                    uint _e456 = j_9;
+                    if ((_e456 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e327 = j_8;
-                        const float2 _e328 = airlight_triangle_rule(_e327);
-                        float _e329 = sum_9;
-                        const float2 _e335 = airlight_cos_sin_turns((c_19 + (hw_5 * _e328.x)));
-                        const float _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
-                        sum_9 = (_e329 + ((_e328.y * hw_5) * _e336));
+                        uint _e459 = j_9;
+                        const float2 _e460 = airlight_triangle_rule(_e459);
+                        float _e461 = sum_9;
+                        const float2 _e467 = airlight_cos_sin_turns((c_19 + (hw_5 * _e460.x)));
+                        const float _e468 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e467);
+                        sum_9 = (_e461 + ((_e460.y * hw_5) * _e468));
                     }
                 }
                 continue;
             }
-            float2 t_13 = float2(-(_e311.y), _e311.x);
-            const float2 _e346 = airlight_cos_sin_turns(first_2);
-            const float _e347 = airlight_mercator(_e311, _e346);
-            const float2 _e348 = airlight_cos_sin_turns(last_1);
-            const float _e349 = airlight_mercator(_e311, _e348);
+            float2 t_14 = float2(-(_e443.y), _e443.x);
+            const float2 _e478 = airlight_cos_sin_turns(first_2);
+            const float _e479 = airlight_mercator(_e443, _e478);
+            const float2 _e480 = airlight_cos_sin_turns(last_1);
+            const float _e481 = airlight_mercator(_e443, _e480);
             k_9 = 0u;
-            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-            bool loop_init_42 = true;
+            uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+            bool loop_init_43 = true;
             while(true) {
-                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                if (!loop_init_42) {
-                    uint _e413 = k_9;
-                    k_9 = (_e413 + 1u);
+                if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                if (!loop_init_43) {
+                    uint _e545 = k_9;
+                    k_9 = (_e545 + 1u);
                 }
-                loop_init_42 = false;
-                uint _e352 = k_9;
-                if ((_e352 < 7u)) {
+                loop_init_43 = false;
+                uint _e484 = k_9;
+                if ((_e484 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e355 = k_9;
-                    const float _e356 = airlight_mercator_cut(_e355);
-                    float lo_8 = max(_e347, _e356);
-                    uint _e358 = k_9;
-                    const float _e361 = airlight_mercator_cut((_e358 + 1u));
-                    float hi_9 = min(_e349, _e361);
+                    uint _e487 = k_9;
+                    const float _e488 = airlight_mercator_cut(_e487);
+                    float lo_8 = max(_e479, _e488);
+                    uint _e490 = k_9;
+                    const float _e493 = airlight_mercator_cut((_e490 + 1u));
+                    float hi_9 = min(_e481, _e493);
                     if (!((lo_8 < hi_9))) {
                         continue;
                     }
                     float c_20 = ((lo_8 + hi_9) * 0.5);
                     float hw_6 = ((hi_9 - lo_8) * 0.5);
-                    j_9 = 0u;
-                    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_43 = true;
+                    j_10 = 0u;
+                    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_44 = true;
                     while(true) {
-                        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-                        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-                        if (!loop_init_43) {
-                            uint _e410 = j_9;
-                            j_9 = (_e410 + 1u);
+                        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+                        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                        if (!loop_init_44) {
+                            uint _e542 = j_10;
+                            j_10 = (_e542 + 1u);
                         }
-                        loop_init_43 = false;
-                        uint _e373 = j_9;
-                        if ((_e373 < 12u)) {
+                        loop_init_44 = false;
+                        uint _e505 = j_10;
+                        if ((_e505 < 12u)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e376 = j_9;
-                            const float2 _e377 = airlight_triangle_rule(_e376);
-                            float x_37 = (c_20 + (hw_6 * _e377.x));
+                            uint _e508 = j_10;
+                            const float2 _e509 = airlight_triangle_rule(_e508);
+                            float x_37 = (c_20 + (hw_6 * _e509.x));
                             float e_17 = exp(-(abs(x_37)));
                             float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
                             float th = ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)));
-                            float _e399 = sum_9;
-                            const float _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e311 * sech) + (t_13 * th)));
-                            sum_9 = (_e399 + (((_e377.y * hw_6) * sech) * _e406));
+                            float _e531 = sum_9;
+                            const float _e538 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e443 * sech) + (t_14 * th)));
+                            sum_9 = (_e531 + (((_e509.y * hw_6) * sech) * _e538));
                         }
                     }
                 }
             }
         }
     }
-    float _e418 = sum_9;
-    return _e418;
+    float _e550 = sum_9;
+    return _e550;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -8446,7 +8523,7 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     float2 u_6 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_10 = 0.0;
-    uint i_35 = 0u;
+    uint i_36 = 0u;
     float2 e_9 = (float2)0;
     float r_max_1 = (float)0;
 
@@ -8488,23 +8565,23 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-    bool loop_init_44 = true;
+    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-        if (!loop_init_44) {
-            uint _e127 = i_35;
-            i_35 = (_e127 + 1u);
+        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
+            uint _e127 = i_36;
+            i_36 = (_e127 + 1u);
         }
-        loop_init_44 = false;
-        uint _e73 = i_35;
+        loop_init_45 = false;
+        uint _e73 = i_36;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_35;
+            uint _e76 = i_36;
             const float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
@@ -8535,8 +8612,8 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
     float2 q_8 = (float2)0;
     bool local_186 = (bool)0;
     float sum_11 = 0.0;
-    uint i_36 = 0u;
-    uint j_10 = (uint)0;
+    uint i_37 = 0u;
+    uint j_11 = (uint)0;
 
     float3 rel_1 = (x_26 - a_25.c);
     float z_21 = dot(rel_1, a_25.n);
@@ -8571,50 +8648,50 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
     const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     const float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+    bool loop_init_46 = true;
     while(true) {
-        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
-            uint _e145 = i_36;
-            i_36 = (_e145 + 1u);
+        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+        if (!loop_init_46) {
+            uint _e145 = i_37;
+            i_37 = (_e145 + 1u);
         }
-        loop_init_45 = false;
-        uint _e104 = i_36;
+        loop_init_46 = false;
+        uint _e104 = i_37;
         if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e107 = i_36;
+            uint _e107 = i_37;
             float2 _e109 = q_8;
             float2 ca = (corners[min(uint(_e107), 4u)] - _e109);
-            uint _e111 = i_36;
+            uint _e111 = i_37;
             float2 _e115 = q_8;
             float2 cb_1 = (corners[min(uint((_e111 + 1u)), 4u)] - _e115);
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
             const AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_10 = 0u;
-            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-            bool loop_init_46 = true;
+            j_11 = 0u;
+            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+            bool loop_init_47 = true;
             while(true) {
-                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_46) {
-                    uint _e142 = j_10;
-                    j_10 = (_e142 + 1u);
+                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_47) {
+                    uint _e142 = j_11;
+                    j_11 = (_e142 + 1u);
                 }
-                loop_init_46 = false;
-                uint _e129 = j_10;
+                loop_init_47 = false;
+                uint _e129 = j_11;
                 if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_10;
+                    uint _e132 = j_11;
                     const float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
                     const float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
@@ -8650,7 +8727,7 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
-    uint i_37 = 0u;
+    uint i_38 = 0u;
     float at_2 = (float)0;
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
@@ -8748,23 +8825,23 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-    bool loop_init_47 = true;
+    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-        if (!loop_init_47) {
-            uint _e550 = i_37;
-            i_37 = (_e550 + 1u);
+        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
+            uint _e550 = i_38;
+            i_38 = (_e550 + 1u);
         }
-        loop_init_47 = false;
-        uint _e275 = i_37;
+        loop_init_48 = false;
+        uint _e275 = i_38;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_37;
+            uint _e279 = i_38;
             const float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -8889,7 +8966,7 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_38 = 0u;
+    uint i_39 = 0u;
     float big_b_1 = (float)0;
     float wpsi = (float)0;
     float start_5 = (float)0;
@@ -8907,23 +8984,23 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
         const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-    bool loop_init_48 = true;
+    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+    bool loop_init_49 = true;
     while(true) {
-        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-        if (!loop_init_48) {
-            uint _e290 = i_38;
-            i_38 = (_e290 + 1u);
+        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+        if (!loop_init_49) {
+            uint _e290 = i_39;
+            i_39 = (_e290 + 1u);
         }
-        loop_init_48 = false;
-        uint _e47 = i_38;
+        loop_init_49 = false;
+        uint _e47 = i_39;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_38;
+            uint _e50 = i_39;
             const float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -9056,7 +9133,7 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_11 = 0u;
+    uint j_12 = 0u;
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
     bool local_189 = (bool)0;
@@ -9071,23 +9148,23 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
     float sin_a_2 = (a_28.radius / _e5);
     AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-    bool loop_init_49 = true;
+    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
+    bool loop_init_50 = true;
     while(true) {
-        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
-        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-        if (!loop_init_49) {
-            uint _e92 = j_11;
-            j_11 = (_e92 + 1u);
+        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
+        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+        if (!loop_init_50) {
+            uint _e92 = j_12;
+            j_12 = (_e92 + 1u);
         }
-        loop_init_49 = false;
-        uint _e32 = j_11;
+        loop_init_50 = false;
+        uint _e32 = j_12;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_11;
+            uint _e39 = j_12;
             float2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
             float c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
             float _e48 = chosen;
@@ -9163,9 +9240,9 @@ float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
     float along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
-    float t_14 = (a_30.x_h + along_1);
+    float t_15 = (a_30.x_h + along_1);
     float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_15 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -9175,7 +9252,7 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     uint step_2 = 0u;
     float k_10 = (float)0;
     float gauss_1 = (float)0;
-    uint j_12 = (uint)0;
+    uint j_13 = (uint)0;
     bool local_192 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_50);
@@ -9188,16 +9265,16 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
-    bool loop_init_50 = true;
+    uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
+    bool loop_init_51 = true;
     while(true) {
-        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
-        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
-        if (!loop_init_50) {
+        if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
+        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+        if (!loop_init_51) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_50 = false;
+        loop_init_51 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -9212,28 +9289,28 @@ AirlightResult airlight_area_light(AirlightScene s_50)
             float hw_9 = (0.5 * (_e34 - _e36));
             k_10 = 0.0;
             gauss_1 = 0.0;
-            j_12 = 0u;
-            uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
-            bool loop_init_51 = true;
+            j_13 = 0u;
+            uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
+            bool loop_init_52 = true;
             while(true) {
-                if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
-                loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
-                if (!loop_init_51) {
-                    uint _e82 = j_12;
-                    j_12 = (_e82 + 1u);
+                if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
+                loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+                if (!loop_init_52) {
+                    uint _e82 = j_13;
+                    j_13 = (_e82 + 1u);
                 }
-                loop_init_51 = false;
-                uint _e46 = j_12;
+                loop_init_52 = false;
+                uint _e46 = j_13;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_12;
+                    uint _e49 = j_13;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_12;
+                    uint _e59 = j_13;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_12;
+                        uint _e66 = j_13;
                         local_192 = (_e66 < 14u);
                     } else {
                         local_192 = false;
@@ -9433,7 +9510,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     uint step_3 = 0u;
     float k_11 = (float)0;
     float gauss_2 = (float)0;
-    uint j_13 = (uint)0;
+    uint j_14 = (uint)0;
     bool local_201 = (bool)0;
     float f = (float)0;
     bool local_202 = (bool)0;
@@ -9460,16 +9537,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
-    bool loop_init_52 = true;
+    uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
+    bool loop_init_53 = true;
     while(true) {
-        if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
-        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
-        if (!loop_init_52) {
+        if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
+        loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+        if (!loop_init_53) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_52 = false;
+        loop_init_53 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -9484,28 +9561,28 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
             float hw_10 = (0.5 * (_e49 - _e51));
             k_11 = 0.0;
             gauss_2 = 0.0;
-            j_13 = 0u;
-            uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
-            bool loop_init_53 = true;
+            j_14 = 0u;
+            uint2 loop_bound_55 = uint2(4294967295u, 4294967295u);
+            bool loop_init_54 = true;
             while(true) {
-                if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
-                loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
-                if (!loop_init_53) {
-                    uint _e121 = j_13;
-                    j_13 = (_e121 + 1u);
+                if (all(loop_bound_55 == uint2(0u, 0u))) { break; }
+                loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
+                if (!loop_init_54) {
+                    uint _e121 = j_14;
+                    j_14 = (_e121 + 1u);
                 }
-                loop_init_53 = false;
-                uint _e61 = j_13;
+                loop_init_54 = false;
+                uint _e61 = j_14;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_13;
+                    uint _e64 = j_14;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_13;
+                    uint _e74 = j_14;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_13;
+                        uint _e81 = j_14;
                         local_201 = (_e81 < 6u);
                     } else {
                         local_201 = false;

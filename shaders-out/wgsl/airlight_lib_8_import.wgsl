@@ -431,11 +431,11 @@ fn airlight_cdiv(a_1: vec2<f32>, b_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cabs(z: vec2<f32>) -> f32 {
-    let m_4 = max(abs(z.x), abs(z.y));
-    if (m_4 == 0f) {
+    let m_5 = max(abs(z.x), abs(z.y));
+    if (m_5 == 0f) {
         return 0f;
     }
-    return (m_4 * length((z / vec2(m_4))));
+    return (m_5 * length((z / vec2(m_5))));
 }
 
 fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
@@ -452,11 +452,11 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
     }
     let _e14 = airlight_cabs(z_1);
     if (z_1.x >= 0f) {
-        let t_4 = sqrt(((_e14 + z_1.x) * 0.5f));
-        return vec2<f32>(t_4, (z_1.y / (t_4 + t_4)));
+        let t_5 = sqrt(((_e14 + z_1.x) * 0.5f));
+        return vec2<f32>(t_5, (z_1.y / (t_5 + t_5)));
     }
-    let t_5 = sqrt(((_e14 - z_1.x) * 0.5f));
-    return vec2<f32>((abs(z_1.y) / (t_5 + t_5)), select(-(t_5), t_5, (z_1.y >= 0f)));
+    let t_6 = sqrt(((_e14 - z_1.x) * 0.5f));
+    return vec2<f32>((abs(z_1.y) / (t_6 + t_6)), select(-(t_6), t_6, (z_1.y >= 0f)));
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
@@ -467,9 +467,9 @@ fn airlight_cos_sin(x: f32) -> vec2<f32> {
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
-    let m_5 = exp(z_2.x);
+    let m_6 = exp(z_2.x);
     let _e4 = airlight_cos_sin(z_2.y);
-    return vec2<f32>((m_5 * _e4.x), (m_5 * _e4.y));
+    return vec2<f32>((m_6 * _e4.x), (m_6 * _e4.y));
 }
 
 fn airlight_atan(x_1: f32) -> f32 {
@@ -746,9 +746,9 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
 
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
-    let m_6 = f32(_e2);
-    let b_16 = ((x_4 + nf_1) + (2f * (m_6 + 1f)));
-    let a_31 = ((m_6 + 2f) * ((nf_1 + m_6) + 1f));
+    let m_7 = f32(_e2);
+    let b_16 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
+    let a_31 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
     let disc = (1f - ((4f * a_31) / (b_16 * b_16)));
     t_2 = b_16;
     if (disc > 0f) {
@@ -2171,26 +2171,26 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e53 = samples_2;
     let _e54 = airlight_legendre(_e53);
     let alpha = (b_6 / r_10);
-    let beta = (-(yc_2) / r_10);
+    let beta_1 = (-(yc_2) / r_10);
     let _e58 = airlight_legendre_to_monomial(_e54);
     let _e59 = airlight_zero_terms();
     q = _e59;
     q = array<f32, 8>(_e58[7], 0f, 0f, 0f, 0f, 0f, 0f, 0f);
     let _e71 = q[0];
     let _e76 = q[0];
-    q = array<f32, 8>(((_e71 * beta) + _e58[6]), (_e76 * alpha), 0f, 0f, 0f, 0f, 0f, 0f);
+    q = array<f32, 8>(((_e71 * beta_1) + _e58[6]), (_e76 * alpha), 0f, 0f, 0f, 0f, 0f, 0f);
     let _e86 = q[0];
     let _e91 = q[0];
     let _e94 = q[1];
     let _e98 = q[1];
-    q = array<f32, 8>(((_e86 * beta) + _e58[5]), ((_e91 * alpha) + (_e94 * beta)), (_e98 * alpha), 0f, 0f, 0f, 0f, 0f);
+    q = array<f32, 8>(((_e86 * beta_1) + _e58[5]), ((_e91 * alpha) + (_e94 * beta_1)), (_e98 * alpha), 0f, 0f, 0f, 0f, 0f);
     let _e107 = q[0];
     let _e112 = q[0];
     let _e115 = q[1];
     let _e119 = q[1];
     let _e122 = q[2];
     let _e126 = q[2];
-    q = array<f32, 8>(((_e107 * beta) + _e58[4]), ((_e112 * alpha) + (_e115 * beta)), ((_e119 * alpha) + (_e122 * beta)), (_e126 * alpha), 0f, 0f, 0f, 0f);
+    q = array<f32, 8>(((_e107 * beta_1) + _e58[4]), ((_e112 * alpha) + (_e115 * beta_1)), ((_e119 * alpha) + (_e122 * beta_1)), (_e126 * alpha), 0f, 0f, 0f, 0f);
     let _e134 = q[0];
     let _e139 = q[0];
     let _e142 = q[1];
@@ -2199,7 +2199,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e153 = q[2];
     let _e156 = q[3];
     let _e160 = q[3];
-    q = array<f32, 8>(((_e134 * beta) + _e58[3]), ((_e139 * alpha) + (_e142 * beta)), ((_e146 * alpha) + (_e149 * beta)), ((_e153 * alpha) + (_e156 * beta)), (_e160 * alpha), 0f, 0f, 0f);
+    q = array<f32, 8>(((_e134 * beta_1) + _e58[3]), ((_e139 * alpha) + (_e142 * beta_1)), ((_e146 * alpha) + (_e149 * beta_1)), ((_e153 * alpha) + (_e156 * beta_1)), (_e160 * alpha), 0f, 0f, 0f);
     let _e167 = q[0];
     let _e172 = q[0];
     let _e175 = q[1];
@@ -2210,7 +2210,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e193 = q[3];
     let _e196 = q[4];
     let _e200 = q[4];
-    q = array<f32, 8>(((_e167 * beta) + _e58[2]), ((_e172 * alpha) + (_e175 * beta)), ((_e179 * alpha) + (_e182 * beta)), ((_e186 * alpha) + (_e189 * beta)), ((_e193 * alpha) + (_e196 * beta)), (_e200 * alpha), 0f, 0f);
+    q = array<f32, 8>(((_e167 * beta_1) + _e58[2]), ((_e172 * alpha) + (_e175 * beta_1)), ((_e179 * alpha) + (_e182 * beta_1)), ((_e186 * alpha) + (_e189 * beta_1)), ((_e193 * alpha) + (_e196 * beta_1)), (_e200 * alpha), 0f, 0f);
     let _e206 = q[0];
     let _e211 = q[0];
     let _e214 = q[1];
@@ -2223,7 +2223,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e239 = q[4];
     let _e242 = q[5];
     let _e246 = q[5];
-    q = array<f32, 8>(((_e206 * beta) + _e58[1]), ((_e211 * alpha) + (_e214 * beta)), ((_e218 * alpha) + (_e221 * beta)), ((_e225 * alpha) + (_e228 * beta)), ((_e232 * alpha) + (_e235 * beta)), ((_e239 * alpha) + (_e242 * beta)), (_e246 * alpha), 0f);
+    q = array<f32, 8>(((_e206 * beta_1) + _e58[1]), ((_e211 * alpha) + (_e214 * beta_1)), ((_e218 * alpha) + (_e221 * beta_1)), ((_e225 * alpha) + (_e228 * beta_1)), ((_e232 * alpha) + (_e235 * beta_1)), ((_e239 * alpha) + (_e242 * beta_1)), (_e246 * alpha), 0f);
     let _e251 = q[0];
     let _e256 = q[0];
     let _e259 = q[1];
@@ -2238,7 +2238,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e291 = q[5];
     let _e294 = q[6];
     let _e298 = q[6];
-    q = array<f32, 8>(((_e251 * beta) + _e58[0]), ((_e256 * alpha) + (_e259 * beta)), ((_e263 * alpha) + (_e266 * beta)), ((_e270 * alpha) + (_e273 * beta)), ((_e277 * alpha) + (_e280 * beta)), ((_e284 * alpha) + (_e287 * beta)), ((_e291 * alpha) + (_e294 * beta)), (_e298 * alpha));
+    q = array<f32, 8>(((_e251 * beta_1) + _e58[0]), ((_e256 * alpha) + (_e259 * beta_1)), ((_e263 * alpha) + (_e266 * beta_1)), ((_e270 * alpha) + (_e273 * beta_1)), ((_e277 * alpha) + (_e280 * beta_1)), ((_e284 * alpha) + (_e287 * beta_1)), ((_e291 * alpha) + (_e294 * beta_1)), (_e298 * alpha));
     let big_h_6 = half_8.big_h;
     let _e303 = airlight_en_scaled((big_h_6 / b_6));
     if (a_7 > 0f) {
@@ -2345,7 +2345,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_35 = (abs(alpha) + abs(beta));
+    let x_35 = (abs(alpha) + abs(beta_1));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
@@ -2472,8 +2472,8 @@ fn airlight_panel(s_9: AirlightScene, g_11: AirlightCanonical, sigma_7: f32, hal
 fn airlight_graded_split(a_9: f32, b_8: f32, heights_3: vec3<f32>) -> f32 {
     var local_20: bool;
 
-    let t_6 = min(heights_3.x, min(heights_3.y, heights_3.z));
-    let d_2 = sqrt(((a_9 * a_9) + (t_6 * t_6)));
+    let t_7 = min(heights_3.x, min(heights_3.y, heights_3.z));
+    let d_2 = sqrt(((a_9 * a_9) + (t_7 * t_7)));
     if (d_2 > 0f) {
         local_20 = (d_2 < ((b_8 - a_9) * 0.25f));
     } else {
@@ -3237,13 +3237,13 @@ fn airlight_half(s_12: AirlightScene, g_16: AirlightCanonical, sigma_12: f32, ha
                         let _e94 = cuts[(_e90 + 1u)];
                         if (_e89 > _e94) {
                             let _e96 = j_2;
-                            let t_7 = cuts[_e96];
+                            let t_8 = cuts[_e96];
                             let _e99 = j_2;
                             let _e101 = j_2;
                             let _e105 = cuts[(_e101 + 1u)];
                             cuts[_e99] = _e105;
                             let _e106 = j_2;
-                            cuts[(_e106 + 1u)] = t_7;
+                            cuts[(_e106 + 1u)] = t_8;
                         }
                     }
                     continuing {
@@ -3864,11 +3864,11 @@ fn airlight_vec_finite(v: vec3<f32>) -> bool {
 }
 
 fn airlight_safe_length(v_1: vec3<f32>) -> f32 {
-    let m_7 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
-    if (m_7 == 0f) {
+    let m_8 = max(abs(v_1.x), max(abs(v_1.y), abs(v_1.z)));
+    if (m_8 == 0f) {
         return 0f;
     }
-    return (m_7 * length((v_1 / vec3(m_7))));
+    return (m_8 * length((v_1 / vec3(m_8))));
 }
 
 fn airlight_normalisable(v_2: vec3<f32>) -> bool {
@@ -3886,8 +3886,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 }
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
-    let m_8 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_7 = (v_3 / vec3(m_8));
+    let m_9 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
+    let u_7 = (v_3 / vec3(m_9));
     return (u_7 / vec3(length(u_7)));
 }
 
@@ -4425,10 +4425,10 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     var local_126: bool;
     var local_127: bool;
 
-    let m_9 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
-    if !((m_9 == 0f)) {
-        if (m_9 >= 0.0000000009313226f) {
-            local_127 = (m_9 <= AIRLIGHT_EXACT_RANGE);
+    let m_10 = max(abs(v_4.x), max(abs(v_4.y), abs(v_4.z)));
+    if !((m_10 == 0f)) {
+        if (m_10 >= 0.0000000009313226f) {
+            local_127 = (m_10 <= AIRLIGHT_EXACT_RANGE);
         } else {
             local_127 = false;
         }
@@ -5778,16 +5778,16 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_39 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_8 = (x_21 - f32(i_39));
-        let a_42 = g_25.gamma[i_39];
-        let b_20 = g_25.gamma[(i_39 + 1u)];
+        let i_40 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_9 = (x_21 - f32(i_40));
+        let a_42 = g_25.gamma[i_40];
+        let b_20 = g_25.gamma[(i_40 + 1u)];
         let w_8 = (b_20 - a_42);
-        let u_8 = (1f - t_8);
-        let smooth_a = (((g_25.smooth_edges >> i_39) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_39 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_8) * t_8) * ((3f - t_8) - t_8)));
-        jacobian = (((w_8 * 6f) * t_8) * u_8);
+        let u_8 = (1f - t_9);
+        let smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        jacobian = (((w_8 * 6f) * t_9) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
             local_163 = !(smooth_a);
@@ -5795,7 +5795,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_42 + ((w_8 * t_8) * t_8)), _e66);
+        gamma_1 = select(_e58, (a_42 + ((w_8 * t_9) * t_9)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -5803,7 +5803,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_164 = false;
         }
         let _e75 = local_164;
-        jacobian = select(_e68, (w_8 * (t_8 + t_8)), _e75);
+        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
         let _e77 = gamma_1;
         if smooth_a {
             local_165 = !(smooth_b);
@@ -5827,7 +5827,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_42 + (w_8 * t_8)), _e102);
+        gamma_1 = select(_e96, (a_42 + (w_8 * t_9)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -5898,8 +5898,8 @@ fn airlight_azimuths(circle: bool, i_25: u32) -> vec3<f32> {
 }
 
 fn airlight_triangle_rule(i_26: u32) -> vec2<f32> {
-    let rule_2 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
-    return rule_2[i_26];
+    let rule_3 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
+    return rule_3[i_26];
 }
 
 fn airlight_area_phase(s_28: AirlightScene, mu_2: f32) -> f32 {
@@ -6126,9 +6126,9 @@ fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var local_171: bool;
 
-    let m_10 = abs(n_2);
-    if (m_10.x <= m_10.y) {
-        local_171 = (m_10.x <= m_10.z);
+    let m_11 = abs(n_2);
+    if (m_11.x <= m_11.y) {
+        local_171 = (m_11.x <= m_11.z);
     } else {
         local_171 = false;
     }
@@ -6136,7 +6136,7 @@ fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     if _e16 {
         u_3 = vec3<f32>(1f, 0f, 0f);
     } else {
-        if (m_10.y <= m_10.z) {
+        if (m_11.y <= m_11.z) {
             u_3 = vec3<f32>(0f, 1f, 0f);
         }
     }
@@ -6304,12 +6304,12 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
         }
         {
             let _e245 = i_27;
-            let t_9 = cuts_4[_e245];
+            let t_10 = cuts_4[_e245];
             let _e248 = i_27;
             cuts_4[_e248] = _e217;
-            let _e250 = airlight_is_finite(t_9);
+            let _e250 = airlight_is_finite(t_10);
             if _e250 {
-                local_174 = (t_9 >= t0_2);
+                local_174 = (t_10 >= t0_2);
             } else {
                 local_174 = false;
             }
@@ -6318,7 +6318,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
                 let _e258 = end_infinite;
                 if !(_e258) {
                     let _e262 = t_end_1;
-                    local_176 = (t_9 <= _e262);
+                    local_176 = (t_10 <= _e262);
                 } else {
                     local_176 = true;
                 }
@@ -6331,7 +6331,7 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
             if _e267 {
                 let _e268 = i_27;
                 let _e270 = a_18;
-                let _e272 = airlight_area_theta(_e270, t_9, false);
+                let _e272 = airlight_area_theta(_e270, t_10, false);
                 cuts_4[_e268] = _e272;
             }
         }
@@ -6459,8 +6459,8 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
             }
             let _e67 = local_177;
             inside = _e67;
-            let t_10 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
-            let p_5 = (a_44 + (t_10 * e_15));
+            let t_11 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
+            let p_5 = (a_44 + (t_11 * e_15));
             let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
@@ -6539,10 +6539,24 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
     return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f), false);
 }
 
+fn airlight_radial_rule(i_29: u32) -> vec2<f32> {
+    let rule_4 = array<vec2<f32>, 16>(vec2<f32>(-0.09501251f, 0.1894506f), vec2<f32>(0.09501251f, 0.1894506f), vec2<f32>(-0.28160354f, 0.18260342f), vec2<f32>(0.28160354f, 0.18260342f), vec2<f32>(-0.45801678f, 0.16915652f), vec2<f32>(0.45801678f, 0.16915652f), vec2<f32>(-0.61787623f, 0.14959599f), vec2<f32>(0.61787623f, 0.14959599f), vec2<f32>(-0.7554044f, 0.12462897f), vec2<f32>(0.7554044f, 0.12462897f), vec2<f32>(-0.8656312f, 0.09515851f), vec2<f32>(0.8656312f, 0.09515851f), vec2<f32>(-0.944575f, 0.062253524f), vec2<f32>(0.944575f, 0.062253524f), vec2<f32>(-0.9894009f, 0.02715246f), vec2<f32>(0.9894009f, 0.02715246f));
+    return rule_4[i_29];
+}
+
+fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
+    let _e4 = airlight_cos_sin_half_turn((beta + 1.5707964f));
+    let sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
+    let r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
+    let r_14 = sqrt(r2_3);
+    let m_12 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
+    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+}
+
 fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
-    let m_11 = vec2<f32>((b_13.y - a_22.y), (a_22.x - b_13.x));
-    let num = (((q_6.x - a_22.x) * m_11.x) + ((q_6.y - a_22.y) * m_11.y));
-    let den = ((e_5.x * m_11.x) + (e_5.y * m_11.y));
+    let m_13 = vec2<f32>((b_13.y - a_22.y), (a_22.x - b_13.x));
+    let num = (((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y));
+    let den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if (den > 0f) {
         return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
     }
@@ -6569,14 +6583,14 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_11 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
-        let r1_2 = (t_11 / a_45);
-        let r2_3 = (k_13 / t_11);
-        let hi_8 = max(r1_2, r2_3);
+        let t_12 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+        let r1_2 = (t_12 / a_45);
+        let r2_4 = (k_13 / t_12);
+        let hi_8 = max(r1_2, r2_4);
         if !((hi_8 > 0f)) {
             return vec2(0f);
         }
-        return vec2<f32>(max(min(r1_2, r2_3), 0f), hi_8);
+        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_8);
     }
     let _e70 = chord_1;
     let _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
@@ -6701,23 +6715,19 @@ fn airlight_cos_sin_turns(x_23: f32) -> vec2<f32> {
 fn airlight_edge_rule(a_23: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
     let e_16 = (b_14 - a_23);
     let el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
-    let t_12 = (e_16 / vec2(el));
+    let t_13 = (e_16 / vec2(el));
     let h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
     let reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    let _e27 = airlight_atan2_(dot(a_23, t_12), reach_2);
-    let _e29 = airlight_atan2_(dot(b_14, t_12), reach_2);
-    return AirlightEdgeRule(h_9, t_12, reach_2, _e27, _e29);
+    let _e27 = airlight_atan2_(dot(a_23, t_13), reach_2);
+    let _e29 = airlight_atan2_(dot(b_14, t_13), reach_2);
+    return AirlightEdgeRule(h_9, t_13, reach_2, _e27, _e29);
 }
 
-fn airlight_edge_node(rule_1: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
+fn airlight_edge_node(rule_2: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
     let _e2 = airlight_triangle_rule(j_6);
-    let hw_4 = (0.5f * (rule_1.last - rule_1.first));
-    let _e18 = airlight_cos_sin_half_turn((((0.5f * (rule_1.first + rule_1.last)) + (hw_4 * _e2.x)) + 1.5707964f));
-    let sigma_13 = ((rule_1.reach * -(_e18.x)) / _e18.y);
-    let r2_4 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    let r_14 = sqrt(r2_4);
-    let m_12 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
-    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((((_e2.y * hw_4) * rule_1.h) * rule_1.reach) / ((_e18.y * _e18.y) * r2_4)));
+    let hw_4 = (0.5f * (rule_2.last - rule_2.first));
+    let _e16 = airlight_edge_at(rule_2, ((0.5f * (rule_2.first + rule_2.last)) + (hw_4 * _e2.x)));
+    return vec4<f32>(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
 fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
@@ -6729,21 +6739,21 @@ fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
 fn airlight_entry_normal(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> vec2<f32> {
     var nearest_1: f32 = AIRLIGHT_FLT_MAX;
     var normal_3: vec2<f32> = vec2(0f);
-    var i_29: u32 = 0u;
+    var i_30: u32 = 0u;
     var local_181: bool;
     var local_182: bool;
     var local_183: bool;
 
     loop {
-        let _e9 = i_29;
+        let _e9 = i_30;
         if (_e9 < 4u) {
         } else {
             break;
         }
         {
-            let _e12 = i_29;
+            let _e12 = i_30;
             let a_47 = y_6[_e12];
-            let _e14 = i_29;
+            let _e14 = i_30;
             let d_5 = (y_6[((_e14 + 1u) % 4u)] - a_47);
             let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if (den_1 == 0f) {
@@ -6777,8 +6787,8 @@ fn airlight_entry_normal(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> vec2<f32> 
             }
         }
         continuing {
-            let _e80 = i_29;
-            i_29 = (_e80 + 1u);
+            let _e80 = i_30;
+            i_30 = (_e80 + 1u);
         }
     }
     let _e82 = normal_3;
@@ -6799,266 +6809,320 @@ fn airlight_mercator(n_3: vec2<f32>, cs_2: vec2<f32>) -> f32 {
 
 fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
-    var i_30: u32 = 0u;
+    var m_4: vec2<f32> = vec2<f32>(1f, 0f);
+    var t_4: vec2<f32>;
+    var j_7: u32 = 0u;
     var i_31: u32 = 0u;
-    var area: vec4<f32> = vec4(0f);
     var i_32: u32 = 0u;
+    var area: vec4<f32> = vec4(0f);
     var i_33: u32 = 0u;
+    var i_34: u32 = 0u;
     var ya: vec2<f32>;
     var yb: vec2<f32>;
-    var j_7: u32;
-    var i_34: u32 = 0u;
     var j_8: u32;
-    var k_9: u32;
+    var i_35: u32 = 0u;
     var j_9: u32;
+    var k_9: u32;
+    var j_10: u32;
 
     let _e5 = airlight_basis_e1_(lobe_3.p);
     let v_9 = cross(lobe_3.p, _e5);
     let q_14 = lobe_3.q;
     if (o_5.radius > 0f) {
         if lobe_3.on_emitter {
+            let dq_2 = (q_14 - o_5.corners[0]);
+            let d_6 = sqrt(dot(dq_2, dq_2));
+            if (d_6 > 0f) {
+                m_4 = (dq_2 / vec2(d_6));
+            }
+            let _e31 = m_4;
+            let rim_e = ((o_5.corners[0] + (o_5.radius * _e31)) - q_14);
+            let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
+            let _e41 = m_4.y;
+            let _e46 = m_4.x;
+            let _e51 = m_4.y;
+            let _e56 = m_4.x;
+            let along_rim = vec2<f32>(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
+            let tl = sqrt(dot(along_rim, along_rim));
+            t_4 = (along_rim / vec2(tl));
+            let _e67 = t_4.y;
+            let _e71 = t_4.x;
+            if (((_e67 * rim.x) - (_e71 * rim.y)) < 0f) {
+                let _e77 = t_4;
+                t_4 = -(_e77);
+            }
+            let _e80 = t_4.y;
+            let _e84 = t_4.x;
+            let h_10 = ((_e80 * rim.x) - (_e84 * rim.y));
+            let half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0f)));
+            let width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
+            let _e101 = t_4;
+            let rule_5 = AirlightEdgeRule(h_10, _e101, sqrt(((h_10 * h_10) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
             loop {
-                let _e17 = i_30;
-                if (_e17 < 32u) {
+                let _e111 = j_7;
+                if (_e111 < 16u) {
                 } else {
                     break;
                 }
                 {
-                    let _e21 = i_30;
-                    let _e22 = airlight_azimuths(true, _e21);
-                    let _e23 = sum_9;
-                    let _e26 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e22.xy);
-                    sum_9 = (_e23 + (_e22.z * _e26));
+                    let _e114 = j_7;
+                    let _e115 = airlight_radial_rule(_e114);
+                    let _e119 = airlight_edge_at(rule_5, (1.5707964f * _e115.x));
+                    let _e120 = sum_9;
+                    let _e129 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e119.xy);
+                    sum_9 = (_e120 + ((((_e115.y * 0.5f) * AIRLIGHT_PI) * _e119.w) * _e129));
                 }
                 continuing {
-                    let _e30 = i_30;
-                    i_30 = (_e30 + 1u);
+                    let _e133 = j_7;
+                    j_7 = (_e133 + 1u);
                 }
             }
-            let _e32 = sum_9;
-            return _e32;
+            let _e136 = t_4.y;
+            let _e138 = t_4.x;
+            let n_8 = vec2<f32>(_e136, -(_e138));
+            loop {
+                let _e143 = i_31;
+                if (_e143 < 32u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e147 = i_31;
+                    let _e148 = airlight_azimuths(false, _e147);
+                    let _e149 = sum_9;
+                    let _e153 = t_4;
+                    let _e158 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e148.x) + (_e153 * _e148.y))));
+                    sum_9 = (_e149 + (_e148.z * _e158));
+                }
+                continuing {
+                    let _e162 = i_31;
+                    i_31 = (_e162 + 1u);
+                }
+            }
+            let _e164 = sum_9;
+            return _e164;
         }
-        let d_6 = (o_5.corners[0] - q_14);
-        let dq_2 = sqrt(((d_6.x * d_6.x) + (d_6.y * d_6.y)));
-        let sb_1 = (o_5.radius / dq_2);
-        let cb = (sqrt(((dq_2 - o_5.radius) * (dq_2 + o_5.radius))) / dq_2);
-        let _e53 = airlight_lobe_azimuth(_e5, v_9, d_6);
-        let _e65 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_6.x * cb) - (d_6.y * sb_1)), ((d_6.y * cb) + (d_6.x * sb_1))));
-        let _e67 = airlight_wrap_turn((_e65 - _e53));
-        let _e79 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_6.x * cb) + (d_6.y * sb_1)), ((d_6.y * cb) - (d_6.x * sb_1))));
-        let _e81 = airlight_wrap_turn((_e79 - _e53));
-        let centre_2 = (_e53 + ((_e67 + _e81) * 0.5f));
-        let half_19 = (abs((_e67 - _e81)) * 0.5f);
+        let d_7 = (o_5.corners[0] - q_14);
+        let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
+        let sb_1 = (o_5.radius / dq_3);
+        let cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
+        let _e185 = airlight_lobe_azimuth(_e5, v_9, d_7);
+        let _e197 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        let _e199 = airlight_wrap_turn((_e197 - _e185));
+        let _e211 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        let _e213 = airlight_wrap_turn((_e211 - _e185));
+        let centre_2 = (_e185 + ((_e199 + _e213) * 0.5f));
+        let half_19 = (abs((_e199 - _e213)) * 0.5f);
         loop {
-            let _e92 = i_31;
-            if (_e92 < 32u) {
+            let _e224 = i_32;
+            if (_e224 < 32u) {
             } else {
                 break;
             }
             {
-                let _e96 = i_31;
-                let _e97 = airlight_azimuths(false, _e96);
-                let _e98 = sum_9;
-                let _e106 = airlight_cos_sin_turns((centre_2 + (half_19 * _e97.y)));
-                let _e107 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e106);
-                sum_9 = (_e98 + (((_e97.z * half_19) * _e97.x) * _e107));
+                let _e228 = i_32;
+                let _e229 = airlight_azimuths(false, _e228);
+                let _e230 = sum_9;
+                let _e238 = airlight_cos_sin_turns((centre_2 + (half_19 * _e229.y)));
+                let _e239 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e238);
+                sum_9 = (_e230 + (((_e229.z * half_19) * _e229.x) * _e239));
             }
             continuing {
-                let _e111 = i_31;
-                i_31 = (_e111 + 1u);
+                let _e243 = i_32;
+                i_32 = (_e243 + 1u);
             }
         }
-        let _e113 = sum_9;
-        return _e113;
+        let _e245 = sum_9;
+        return _e245;
     }
     let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
     if lobe_3.on_emitter {
         loop {
-            let _e165 = i_32;
-            if (_e165 < 4u) {
+            let _e297 = i_33;
+            if (_e297 < 4u) {
             } else {
                 break;
             }
             {
-                let _e168 = i_32;
-                let b_24 = y_14[((_e168 + 1u) % 4u)];
-                let _e174 = i_32;
-                let _e176 = i_32;
-                let _e181 = i_32;
-                area[_e174] = ((y_14[_e176].x * b_24.y) - (y_14[_e181].y * b_24.x));
+                let _e300 = i_33;
+                let b_24 = y_14[((_e300 + 1u) % 4u)];
+                let _e306 = i_33;
+                let _e308 = i_33;
+                let _e313 = i_33;
+                area[_e306] = ((y_14[_e308].x * b_24.y) - (y_14[_e313].y * b_24.x));
             }
             continuing {
-                let _e188 = i_32;
-                i_32 = (_e188 + 1u);
+                let _e320 = i_33;
+                i_33 = (_e320 + 1u);
             }
         }
-        let _e191 = area.x;
-        let _e193 = area.y;
-        let _e196 = area.z;
-        let _e199 = area.w;
-        let turn = (((_e191 + _e193) + _e196) + _e199);
+        let _e323 = area.x;
+        let _e325 = area.y;
+        let _e328 = area.z;
+        let _e331 = area.w;
+        let turn = (((_e323 + _e325) + _e328) + _e331);
         loop {
-            let _e203 = i_33;
-            if (_e203 < 4u) {
+            let _e335 = i_34;
+            if (_e335 < 4u) {
             } else {
                 break;
             }
             {
-                let _e206 = i_33;
-                let _e208 = area[_e206];
-                if !(((_e208 * turn) > 0f)) {
+                let _e338 = i_34;
+                let _e340 = area[_e338];
+                if !(((_e340 * turn) > 0f)) {
                     continue;
                 }
-                let _e213 = i_33;
-                ya = y_14[_e213];
-                let _e216 = i_33;
-                yb = y_14[((_e216 + 1u) % 4u)];
+                let _e345 = i_34;
+                ya = y_14[_e345];
+                let _e348 = i_34;
+                yb = y_14[((_e348 + 1u) % 4u)];
                 if (turn < 0f) {
-                    let _e225 = i_33;
-                    ya = y_14[((_e225 + 1u) % 4u)];
-                    let _e231 = i_33;
-                    yb = y_14[_e231];
+                    let _e357 = i_34;
+                    ya = y_14[((_e357 + 1u) % 4u)];
+                    let _e363 = i_34;
+                    yb = y_14[_e363];
                 }
-                let _e233 = ya;
-                let _e234 = yb;
-                let _e238 = airlight_edge_rule(_e233, _e234, (lobe_3.l * lobe_3.scale));
-                j_7 = 0u;
+                let _e365 = ya;
+                let _e366 = yb;
+                let _e370 = airlight_edge_rule(_e365, _e366, (lobe_3.l * lobe_3.scale));
+                j_8 = 0u;
                 loop {
-                    let _e241 = j_7;
-                    if (_e241 < 12u) {
+                    let _e373 = j_8;
+                    if (_e373 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e244 = j_7;
-                        let _e245 = airlight_edge_node(_e238, _e244);
-                        let _e246 = sum_9;
-                        let _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e245.xy);
-                        sum_9 = (_e246 + (_e245.w * _e249));
+                        let _e376 = j_8;
+                        let _e377 = airlight_edge_node(_e370, _e376);
+                        let _e378 = sum_9;
+                        let _e381 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e377.xy);
+                        sum_9 = (_e378 + (_e377.w * _e381));
                     }
                     continuing {
-                        let _e253 = j_7;
-                        j_7 = (_e253 + 1u);
+                        let _e385 = j_8;
+                        j_8 = (_e385 + 1u);
                     }
                 }
             }
             continuing {
-                let _e256 = i_33;
-                i_33 = (_e256 + 1u);
+                let _e388 = i_34;
+                i_34 = (_e388 + 1u);
             }
         }
-        let _e258 = sum_9;
-        return _e258;
+        let _e390 = sum_9;
+        return _e390;
     }
-    let _e267 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    let _e271 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    let _e273 = airlight_wrap_turn((_e271 - _e267));
-    let _e277 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    let _e279 = airlight_wrap_turn((_e277 - _e267));
-    let _e283 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    let _e285 = airlight_wrap_turn((_e283 - _e267));
-    let _e289 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    let _e291 = airlight_wrap_turn((_e289 - _e267));
-    let _e293 = airlight_sort4_(vec4<f32>(_e273, _e279, _e285, _e291));
+    let _e399 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    let _e403 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e405 = airlight_wrap_turn((_e403 - _e399));
+    let _e409 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e411 = airlight_wrap_turn((_e409 - _e399));
+    let _e415 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e417 = airlight_wrap_turn((_e415 - _e399));
+    let _e421 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e423 = airlight_wrap_turn((_e421 - _e399));
+    let _e425 = airlight_sort4_(vec4<f32>(_e405, _e411, _e417, _e423));
     loop {
-        let _e296 = i_34;
-        if (_e296 < 3u) {
+        let _e428 = i_35;
+        if (_e428 < 3u) {
         } else {
             break;
         }
         {
-            let _e299 = i_34;
-            let first_2 = (_e267 + _e293[_e299]);
-            let _e302 = i_34;
-            let last_1 = (_e267 + _e293[(_e302 + 1u)]);
-            let _e310 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
-            let _e311 = airlight_entry_normal(y_14, _e310);
-            if all((_e311 == vec2(0f))) {
+            let _e431 = i_35;
+            let first_2 = (_e399 + _e425[_e431]);
+            let _e434 = i_35;
+            let last_1 = (_e399 + _e425[(_e434 + 1u)]);
+            let _e442 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
+            let _e443 = airlight_entry_normal(y_14, _e442);
+            if all((_e443 == vec2(0f))) {
                 let c_19 = ((first_2 + last_1) * 0.5f);
                 let hw_5 = ((last_1 - first_2) * 0.5f);
-                j_8 = 0u;
+                j_9 = 0u;
                 loop {
-                    let _e324 = j_8;
-                    if (_e324 < 12u) {
+                    let _e456 = j_9;
+                    if (_e456 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e327 = j_8;
-                        let _e328 = airlight_triangle_rule(_e327);
-                        let _e329 = sum_9;
-                        let _e335 = airlight_cos_sin_turns((c_19 + (hw_5 * _e328.x)));
-                        let _e336 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e335);
-                        sum_9 = (_e329 + ((_e328.y * hw_5) * _e336));
+                        let _e459 = j_9;
+                        let _e460 = airlight_triangle_rule(_e459);
+                        let _e461 = sum_9;
+                        let _e467 = airlight_cos_sin_turns((c_19 + (hw_5 * _e460.x)));
+                        let _e468 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e467);
+                        sum_9 = (_e461 + ((_e460.y * hw_5) * _e468));
                     }
                     continuing {
-                        let _e340 = j_8;
-                        j_8 = (_e340 + 1u);
+                        let _e472 = j_9;
+                        j_9 = (_e472 + 1u);
                     }
                 }
                 continue;
             }
-            let t_13 = vec2<f32>(-(_e311.y), _e311.x);
-            let _e346 = airlight_cos_sin_turns(first_2);
-            let _e347 = airlight_mercator(_e311, _e346);
-            let _e348 = airlight_cos_sin_turns(last_1);
-            let _e349 = airlight_mercator(_e311, _e348);
+            let t_14 = vec2<f32>(-(_e443.y), _e443.x);
+            let _e478 = airlight_cos_sin_turns(first_2);
+            let _e479 = airlight_mercator(_e443, _e478);
+            let _e480 = airlight_cos_sin_turns(last_1);
+            let _e481 = airlight_mercator(_e443, _e480);
             k_9 = 0u;
             loop {
-                let _e352 = k_9;
-                if (_e352 < 7u) {
+                let _e484 = k_9;
+                if (_e484 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e355 = k_9;
-                    let _e356 = airlight_mercator_cut(_e355);
-                    let lo_8 = max(_e347, _e356);
-                    let _e358 = k_9;
-                    let _e361 = airlight_mercator_cut((_e358 + 1u));
-                    let hi_9 = min(_e349, _e361);
+                    let _e487 = k_9;
+                    let _e488 = airlight_mercator_cut(_e487);
+                    let lo_8 = max(_e479, _e488);
+                    let _e490 = k_9;
+                    let _e493 = airlight_mercator_cut((_e490 + 1u));
+                    let hi_9 = min(_e481, _e493);
                     if !((lo_8 < hi_9)) {
                         continue;
                     }
                     let c_20 = ((lo_8 + hi_9) * 0.5f);
                     let hw_6 = ((hi_9 - lo_8) * 0.5f);
-                    j_9 = 0u;
+                    j_10 = 0u;
                     loop {
-                        let _e373 = j_9;
-                        if (_e373 < 12u) {
+                        let _e505 = j_10;
+                        if (_e505 < 12u) {
                         } else {
                             break;
                         }
                         {
-                            let _e376 = j_9;
-                            let _e377 = airlight_triangle_rule(_e376);
-                            let x_37 = (c_20 + (hw_6 * _e377.x));
+                            let _e508 = j_10;
+                            let _e509 = airlight_triangle_rule(_e508);
+                            let x_37 = (c_20 + (hw_6 * _e509.x));
                             let e_17 = exp(-(abs(x_37)));
                             let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
                             let th = ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17)));
-                            let _e399 = sum_9;
-                            let _e406 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e311 * sech) + (t_13 * th)));
-                            sum_9 = (_e399 + (((_e377.y * hw_6) * sech) * _e406));
+                            let _e531 = sum_9;
+                            let _e538 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e443 * sech) + (t_14 * th)));
+                            sum_9 = (_e531 + (((_e509.y * hw_6) * sech) * _e538));
                         }
                         continuing {
-                            let _e410 = j_9;
-                            j_9 = (_e410 + 1u);
+                            let _e542 = j_10;
+                            j_10 = (_e542 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e413 = k_9;
-                    k_9 = (_e413 + 1u);
+                    let _e545 = k_9;
+                    k_9 = (_e545 + 1u);
                 }
             }
         }
         continuing {
-            let _e416 = i_34;
-            i_34 = (_e416 + 1u);
+            let _e548 = i_35;
+            i_35 = (_e548 + 1u);
         }
     }
-    let _e418 = sum_9;
-    return _e418;
+    let _e550 = sum_9;
+    return _e550;
 }
 
 fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
@@ -7067,7 +7131,7 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
-    var i_35: u32 = 0u;
+    var i_36: u32 = 0u;
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
@@ -7110,13 +7174,13 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     }
     let k_15 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e73 = i_35;
+        let _e73 = i_36;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e76 = i_35;
+            let _e76 = i_36;
             let _e77 = airlight_azimuths(inside_2, _e76);
             let _e80 = u_6.x;
             let _e84 = u_6.y;
@@ -7138,8 +7202,8 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e127 = i_35;
-            i_35 = (_e127 + 1u);
+            let _e127 = i_36;
+            i_36 = (_e127 + 1u);
         }
     }
     let _e129 = sum_10;
@@ -7150,8 +7214,8 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
     var q_8: vec2<f32>;
     var local_186: bool;
     var sum_11: f32 = 0f;
-    var i_36: u32 = 0u;
-    var j_10: u32;
+    var i_37: u32 = 0u;
+    var j_11: u32;
 
     let rel_1 = (x_26 - a_25.c);
     let z_21 = dot(rel_1, a_25.n);
@@ -7187,45 +7251,45 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     let _e99 = airlight_narrowed(s_42, _e94.rho0_);
     loop {
-        let _e104 = i_36;
+        let _e104 = i_37;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            let _e107 = i_36;
+            let _e107 = i_37;
             let _e109 = q_8;
             let ca = (corners[_e107] - _e109);
-            let _e111 = i_36;
+            let _e111 = i_37;
             let _e115 = q_8;
             let cb_1 = (corners[(_e111 + 1u)] - _e115);
             if !((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin)) {
                 continue;
             }
             let _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_10 = 0u;
+            j_11 = 0u;
             loop {
-                let _e129 = j_10;
+                let _e129 = j_11;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e132 = j_10;
+                    let _e132 = j_11;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_11;
                     let _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e142 = j_10;
-                    j_10 = (_e142 + 1u);
+                    let _e142 = j_11;
+                    j_11 = (_e142 + 1u);
                 }
             }
         }
         continuing {
-            let _e145 = i_36;
-            i_36 = (_e145 + 1u);
+            let _e145 = i_37;
+            i_37 = (_e145 + 1u);
         }
     }
     let _e147 = sum_11;
@@ -7247,7 +7311,7 @@ fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2
 fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
-    var i_37: u32 = 0u;
+    var i_38: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
@@ -7346,13 +7410,13 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
         return _e272;
     }
     loop {
-        let _e275 = i_37;
+        let _e275 = i_38;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e279 = i_37;
+            let _e279 = i_38;
             let _e280 = airlight_azimuths(true, _e279);
             let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
@@ -7457,8 +7521,8 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
             sum_12 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e550 = i_37;
-            i_37 = (_e550 + 1u);
+            let _e550 = i_38;
+            i_38 = (_e550 + 1u);
         }
     }
     let _e552 = sum_12;
@@ -7479,7 +7543,7 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
-    var i_38: u32 = 0u;
+    var i_39: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var start_5: f32;
@@ -7498,13 +7562,13 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_38;
+        let _e47 = i_39;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_38;
+            let _e50 = i_39;
             let _e51 = airlight_azimuths(inside_3, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
@@ -7618,8 +7682,8 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
             sum_13 = (_e284 + (_e285 * _e286));
         }
         continuing {
-            let _e290 = i_38;
-            i_38 = (_e290 + 1u);
+            let _e290 = i_39;
+            i_39 = (_e290 + 1u);
         }
     }
     let _e292 = sum_13;
@@ -7630,7 +7694,7 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_11: u32 = 0u;
+    var j_12: u32 = 0u;
     var local_187: bool;
     var local_188: bool;
     var local_189: bool;
@@ -7646,13 +7710,13 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
     let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_11;
+        let _e32 = j_12;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_11;
+            let _e39 = j_12;
             let lobe_5 = select(a_28.lobes.xy, a_28.lobes.zw, (_e39 == 1u));
             let c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
             let _e48 = chosen;
@@ -7694,8 +7758,8 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
             }
         }
         continuing {
-            let _e92 = j_11;
-            j_11 = (_e92 + 1u);
+            let _e92 = j_12;
+            j_12 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -7730,9 +7794,9 @@ fn airlight_emitter_radiance(s_48: AirlightScene, a_29: AirlightArea, x_28: vec3
 fn airlight_area_node(s_49: AirlightScene, a_30: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
-    let t_14 = (a_30.x_h + along_1);
+    let t_15 = (a_30.x_h + along_1);
     let fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_14 * a_30.d)));
+    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_15 * a_30.d)));
     return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
@@ -7741,7 +7805,7 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     var step_2: u32 = 0u;
     var k_10: f32;
     var gauss_1: f32;
-    var j_12: u32;
+    var j_13: u32;
     var local_192: bool;
 
     let _e1 = airlight_area(s_50);
@@ -7768,19 +7832,19 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
             let hw_9 = (0.5f * (_e34 - _e36));
             k_10 = 0f;
             gauss_1 = 0f;
-            j_12 = 0u;
+            j_13 = 0u;
             loop {
-                let _e46 = j_12;
+                let _e46 = j_13;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_12;
+                    let _e49 = j_13;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_12;
+                    let _e59 = j_13;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_12;
+                        let _e66 = j_13;
                         local_192 = (_e66 < 14u);
                     } else {
                         local_192 = false;
@@ -7794,8 +7858,8 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_12;
-                    j_12 = (_e82 + 1u);
+                    let _e82 = j_13;
+                    j_13 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
@@ -7967,7 +8031,7 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
     var step_3: u32 = 0u;
     var k_11: f32;
     var gauss_2: f32;
-    var j_13: u32;
+    var j_14: u32;
     var local_201: bool;
     var f: f32;
     var local_202: bool;
@@ -8005,19 +8069,19 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
             let hw_10 = (0.5f * (_e49 - _e51));
             k_11 = 0f;
             gauss_2 = 0f;
-            j_13 = 0u;
+            j_14 = 0u;
             loop {
-                let _e61 = j_13;
+                let _e61 = j_14;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_13;
+                    let _e64 = j_14;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_13;
+                    let _e74 = j_14;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_13;
+                        let _e81 = j_14;
                         local_201 = (_e81 < 6u);
                     } else {
                         local_201 = false;
@@ -8050,8 +8114,8 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_13;
-                    j_13 = (_e121 + 1u);
+                    let _e121 = j_14;
+                    j_14 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;

@@ -349,6 +349,39 @@ fn bounded_rectangle_with_the_lobe_next_to_an_edge() {
     }
 }
 
+/// The bounded method on a disc in `g = 0.95` and `0.99` fog, on rays that cross its plane
+/// 0.0005 to 0.01 inside and outside two points of its rim: the phase lobe's point
+/// `q_L` next to the rim. Inside, the half of the chords towards the rim's nearest point is taken
+/// in the angle `β` of its tangent there (over the whole circle in the azimuth, 3.0e-3 off);
+/// `airlight::area::outer`. Within the f32 target 1e-4 of the nested construction at tolerance
+/// 1e-10, in f64 and in f32.
+#[test]
+fn bounded_disc_with_the_lobe_next_to_its_rim() {
+    use airlight::phase::HenyeyGreenstein as Hg;
+    let (corner, eu, ev) = (DVec3::new(6.0, 1.0, -1.0), DVec3::new(0.1, 0.0, 1.0), DVec3::new(0.0, 1.2, 0.1));
+    let (center, normal, radius) = (corner + 0.5 * (eu + ev), eu.cross(ev).normalize(), 0.6);
+    let disc = Emitter::Disc { center, normal, radius };
+    let (across, along) = (eu.normalize(), normal.cross(eu.normalize()));
+    for g in [0.95, 0.99] {
+        for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
+            for dir in [center + across * (radius - offset), center + (across * 0.6 + along * 0.8) * (radius - offset)] {
+                let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
+                let scene = AreaScene::new(ray, AreaLight::new(disc, 2.0), Medium { sigma_s: 0.05, sigma_t: 0.08 }, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
+                let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-10).0);
+                let single = AreaScene::<f32, _>::new(
+                    Ray { origin: Vec3::ZERO, dir: dir.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
+                    AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&disc), 2.0),
+                    Medium { sigma_s: 0.05, sigma_t: 0.08 },
+                    AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
+                )
+                .unwrap()
+                .in_scatter_bounded() as f64;
+                assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "{dir} ({offset} inside), g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
+            }
+        }
+    }
+}
+
 /// The bounded method on a sphere whose elements emit the cosine lobe `c¹⁰²³` (`p = 1024`, 0.03
 /// wide about each element's normal, seen from `x` at the cap's centre, where the `φ` rule is
 /// graded towards it): within the f32 target 1e-4 of the nested construction at tolerance 1e-9

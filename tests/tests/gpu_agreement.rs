@@ -501,6 +501,20 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
             cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.99 rectangle, crossing {offset} {label}")));
         }
     }
+    // a disc of the rectangle's plane in g = 0.95 fog on rays crossing it just inside its rim
+    // (tests/area.rs bounded_disc_with_the_lobe_next_to_its_rim)
+    let centre = corner + 0.5 * (edge_u + edge_v);
+    let disc = AreaLight::new(Emitter::Disc { center: centre, normal: edge_u.cross(edge_v), radius: 0.6 }, 2.0);
+    for offset in [0.0005f32, 0.002] {
+        let dir = centre + edge_u.normalize() * (0.6 - offset);
+        let medium = Medium { sigma_s: 0.05f32, sigma_t: 0.08 };
+        let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, disc, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.95 })).unwrap();
+        let light = AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&disc.emitter), 2.0);
+        let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
+        let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
+        let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.95f32 as f64 })).unwrap();
+        cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.95 disc, crossing {offset} inside its rim")));
+    }
     cases
 }
 

@@ -2990,13 +2990,20 @@ fn airlight_edge_rule(a: vec2<f32>, b: vec2<f32>, width: f32) -> AirlightEdgeRul
 fn airlight_edge_node(rule: AirlightEdgeRule, j: u32) -> vec4<f32> {
     let node = airlight_triangle_rule(j);
     let hw = 0.5 * (rule.last - rule.first);
+    let at = airlight_edge_at(rule, 0.5 * (rule.first + rule.last) + hw * node.x);
+    return vec4<f32>(at.xyz, node.y * hw * at.w);
+}
+
+/// The point of that rule's line at β: (its direction, its distance r, dψ/dβ) (outer.rs
+/// `line_rule`).
+fn airlight_edge_at(rule: AirlightEdgeRule, beta: f32) -> vec4<f32> {
     // (cos β, sin β) from the half turn's (−sin, cos) at β + π/2 ∈ (0, π)
-    let turn = airlight_cos_sin_half_turn(0.5 * (rule.first + rule.last) + hw * node.x + 0.5 * AIRLIGHT_PI);
+    let turn = airlight_cos_sin_half_turn(beta + 0.5 * AIRLIGHT_PI);
     let sigma = rule.reach * -turn.x / turn.y;
     let r2 = rule.h * rule.h + sigma * sigma;
     let r = sqrt(r2);
     let m = vec2<f32>(rule.t.y, -rule.t.x);
-    return vec4<f32>((rule.h * m + sigma * rule.t) / r, r, node.y * hw * rule.h * rule.reach / (turn.y * turn.y * r2));
+    return vec4<f32>((rule.h * m + sigma * rule.t) / r, r, rule.h * rule.reach / (turn.y * turn.y * r2));
 }
 
 /// A flat emitter's outline in its plane's coordinates about x's foot (outer.rs `Outline`): a
@@ -3191,9 +3198,33 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
     var sum = 0.0;
     if (o.radius > 0.0) {
         if (lobe.on_emitter) {
+            // the half of the directions towards the rim's nearest point in the angle β of its
+            // tangent there (in the lobe's plane the line h n + σ t, σ = D tan β,
+            // D = hypot(h, min(L s, the half chord of the rim along the tangent through q_L))),
+            // the far half in ψ
+            let dq = q - o.corners[0];
+            let d = sqrt(dot(dq, dq));
+            var m = vec2<f32>(1.0, 0.0);
+            if (d > 0.0) { m = dq / d; }
+            let rim_e = o.corners[0] + o.radius * m - q;
+            let rim = vec2<f32>(dot(rim_e, u.xy), dot(rim_e, v.xy));
+            let along_rim = vec2<f32>(-m.y * u.x + m.x * u.y, -m.y * v.x + m.x * v.y);
+            let tl = sqrt(dot(along_rim, along_rim));
+            var t = along_rim / tl;
+            if (t.y * rim.x - t.x * rim.y < 0.0) { t = -t; }
+            let h = t.y * rim.x - t.x * rim.y;
+            let half_chord = tl * sqrt(max((o.radius - d) * (o.radius + d), 0.0));
+            let width = min(lobe.l * lobe.scale, half_chord);
+            let rule = AirlightEdgeRule(h, t, sqrt(h * h + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
+            for (var j = 0u; j < 16u; j++) {
+                let node = airlight_radial_rule(j);
+                let at = airlight_edge_at(rule, 0.5 * AIRLIGHT_PI * node.x);
+                sum += node.y * 0.5 * AIRLIGHT_PI * at.w * airlight_flat_lobe_along(s, z, o, lobe, u, v, at.xy);
+            }
+            let n = vec2<f32>(t.y, -t.x);
             for (var i = 0u; i < 32u; i++) {
-                let az = airlight_azimuths(true, i);
-                sum += az.z * airlight_flat_lobe_along(s, z, o, lobe, u, v, az.xy);
+                let az = airlight_azimuths(false, i);
+                sum += az.z * airlight_flat_lobe_along(s, z, o, lobe, u, v, -(n * az.x + t * az.y));
             }
             return sum;
         }
@@ -3287,6 +3318,12 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         }
     }
     return sum;
+}
+
+/// outer.rs RADIAL (Gauss–Legendre, 16 points) on [−1, 1]: (x, weight).
+fn airlight_radial_rule(i: u32) -> vec2<f32> {
+    let rule = array<vec2<f32>, 16>(@RADIAL_RULE@);
+    return rule[i];
 }
 
 /// outer.rs `MERCATOR_CUTS[k]`.

@@ -318,6 +318,7 @@ impl Constants {
             ("@RADIAL_CAP_ROWS@", unrolled::gauss_lines(radial, "    rows[@K@] = airlight_cap_row(s, cap, graded, @NODE@, @W@ * hw);\n")),
             ("@RADIAL_CAP_CONSTANT@", unrolled::gauss_lines(radial, "        sum += rows[@K@].x * around;\n")),
             ("@RADIAL_CAP_AROUND@", unrolled::gauss_lines(radial, "        at += rows[@K@].x * airlight_area_phase(s, rows[@K@].y * ad + rows[@K@].z * across);\n")),
+            ("@RADIAL_RULE@", list(radial.iter().flat_map(|&(x, w)| [(-x, w), (x, w)]).map(|(x, w)| format!("vec2<f32>({}, {})", f(x), f(w))).collect())),
             ("@RADIAL_FLAT_LOBE@", unrolled::gauss_lines(radial, "    sum += @W@ * hw * airlight_flat_lobe_node(s, z, lobe, k, start, graded, @NODE@);\n")),
             ("@RADIAL_LOBE@", unrolled::gauss_lines(radial, "        around += @W@ * hw * airlight_sphere_lobe_node(s, cap, sign, cos_p, big_b, start, graded, @NODE@);\n")),
             ("@SURFACE_NONE@", l::SURFACE_NONE.to_string()),

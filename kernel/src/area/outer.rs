@@ -124,13 +124,19 @@ fn graded_from<T: Real>(scale: T, from: T, to: T, mut f: impl FnMut(T, T, T)) {
 /// chords of a sliver (an origin near the edge's line) grow from `h` to the edge's length within
 /// `h/length` radians; in `β` they are flat over `D` ([`parallelogram`]'s triangles, `width` the
 /// narrowed `ρ₀`; [`flat_about_lobe`]'s wedges, `width` the lobe's footprint `L s`; DESIGN.md §12).
-fn edge_rule<T: Real>(a: (T, T), b: (T, T), width: T, mut f: impl FnMut((T, T), T, T)) {
+fn edge_rule<T: Real>(a: (T, T), b: (T, T), width: T, f: impl FnMut((T, T), T, T)) {
     let e = (b.0 - a.0, b.1 - a.1);
     let el = e.0.hypot(e.1);
-    let (h, m, t) = ((a.0 * b.1 - a.1 * b.0) / el, (e.1 / el, -e.0 / el), (e.0 / el, e.1 / el));
+    let (h, t) = ((a.0 * b.1 - a.1 * b.0) / el, (e.0 / el, e.1 / el));
     let reach = h.hypot(width);
-    let ends = [a, b].map(|c| ((c.0 * t.0 + c.1 * t.1) / reach).atan());
-    each_node(&TRIANGLE_AZIMUTHAL, ends[0], ends[1], |beta, w| {
+    line_rule(&TRIANGLE_AZIMUTHAL, h, t, reach, [a, b].map(|c| ((c.0 * t.0 + c.1 * t.1) / reach).atan()), f);
+}
+
+/// [`edge_rule`] on the line `h m + σ t` (`m = (t.1, −t.0)`) from `β = ends[0]` to `ends[1]`,
+/// `σ = D tan β` (`D` = `reach`).
+fn line_rule<T: Real>(rule: &[(f64, f64)], h: T, t: (T, T), reach: T, ends: [T; 2], mut f: impl FnMut((T, T), T, T)) {
+    let m = (t.1, -t.0);
+    each_node(rule, ends[0], ends[1], |beta, w| {
         let (sin, cos) = sin_cos_turns(beta);
         let sigma = reach * sin / cos;
         let r2 = h * h + sigma * sigma;
@@ -518,9 +524,12 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
 /// emitter's plane in the half-line `q_L + r (w_ψ + k p)`, `k = −(w_ψ·n)/(p·n)`, on which
 /// `tan θ = r/(L + k r)`; there the distance is `z/c` and the emitted cosine
 /// `c = −(p·n)(cos θ − k sin θ)`. Each `θ` range (the emitter's chord of that half-line), graded
-/// from its start by `θ = θ_a + max(s, θ_a) tan γ`, by [`RADIAL`]; `ψ` over the whole circle
-/// ([`AZIMUTHAL`]) if `q_L` is on a disc, else over the wedge of the disc's tangents from it
-/// (`ψ = ψ_m + Ψ sin φ`, the chords close like a square root there). A parallelogram holding
+/// from its start by `θ = θ_a + max(s, θ_a) tan γ`, by [`RADIAL`]. A disc holding `q_L`: the half
+/// of the directions towards the rim's nearest point in the angle `β` of the rim's tangent there
+/// ([`line_rule`] by [`RADIAL`]; `D = hypot(h, min(L s, the rim's half chord along the tangent
+/// through q_L))`, the chords' longest), the far half in `ψ` ([`AZIMUTHAL`]); off it, over the
+/// wedge of the disc's tangents from `q_L` (`ψ = ψ_m + Ψ sin φ`, the chords close like a square
+/// root there). A parallelogram holding
 /// `q_L` ([`flat_lobe`]: also where rounding puts it just outside) is taken edge by edge, each
 /// wedge of chords ending on an edge in the angle `β` that edge subtends ([`edge_rule`], as
 /// [`parallelogram`]'s triangles); off it, over the wedges between its corners seen from `q_L`
@@ -553,12 +562,33 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         sum
     };
     let wrap = |a: T| a - (T::PI() + T::PI()) * (a / (T::PI() + T::PI())).round();
+    // a point e of the plane (about q_L) in the lobe's plane: its angle is the azimuth ψ of its
+    // half-plane, its length about L θ
+    let lobe_plane = |e: (T, T)| (e.0 * u[0] + e.1 * u[1], e.0 * v[0] + e.1 * v[1]);
     let mut sum = T::zero();
     match *outline {
         Outline::Circle { c, radius } => {
             if on_emitter {
-                for &(cos, sin, w) in &light.azimuths.circle {
-                    sum = sum + w * along(cos, sin);
+                // the half of the directions towards the rim's nearest point in the angle β of
+                // its tangent there (in the lobe's plane the line h n + σ t, as a
+                // parallelogram's edge: σ = D tan β, D = hypot(h, L s)), the far half in ψ
+                let (dx, dy) = (q.0 - c.0, q.1 - c.1);
+                let d = dx.hypot(dy);
+                let m = if d > T::zero() { (dx / d, dy / d) } else { (T::one(), T::zero()) };
+                let (rim, along_rim) = (lobe_plane((c.0 + radius * m.0 - q.0, c.1 + radius * m.1 - q.1)), lobe_plane((-m.1, m.0)));
+                let tl = along_rim.0.hypot(along_rim.1);
+                // t turned by −π/2 towards the tangent
+                let mut t = (along_rim.0 / tl, along_rim.1 / tl);
+                if t.1 * rim.0 - t.0 * rim.1 < T::zero() {
+                    t = (-t.0, -t.1);
+                }
+                let h = t.1 * rim.0 - t.0 * rim.1;
+                // the chord of the rim parallel to the tangent through q_L: its half
+                let half_chord = tl * ((radius - d) * (radius + d)).max(T::zero()).sqrt();
+                line_rule(&RADIAL, h, t, h.hypot((l * scale).min(half_chord)), [-T::FRAC_PI_2(), T::FRAC_PI_2()], |dir, _, w| sum = sum + w * along(dir.0, dir.1));
+                let n = (t.1, -t.0);
+                for &(cos, sin, w) in &light.azimuths.half {
+                    sum = sum + w * along(-(n.0 * cos + t.0 * sin), -(n.1 * cos + t.1 * sin));
                 }
             } else {
                 // the tangents from q_L, at ±β from the centre's direction
@@ -579,7 +609,7 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             // lobe's plane (a point e ↦ (e·u, e·v): its angle is ψ, its length about L θ) the
             // segment between the corners' images; they turn as a parallelogram's triangles do,
             // with the lobe's footprint L s in place of ρ₀ min(1, s)
-            let lobe_plane = corners.map(|c| ((c.0 - q.0) * u[0] + (c.1 - q.1) * u[1], (c.0 - q.0) * v[0] + (c.1 - q.1) * v[1]));
+            let lobe_plane = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
             // the image keeps or reverses the corners' turn; an edge q_L is on (or outside by
             // rounding, [`flat_lobe`]) has no chords of its own
             let cross = |i: usize| lobe_plane[i].0 * lobe_plane[(i + 1) % 4].1 - lobe_plane[i].1 * lobe_plane[(i + 1) % 4].0;
@@ -595,7 +625,7 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         Outline::Polygon(corners) => {
             // the wedges between the corners' azimuths about the centre's, in order, each in the
             // Mercator angle of the edge its chords enter by
-            let lobe_plane = corners.map(|c| ((c.0 - q.0) * u[0] + (c.1 - q.1) * u[1], (c.0 - q.0) * v[0] + (c.1 - q.1) * v[1]));
+            let lobe_plane = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
             let mid = azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1));
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
