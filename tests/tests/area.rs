@@ -280,6 +280,23 @@ fn bounded_sphere_in_forward_fog() {
     }
 }
 
+/// The bounded method in f64 and in f32 (f32-rounded inputs) and the nested construction at
+/// `tolerance` in f64, on the ray from the origin towards `dir` and `emitter` (radiance 2) in
+/// Henyey–Greenstein fog `g` (σs 0.05, σt 0.08): (bounded, f32 bounded, nested).
+fn bounded_in_both_precisions(dir: DVec3, emitter: Emitter<f64>, g: f64, tolerance: f64) -> (f64, f64, f64) {
+    let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
+    let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
+    let scene = AreaScene::new(ray, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+    let single = AreaScene::<f32, _>::new(
+        Ray { origin: Vec3::ZERO, dir: dir.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
+        AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&emitter), 2.0),
+        Medium { sigma_s: 0.05, sigma_t: 0.08 },
+        AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f32 }),
+    )
+    .unwrap();
+    (scene.in_scatter_bounded(), single.in_scatter_bounded() as f64, scene.in_scatter_counted(tolerance).0)
+}
+
 /// The bounded method on a disc and a rectangle in forward-scattering fog, on rays that look at
 /// their centre, towards their limb and just past it, where the phase lobe's direction meets the
 /// emitter's plane on it or next to it and the method takes the emitter in polar coordinates about
@@ -288,8 +305,6 @@ fn bounded_sphere_in_forward_fog() {
 /// looking at them).
 #[test]
 fn bounded_flat_emitters_in_forward_fog() {
-    use airlight::phase::HenyeyGreenstein as Hg;
-    let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
     let emitters = [
         Emitter::Disc { center: DVec3::new(6.0, 1.5, -0.5), normal: DVec3::new(-1.0, -0.4, 0.1), radius: 0.8 },
         Emitter::Rectangle { corner: DVec3::new(6.0, 1.0, -1.0), edge_u: DVec3::new(0.1, 0.0, 1.0), edge_v: DVec3::new(0.0, 1.2, 0.1) },
@@ -297,17 +312,7 @@ fn bounded_flat_emitters_in_forward_fog() {
     for emitter in emitters {
         for towards in [DVec3::new(6.0, 1.5, -0.5), DVec3::new(6.0, 2.25, -0.3), DVec3::new(6.0, 2.4, -0.5)] {
             for g in [0.95, 0.99] {
-                let ray = Ray { origin: DVec3::ZERO, dir: towards, t_min: 0.0, t_max: f64::INFINITY };
-                let scene = AreaScene::new(ray, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
-                let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-9).0);
-                let f32_scene = AreaScene::<f32, _>::new(
-                    Ray { origin: Vec3::ZERO, dir: towards.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
-                    AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&emitter), 2.0),
-                    Medium { sigma_s: 0.05, sigma_t: 0.08 },
-                    AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
-                )
-                .unwrap();
-                let single = f32_scene.in_scatter_bounded() as f64;
+                let (bounded, single, nested) = bounded_in_both_precisions(towards, emitter, g, 1e-9);
                 assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "{emitter:?} towards {towards}, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
             }
         }
@@ -324,7 +329,6 @@ fn bounded_flat_emitters_in_forward_fog() {
 /// 1e-4 of the nested construction at tolerance 1e-10, in f64 and in f32.
 #[test]
 fn bounded_rectangle_with_the_lobe_next_to_an_edge() {
-    use airlight::phase::HenyeyGreenstein as Hg;
     let (corner, eu, ev) = (DVec3::new(6.0, 1.0, -1.0), DVec3::new(0.1, 0.0, 1.0), DVec3::new(0.0, 1.2, 0.1));
     let rect = Emitter::Rectangle { corner, edge_u: eu, edge_v: ev };
     let crossings = [(0.5, 0.0, ev), (1.0, 0.5, -eu), (0.0, 0.0, eu + ev), (1.0, 1.0, -(eu + ev)), (0.0, 0.0, eu), (1.0, 1.0, -ev)];
@@ -332,17 +336,7 @@ fn bounded_rectangle_with_the_lobe_next_to_an_edge() {
         for (u, v, inward) in crossings {
             for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
                 let dir = corner + eu * u + ev * v + inward.normalize() * offset;
-                let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
-                let scene = AreaScene::new(ray, AreaLight::new(rect, 2.0), Medium { sigma_s: 0.05, sigma_t: 0.08 }, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
-                let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-10).0);
-                let single = AreaScene::<f32, _>::new(
-                    Ray { origin: Vec3::ZERO, dir: dir.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
-                    AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&rect), 2.0),
-                    Medium { sigma_s: 0.05, sigma_t: 0.08 },
-                    AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
-                )
-                .unwrap()
-                .in_scatter_bounded() as f64;
+                let (bounded, single, nested) = bounded_in_both_precisions(dir, rect, g, 1e-10);
                 assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "({u}, {v}) + {offset} inward, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
             }
         }
@@ -357,7 +351,6 @@ fn bounded_rectangle_with_the_lobe_next_to_an_edge() {
 /// 1e-10, in f64 and in f32.
 #[test]
 fn bounded_disc_with_the_lobe_next_to_its_rim() {
-    use airlight::phase::HenyeyGreenstein as Hg;
     let (corner, eu, ev) = (DVec3::new(6.0, 1.0, -1.0), DVec3::new(0.1, 0.0, 1.0), DVec3::new(0.0, 1.2, 0.1));
     let (center, normal, radius) = (corner + 0.5 * (eu + ev), eu.cross(ev).normalize(), 0.6);
     let disc = Emitter::Disc { center, normal, radius };
@@ -365,17 +358,7 @@ fn bounded_disc_with_the_lobe_next_to_its_rim() {
     for g in [0.95, 0.99] {
         for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
             for dir in [center + across * (radius - offset), center + (across * 0.6 + along * 0.8) * (radius - offset)] {
-                let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
-                let scene = AreaScene::new(ray, AreaLight::new(disc, 2.0), Medium { sigma_s: 0.05, sigma_t: 0.08 }, AnyPhase::HenyeyGreenstein(Hg { g })).unwrap();
-                let (bounded, nested) = (scene.in_scatter_bounded(), scene.in_scatter_counted(1e-10).0);
-                let single = AreaScene::<f32, _>::new(
-                    Ray { origin: Vec3::ZERO, dir: dir.as_vec3(), t_min: 0.0, t_max: f32::INFINITY },
-                    AreaLight::new(airlight::record::cast_emitter::<f64, f32>(&disc), 2.0),
-                    Medium { sigma_s: 0.05, sigma_t: 0.08 },
-                    AnyPhase::HenyeyGreenstein(Hg { g: g as f32 }),
-                )
-                .unwrap()
-                .in_scatter_bounded() as f64;
+                let (bounded, single, nested) = bounded_in_both_precisions(dir, disc, g, 1e-10);
                 assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "{dir} ({offset} inside), g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
             }
         }

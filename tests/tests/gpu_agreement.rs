@@ -460,6 +460,18 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
     let emitters = [("disc", Emitter::Disc { center, normal, radius: 0.8 }), ("rectangle", Emitter::Rectangle { corner, edge_u, edge_v })];
     let rays = [("at", Vec3::new(6.0, 1.5, -0.5)), ("limb", Vec3::new(6.0, 2.25, -0.3)), ("past the limb", Vec3::new(6.0, 2.4, -0.5)), ("beside", Vec3::new(1.0, 0.0, 0.3))];
     let lights = [(0.9f32, 1u32), (0.95, 1), (0.99, 1), (0.0, 1024)];
+    // the f32 scene of the ray from the origin towards `dir` (σs 0.05, σt 0.08, radiance 2) and
+    // the nested construction's value on its f32 inputs at tolerance 1e-9
+    let case = |emitter: Emitter<f32>, emission: Emission, dir: Vec3, g: f32, label: String| {
+        let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
+        let light = AreaLight { emission, ..AreaLight::new(emitter, 2.0) };
+        let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+        let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
+        let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
+        let light = AreaLight { emission, ..AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&emitter), 2.0) };
+        let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 })).unwrap();
+        (single, double.in_scatter_counted(1e-9).0, label)
+    };
     let mut cases = Vec::new();
     for (g, power) in lights {
         let emission = if power == 1 { Emission::Lambertian } else { Emission::CosineLobe { power } };
@@ -468,21 +480,14 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
                 if g >= 0.95 && label != "beside" {
                     continue;
                 }
-                let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
-                let light = AreaLight { emission, ..AreaLight::new(emitter, 2.0) };
-                let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
-                let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
-                let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
-                let light = AreaLight { emission, ..AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&emitter), 2.0) };
-                let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 })).unwrap();
-                cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} p = {power} {name} {label}")));
+                cases.push(case(emitter, emission, dir, g, format!("g = {g} p = {power} {name} {label}")));
             }
         }
     }
     // the rectangle in g = 0.99 fog on rays crossing its plane just inside and outside an edge's
     // middle, inside a corner and on an edge by a corner (tests/area.rs
     // bounded_rectangle_with_the_lobe_next_to_an_edge)
-    let rectangle = AreaLight::new(Emitter::Rectangle { corner, edge_u, edge_v }, 2.0);
+    let rectangle = Emitter::Rectangle { corner, edge_u, edge_v };
     let crossings = [
         ("inside an edge", corner + 0.5 * edge_u, edge_v),
         ("outside an edge", corner + 0.5 * edge_u, -edge_v),
@@ -491,29 +496,15 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
     ];
     for (label, inside, inward) in crossings {
         for offset in [0.0005f32, 0.002] {
-            let dir = inside + inward.normalize() * offset;
-            let medium = Medium { sigma_s: 0.05f32, sigma_t: 0.08 };
-            let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, rectangle, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99 })).unwrap();
-            let light = AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&rectangle.emitter), 2.0);
-            let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
-            let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
-            let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99f32 as f64 })).unwrap();
-            cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.99 rectangle, crossing {offset} {label}")));
+            cases.push(case(rectangle, Emission::Lambertian, inside + inward.normalize() * offset, 0.99, format!("g = 0.99 rectangle, crossing {offset} {label}")));
         }
     }
     // a disc of the rectangle's plane in g = 0.95 fog on rays crossing it just inside its rim
     // (tests/area.rs bounded_disc_with_the_lobe_next_to_its_rim)
     let centre = corner + 0.5 * (edge_u + edge_v);
-    let disc = AreaLight::new(Emitter::Disc { center: centre, normal: edge_u.cross(edge_v), radius: 0.6 }, 2.0);
+    let disc = Emitter::Disc { center: centre, normal: edge_u.cross(edge_v), radius: 0.6 };
     for offset in [0.0005f32, 0.002] {
-        let dir = centre + edge_u.normalize() * (0.6 - offset);
-        let medium = Medium { sigma_s: 0.05f32, sigma_t: 0.08 };
-        let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: f32::INFINITY }, disc, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.95 })).unwrap();
-        let light = AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&disc.emitter), 2.0);
-        let ray = Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: f64::INFINITY };
-        let medium = Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 };
-        let double = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.95f32 as f64 })).unwrap();
-        cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.95 disc, crossing {offset} inside its rim")));
+        cases.push(case(disc, Emission::Lambertian, centre + edge_u.normalize() * (0.6 - offset), 0.95, format!("g = 0.95 disc, crossing {offset} inside its rim")));
     }
     cases
 }
