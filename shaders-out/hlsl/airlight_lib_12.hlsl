@@ -269,6 +269,13 @@ struct AirlightEdgeRule {
     int _end_pad_0;
 };
 
+struct AirlightChordEdges {
+    float2 entry;
+    float2 exit;
+    float exit_h;
+    int _end_pad_0;
+};
+
 struct AirlightCap {
     float3 a;
     float dc;
@@ -859,8 +866,8 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float _e13 = r2_1;
     const uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    float2 b_15 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
-    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_15);
+    float2 b_16 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
+    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_16);
     const float2 _e33 = airlight_cmul(_e29, _e29);
     const float2 _e35 = airlight_csqrt((float2(1.0, 0.0) - _e33));
     root = _e35;
@@ -870,7 +877,7 @@ float2 airlight_e1_scaled_cf(float2 z_6)
         root = -(_e41);
     }
     float2 _e46 = root;
-    const float2 _e48 = airlight_cmul(b_15, (float2(1.0, 0.0) + _e46));
+    const float2 _e48 = airlight_cmul(b_16, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -945,12 +952,12 @@ float airlight_en_scaled_cf(float x_4, uint n)
     const uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_7 = float(_e2);
-    float b_16 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
-    float a_31 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
-    float disc = (1.0 - ((4.0 * a_31) / (b_16 * b_16)));
-    t_2 = b_16;
+    float b_17 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
+    float a_32 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
+    float disc = (1.0 - ((4.0 * a_32) / (b_17 * b_17)));
+    t_2 = b_17;
     if ((disc > 0.0)) {
-        t_2 = ((b_16 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_17 * (1.0 + sqrt(disc))) * 0.5);
     }
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1142,11 +1149,11 @@ airlight_ret_airlight_en_scaled airlight_en_scaled(float x_5)
 float airlight_hg_base(float g_2, float om, float op)
 {
     if ((g_2 >= 0.0)) {
-        float a_32 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_32 * a_32));
+        float a_33 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_33 * a_33));
     }
-    float b_17 = (1.0 + g_2);
-    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
+    float b_18 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
 }
 
 float airlight_hg(float g_3, float om_1, float op_1)
@@ -1271,11 +1278,11 @@ float airlight_singular_height(float side, float gap, float sigma)
 
 float airlight_hg_gap(float g_4)
 {
-    float a_33 = abs(g_4);
-    if (!((a_33 > 0.0))) {
+    float a_34 = abs(g_4);
+    if (!((a_34 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_33) * (1.0 - a_33)) / (a_33 + a_33));
+    return (((1.0 - a_34) * (1.0 - a_34)) / (a_34 + a_34));
 }
 
 float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
@@ -1292,8 +1299,8 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
             break;
         }
         case 3u: {
-            float a_34 = abs(p0_3);
-            const float _e19 = airlight_singular_height(p0_3, ((a_34 > 0.0) ? ((1.0 - a_34) / a_34) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_35 = abs(p0_3);
+            const float _e19 = airlight_singular_height(p0_3, ((a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -2407,8 +2414,8 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
 float airlight_bernstein_rho(float re, float im)
 {
     float im2_ = (im * im);
-    float a_35 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_35 + sqrt(max(((a_35 * a_35) - 1.0), 0.0)));
+    float a_36 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_36 + sqrt(max(((a_36 * a_36) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs)
@@ -3726,9 +3733,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             break;
         }
         case 3u: {
-            float a_36 = abs(p0_4);
+            float a_37 = abs(p0_4);
             float _e145 = psi1_1;
-            const float _e146 = airlight_angle_floor(p0_4, ((a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            const float _e146 = airlight_angle_floor(p0_4, ((a_37 > 0.0) ? ((1.0 - a_37) / a_37) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3884,23 +3891,23 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_37 = (a0_ / scale_3);
-    float b_18 = (b0_ / scale_3);
+    float a_38 = (a0_ / scale_3);
+    float b_19 = (b0_ / scale_3);
     float c_10 = (c0_ / scale_3);
-    float disc_1 = ((b_18 * b_18) - ((4.0 * a_37) * c_10));
+    float disc_1 = ((b_19 * b_19) - ((4.0 * a_38) * c_10));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_18 < 0.0)) {
+    if ((b_19 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_10 = (-0.5 * (b_18 + (_e47 * sqrt(disc_1))));
+    float q_10 = (-0.5 * (b_19 + (_e47 * sqrt(disc_1))));
     if ((q_10 != 0.0)) {
         r1_ = (c_10 / q_10);
     }
-    if ((a_37 != 0.0)) {
-        r2_2 = (q_10 / a_37);
+    if ((a_38 != 0.0)) {
+        r2_2 = (q_10 / a_38);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3947,15 +3954,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_38 = (sigma_11 * g_15.d_el);
+    float a_39 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_38 * a_38) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_38) / d_3);
-    if ((a_38 > 0.0)) {
-        y1_1 = (d_3 / (a_38 + root_1));
+    float root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_39) / d_3);
+    if ((a_39 > 0.0)) {
+        y1_1 = (d_3 / (a_39 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -6049,10 +6056,10 @@ float airlight_asinh(float x_16)
 {
     float r_4 = (float)0;
 
-    float a_39 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_39));
-    if ((a_39 <= 4096.0)) {
-        const float _e17 = airlight_log1p((a_39 + ((a_39 * a_39) / (1.0 + sqrt((1.0 + (a_39 * a_39)))))));
+    float a_40 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
+    if ((a_40 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1.0 + sqrt((1.0 + (a_40 * a_40)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -6080,8 +6087,8 @@ float2 airlight_cos_sin_half_turn(float x_17)
 
 float airlight_acos(float x_18)
 {
-    float a_40 = abs(x_18);
-    const float _e8 = airlight_atan(sqrt(((1.0 - a_40) / (1.0 + a_40))));
+    float a_41 = abs(x_18);
+    const float _e8 = airlight_atan(sqrt(((1.0 - a_41) / (1.0 + a_41))));
     return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -6093,12 +6100,12 @@ float airlight_angle(float c_6, float s_23)
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
 {
-    float a_41 = (cos_a * cos_g);
-    float b_19 = (sin_a * sin_g);
-    if ((b_19 <= abs(a_41))) {
-        return ((a_41 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_42 = (cos_a * cos_g);
+    float b_20 = (sin_a * sin_g);
+    if ((b_20 <= abs(a_42))) {
+        return ((a_42 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    const float _e18 = airlight_acos(clamp((-(a_41) / b_19), -1.0, 1.0));
+    const float _e18 = airlight_acos(clamp((-(a_42) / b_20), -1.0, 1.0));
     return _e18;
 }
 
@@ -6624,7 +6631,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     }
     float _e88 = inner.x;
     float _e90 = inner.y;
-    float edges_1[4] = airlight_Constructarray4_float_(0.0, _e88, _e90, cut_2);
+    float edges_2[4] = airlight_Constructarray4_float_(0.0, _e88, _e90, cut_2);
     bool smoothstep_2 = (exponent_1 < 1.0);
     uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
     bool loop_init_29 = true;
@@ -6645,7 +6652,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            const float _e109 = airlight_lobe_piece(q_11, edges_1[min(uint(_e103), 3u)], edges_1[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            const float _e109 = airlight_lobe_piece(q_11, edges_2[min(uint(_e103), 3u)], edges_2[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -6963,13 +6970,13 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         uint i_40 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
         float t_9 = (x_21 - float(i_40));
-        float a_42 = g_25.gamma[min(uint(i_40), 12u)];
-        float b_20 = g_25.gamma[min(uint((i_40 + 1u)), 12u)];
-        float w_8 = (b_20 - a_42);
+        float a_43 = g_25.gamma[min(uint(i_40), 12u)];
+        float b_21 = g_25.gamma[min(uint((i_40 + 1u)), 12u)];
+        float w_8 = (b_21 - a_43);
         float u_8 = (1.0 - t_9);
         bool smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
         bool smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
         jacobian = (((w_8 * 6.0) * t_9) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -6978,7 +6985,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_42 + ((w_8 * t_9) * t_9)) : _e58);
+        gamma_1 = (_e66 ? (a_43 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6994,7 +7001,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = (_e85 ? (b_20 - ((w_8 * u_8) * u_8)) : _e77);
+        gamma_1 = (_e85 ? (b_21 - ((w_8 * u_8) * u_8)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -7010,7 +7017,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_42 + (w_8 * t_9)) : _e96);
+        gamma_1 = (_e102 ? (a_43 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -7323,8 +7330,8 @@ float4 airlight_phase_lobes(AirlightScene s_34)
             break;
         }
         case 3u: {
-            float a_43 = abs(p0_5);
-            const float2 _e21 = airlight_lobe(p0_5, ((a_43 > 0.0) ? ((1.0 - a_43) / a_43) : AIRLIGHT_FLT_MAX));
+            float a_44 = abs(p0_5);
+            const float2 _e21 = airlight_lobe(p0_5, ((a_44 > 0.0) ? ((1.0 - a_44) / a_44) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -7445,14 +7452,14 @@ AirlightArea airlight_area(AirlightScene s_35)
     if ((s_35.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         float3 _e67 = a_18.c;
         float3 oc = (o_6 - _e67);
-        float b_21 = dot(oc, _e45);
+        float b_22 = dot(oc, _e45);
         float _e72 = a_18.radius;
         float _e74 = a_18.radius;
         float k_12 = (dot(oc, oc) - (_e72 * _e74));
-        float disc_2 = ((b_21 * b_21) - k_12);
+        float disc_2 = ((b_22 * b_22) - k_12);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_12 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            float q_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_2) : root_2));
             cut0_ = q_12;
             cut1_ = (k_12 / q_12);
             cut_count = 2u;
@@ -7726,19 +7733,19 @@ float3 airlight_outline_boundary(AirlightOutline o, float2 q_4)
         }
         {
             uint _e40 = i_28;
-            float2 a_44 = o.corners[min(uint(_e40), 3u)];
+            float2 a_45 = o.corners[min(uint(_e40), 3u)];
             uint _e43 = i_28;
-            float2 e_15 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_44);
+            float2 e_15 = (o.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_45);
             bool _e50 = inside;
             if (_e50) {
-                local_177 = ((((q_4.x - a_44.x) * e_15.y) - ((q_4.y - a_44.y) * e_15.x)) <= 0.0);
+                local_177 = ((((q_4.x - a_45.x) * e_15.y) - ((q_4.y - a_45.y) * e_15.x)) <= 0.0);
             } else {
                 local_177 = false;
             }
             bool _e67 = local_177;
             inside = _e67;
-            float t_11 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
-            float2 p_5 = (a_44 + (t_11 * e_15));
+            float t_11 = clamp(((((q_4.x - a_45.x) * e_15.x) + ((q_4.y - a_45.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
+            float2 p_5 = (a_45 + (t_11 * e_15));
             float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
@@ -7878,17 +7885,17 @@ float2 airlight_outline_chord(AirlightOutline o_3, float2 q_7, float2 e_6)
 
     if ((o_3.radius > 0.0)) {
         float2 qc_1 = (q_7 - o_3.corners[0]);
-        float a_45 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        float b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        float a_46 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        float b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
         float k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        float disc_3 = ((b_22 * b_22) - (a_45 * k_13));
+        float disc_3 = ((b_23 * b_23) - (a_46 * k_13));
         if (!((disc_3 > 0.0))) {
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
-        float t_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_12 / a_45);
+        float t_12 = (-(b_23) - (((asuint(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_12 / a_46);
         float r2_4 = (k_13 / t_12);
         float hi_8 = max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
@@ -8056,19 +8063,27 @@ float4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_6)
 
 float4 airlight_sort4_(float4 x_24)
 {
-    float4 a_46 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
-    float4 b_23 = float4(min(a_46.x, a_46.z), min(a_46.y, a_46.w), max(a_46.x, a_46.z), max(a_46.y, a_46.w));
-    return float4(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
+    float4 a_47 = float4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
+    float4 b_24 = float4(min(a_47.x, a_47.z), min(a_47.y, a_47.w), max(a_47.x, a_47.z), max(a_47.y, a_47.w));
+    return float4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
-float2 airlight_entry_normal(float2 y_6[4], float2 e_8)
+AirlightChordEdges ConstructAirlightChordEdges(float2 arg0, float2 arg1, float arg2) {
+    AirlightChordEdges ret = (AirlightChordEdges)0;
+    ret.entry = arg0;
+    ret.exit = arg1;
+    ret.exit_h = arg2;
+    return ret;
+}
+
+AirlightChordEdges airlight_chord_edges(float2 y_6[4], float2 e_8)
 {
     float nearest_1 = AIRLIGHT_FLT_MAX;
-    float2 normal_3 = (0.0).xx;
+    float farthest = 0.0;
+    AirlightChordEdges edges_1 = ConstructAirlightChordEdges((0.0).xx, (0.0).xx, 0.0);
     uint i_30 = 0u;
     bool local_181 = (bool)0;
     bool local_182 = (bool)0;
-    bool local_183 = (bool)0;
 
     uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
     bool loop_init_34 = true;
@@ -8076,54 +8091,59 @@ float2 airlight_entry_normal(float2 y_6[4], float2 e_8)
         if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
         if (!loop_init_34) {
-            uint _e80 = i_30;
-            i_30 = (_e80 + 1u);
+            uint _e88 = i_30;
+            i_30 = (_e88 + 1u);
         }
         loop_init_34 = false;
-        uint _e9 = i_30;
-        if ((_e9 < 4u)) {
+        uint _e15 = i_30;
+        if ((_e15 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e12 = i_30;
-            float2 a_47 = y_6[min(uint(_e12), 3u)];
-            uint _e14 = i_30;
-            float2 d_5 = (y_6[min(uint(airlight_naga_mod((_e14 + 1u), 4u)), 3u)] - a_47);
+            uint _e18 = i_30;
+            float2 a_48 = y_6[min(uint(_e18), 3u)];
+            uint _e20 = i_30;
+            float2 d_5 = (y_6[min(uint(airlight_naga_mod((_e20 + 1u), 4u)), 3u)] - a_48);
             float den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if ((den_1 == 0.0)) {
                 continue;
             }
-            float r_15 = (((a_47.x * d_5.y) - (a_47.y * d_5.x)) / den_1);
-            float along = (((a_47.x * e_8.y) - (a_47.y * e_8.x)) / den_1);
+            float r_15 = (((a_48.x * d_5.y) - (a_48.y * d_5.x)) / den_1);
+            float along = (((a_48.x * e_8.y) - (a_48.y * e_8.x)) / den_1);
             if ((r_15 > 0.0)) {
                 local_181 = (along >= 0.0);
             } else {
                 local_181 = false;
             }
-            bool _e53 = local_181;
-            if (_e53) {
+            bool _e59 = local_181;
+            if (_e59) {
                 local_182 = (along <= 1.0);
             } else {
                 local_182 = false;
             }
-            bool _e59 = local_182;
-            if (_e59) {
-                float _e62 = nearest_1;
-                local_183 = (r_15 < _e62);
-            } else {
-                local_183 = false;
-            }
-            bool _e65 = local_183;
+            bool _e65 = local_182;
             if (_e65) {
-                nearest_1 = r_15;
                 float2 n_7 = (float2(d_5.y, -(d_5.x)) / (sqrt(dot(d_5, d_5))).xx);
-                normal_3 = ((dot(n_7, a_47) < 0.0) ? -(n_7) : n_7);
+                float h_10 = dot(n_7, a_48);
+                float2 outward = ((h_10 < 0.0) ? -(n_7) : n_7);
+                float _e79 = nearest_1;
+                if ((r_15 < _e79)) {
+                    nearest_1 = r_15;
+                    edges_1.entry = outward;
+                }
+                float _e82 = farthest;
+                if ((r_15 > _e82)) {
+                    farthest = r_15;
+                    edges_1.exit = outward;
+                    edges_1.exit_h = abs(h_10);
+                }
             }
         }
     }
-    float2 _e82 = normal_3;
-    return _e82;
+    AirlightChordEdges _e90 = edges_1;
+    const AirlightChordEdges airlightchordedges = _e90;
+    return airlightchordedges;
 }
 
 float airlight_mercator_cut(uint k_8)
@@ -8156,8 +8176,14 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
     uint j_8 = (uint)0;
     uint i_35 = 0u;
     uint j_9 = (uint)0;
-    uint k_9 = (uint)0;
+    float merc_first = (float)0;
+    float merc_last = (float)0;
+    bool local_183 = (bool)0;
+    float a_24 = (float)0;
+    float b_15 = (float)0;
     uint j_10 = (uint)0;
+    uint k_9 = (uint)0;
+    uint j_11 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_3.p);
     float3 v_9 = cross(lobe_3.p, _e5);
@@ -8179,110 +8205,116 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             float2 along_rim = float2(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
             float tl = sqrt(dot(along_rim, along_rim));
             t_4 = (along_rim / (tl).xx);
-            float _e67 = t_4.y;
-            float _e71 = t_4.x;
-            if ((((_e67 * rim.x) - (_e71 * rim.y)) < 0.0)) {
-                float2 _e77 = t_4;
-                t_4 = -(_e77);
+            float2 _e66 = m_4;
+            float2 _e69 = m_4;
+            float2 outward_1 = float2(dot(_e66, _e5.xy), dot(_e69, v_9.xy));
+            float _e74 = t_4.y;
+            float _e78 = t_4.x;
+            if ((((_e74 * outward_1.x) - (_e78 * outward_1.y)) < 0.0)) {
+                float2 _e84 = t_4;
+                t_4 = -(_e84);
             }
-            float _e80 = t_4.y;
-            float _e84 = t_4.x;
-            float h_10 = ((_e80 * rim.x) - (_e84 * rim.y));
+            float _e87 = t_4.y;
+            float _e91 = t_4.x;
+            float h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
             float half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0.0)));
             float width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
-            float2 _e101 = t_4;
-            AirlightEdgeRule rule_5 = ConstructAirlightEdgeRule(h_10, _e101, sqrt(((h_10 * h_10) + (width_5 * width_5))), -1.5707964, 1.5707964);
+            float2 _e108 = t_4;
+            AirlightEdgeRule rule_5 = ConstructAirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964, 1.5707964);
             uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
             bool loop_init_35 = true;
             while(true) {
                 if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
                 loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
                 if (!loop_init_35) {
-                    uint _e133 = j_7;
-                    j_7 = (_e133 + 1u);
+                    uint _e143 = j_7;
+                    j_7 = (_e143 + 1u);
                 }
                 loop_init_35 = false;
-                uint _e111 = j_7;
-                if ((_e111 < 16u)) {
+                uint _e118 = j_7;
+                if ((_e118 < 16u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e114 = j_7;
-                    const float2 _e115 = airlight_radial_rule(_e114);
-                    const float4 _e119 = airlight_edge_at(rule_5, (1.5707964 * _e115.x));
-                    float _e120 = sum_9;
-                    const float _e129 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e119.xy);
-                    sum_9 = (_e120 + ((((_e115.y * 0.5) * AIRLIGHT_PI) * _e119.w) * _e129));
+                    if (!((h_11 > 0.0))) {
+                        break;
+                    }
+                    uint _e124 = j_7;
+                    const float2 _e125 = airlight_radial_rule(_e124);
+                    const float4 _e129 = airlight_edge_at(rule_5, (1.5707964 * _e125.x));
+                    float _e130 = sum_9;
+                    const float _e139 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e129.xy);
+                    sum_9 = (_e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
             }
-            float _e136 = t_4.y;
-            float _e138 = t_4.x;
-            float2 n_8 = float2(_e136, -(_e138));
+            float _e146 = t_4.y;
+            float _e148 = t_4.x;
+            float2 n_8 = float2(_e146, -(_e148));
             uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
             bool loop_init_36 = true;
             while(true) {
                 if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
                 loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
                 if (!loop_init_36) {
-                    uint _e162 = i_31;
-                    i_31 = (_e162 + 1u);
+                    uint _e172 = i_31;
+                    i_31 = (_e172 + 1u);
                 }
                 loop_init_36 = false;
-                uint _e143 = i_31;
-                if ((_e143 < 32u)) {
+                uint _e153 = i_31;
+                if ((_e153 < 32u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e147 = i_31;
-                    const float3 _e148 = airlight_azimuths(false, _e147);
-                    float _e149 = sum_9;
-                    float2 _e153 = t_4;
-                    const float _e158 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e148.x) + (_e153 * _e148.y))));
-                    sum_9 = (_e149 + (_e148.z * _e158));
+                    uint _e157 = i_31;
+                    const float3 _e158 = airlight_azimuths(false, _e157);
+                    float _e159 = sum_9;
+                    float2 _e163 = t_4;
+                    const float _e168 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
+                    sum_9 = (_e159 + (_e158.z * _e168));
                 }
             }
-            float _e164 = sum_9;
-            return _e164;
+            float _e174 = sum_9;
+            return _e174;
         }
         float2 d_7 = (o_5.corners[0] - q_14);
         float dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
         float sb_1 = (o_5.radius / dq_3);
         float cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
-        const float _e185 = airlight_lobe_azimuth(_e5, v_9, d_7);
-        const float _e197 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
-        const float _e199 = airlight_wrap_turn((_e197 - _e185));
-        const float _e211 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
-        const float _e213 = airlight_wrap_turn((_e211 - _e185));
-        float centre_2 = (_e185 + ((_e199 + _e213) * 0.5));
-        float half_19 = (abs((_e199 - _e213)) * 0.5);
+        const float _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
+        const float _e207 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        const float _e209 = airlight_wrap_turn((_e207 - _e195));
+        const float _e221 = airlight_lobe_azimuth(_e5, v_9, float2(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        const float _e223 = airlight_wrap_turn((_e221 - _e195));
+        float centre_2 = (_e195 + ((_e209 + _e223) * 0.5));
+        float half_19 = (abs((_e209 - _e223)) * 0.5);
         uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
         bool loop_init_37 = true;
         while(true) {
             if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
             loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
             if (!loop_init_37) {
-                uint _e243 = i_32;
-                i_32 = (_e243 + 1u);
+                uint _e253 = i_32;
+                i_32 = (_e253 + 1u);
             }
             loop_init_37 = false;
-            uint _e224 = i_32;
-            if ((_e224 < 32u)) {
+            uint _e234 = i_32;
+            if ((_e234 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e228 = i_32;
-                const float3 _e229 = airlight_azimuths(false, _e228);
-                float _e230 = sum_9;
-                const float2 _e238 = airlight_cos_sin_turns((centre_2 + (half_19 * _e229.y)));
-                const float _e239 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e238);
-                sum_9 = (_e230 + (((_e229.z * half_19) * _e229.x) * _e239));
+                uint _e238 = i_32;
+                const float3 _e239 = airlight_azimuths(false, _e238);
+                float _e240 = sum_9;
+                const float2 _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
+                const float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e248);
+                sum_9 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
         }
-        float _e245 = sum_9;
-        return _e245;
+        float _e255 = sum_9;
+        return _e255;
     }
     float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), float2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), float2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), float2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
     if (lobe_3.on_emitter) {
@@ -8292,63 +8324,63 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
             loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
             if (!loop_init_38) {
-                uint _e320 = i_33;
-                i_33 = (_e320 + 1u);
+                uint _e330 = i_33;
+                i_33 = (_e330 + 1u);
             }
             loop_init_38 = false;
-            uint _e297 = i_33;
-            if ((_e297 < 4u)) {
+            uint _e307 = i_33;
+            if ((_e307 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e300 = i_33;
-                float2 b_24 = y_14[min(uint(airlight_naga_mod((_e300 + 1u), 4u)), 3u)];
-                uint _e306 = i_33;
-                uint _e308 = i_33;
-                uint _e313 = i_33;
-                area[min(uint(_e306), 3u)] = ((y_14[min(uint(_e308), 3u)].x * b_24.y) - (y_14[min(uint(_e313), 3u)].y * b_24.x));
+                uint _e310 = i_33;
+                float2 b_25 = y_14[min(uint(airlight_naga_mod((_e310 + 1u), 4u)), 3u)];
+                uint _e316 = i_33;
+                uint _e318 = i_33;
+                uint _e323 = i_33;
+                area[min(uint(_e316), 3u)] = ((y_14[min(uint(_e318), 3u)].x * b_25.y) - (y_14[min(uint(_e323), 3u)].y * b_25.x));
             }
         }
-        float _e323 = area.x;
-        float _e325 = area.y;
-        float _e328 = area.z;
-        float _e331 = area.w;
-        float turn = (((_e323 + _e325) + _e328) + _e331);
+        float _e333 = area.x;
+        float _e335 = area.y;
+        float _e338 = area.z;
+        float _e341 = area.w;
+        float turn = (((_e333 + _e335) + _e338) + _e341);
         uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
         bool loop_init_39 = true;
         while(true) {
             if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
             loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
             if (!loop_init_39) {
-                uint _e388 = i_34;
-                i_34 = (_e388 + 1u);
+                uint _e398 = i_34;
+                i_34 = (_e398 + 1u);
             }
             loop_init_39 = false;
-            uint _e335 = i_34;
-            if ((_e335 < 4u)) {
+            uint _e345 = i_34;
+            if ((_e345 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e338 = i_34;
-                float _e340 = area[min(uint(_e338), 3u)];
-                if (!(((_e340 * turn) > 0.0))) {
+                uint _e348 = i_34;
+                float _e350 = area[min(uint(_e348), 3u)];
+                if (!(((_e350 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e345 = i_34;
-                ya = y_14[min(uint(_e345), 3u)];
-                uint _e348 = i_34;
-                yb = y_14[min(uint(airlight_naga_mod((_e348 + 1u), 4u)), 3u)];
+                uint _e355 = i_34;
+                ya = y_14[min(uint(_e355), 3u)];
+                uint _e358 = i_34;
+                yb = y_14[min(uint(airlight_naga_mod((_e358 + 1u), 4u)), 3u)];
                 if ((turn < 0.0)) {
-                    uint _e357 = i_34;
-                    ya = y_14[min(uint(airlight_naga_mod((_e357 + 1u), 4u)), 3u)];
-                    uint _e363 = i_34;
-                    yb = y_14[min(uint(_e363), 3u)];
+                    uint _e367 = i_34;
+                    ya = y_14[min(uint(airlight_naga_mod((_e367 + 1u), 4u)), 3u)];
+                    uint _e373 = i_34;
+                    yb = y_14[min(uint(_e373), 3u)];
                 }
-                float2 _e365 = ya;
-                float2 _e366 = yb;
-                const AirlightEdgeRule _e370 = airlight_edge_rule(_e365, _e366, (lobe_3.l * lobe_3.scale));
+                float2 _e375 = ya;
+                float2 _e376 = yb;
+                const AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, (lobe_3.l * lobe_3.scale));
                 j_8 = 0u;
                 uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
                 bool loop_init_40 = true;
@@ -8356,61 +8388,62 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
                     loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
                     if (!loop_init_40) {
-                        uint _e385 = j_8;
-                        j_8 = (_e385 + 1u);
+                        uint _e395 = j_8;
+                        j_8 = (_e395 + 1u);
                     }
                     loop_init_40 = false;
-                    uint _e373 = j_8;
-                    if ((_e373 < 12u)) {
+                    uint _e383 = j_8;
+                    if ((_e383 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e376 = j_8;
-                        const float4 _e377 = airlight_edge_node(_e370, _e376);
-                        float _e378 = sum_9;
-                        const float _e381 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e377.xy);
-                        sum_9 = (_e378 + (_e377.w * _e381));
+                        uint _e386 = j_8;
+                        const float4 _e387 = airlight_edge_node(_e380, _e386);
+                        float _e388 = sum_9;
+                        const float _e391 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e387.xy);
+                        sum_9 = (_e388 + (_e387.w * _e391));
                     }
                 }
             }
         }
-        float _e390 = sum_9;
-        return _e390;
+        float _e400 = sum_9;
+        return _e400;
     }
-    const float _e399 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    const float _e403 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    const float _e405 = airlight_wrap_turn((_e403 - _e399));
-    const float _e409 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    const float _e411 = airlight_wrap_turn((_e409 - _e399));
-    const float _e415 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    const float _e417 = airlight_wrap_turn((_e415 - _e399));
-    const float _e421 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    const float _e423 = airlight_wrap_turn((_e421 - _e399));
-    const float4 _e425 = airlight_sort4_(float4(_e405, _e411, _e417, _e423));
+    const float _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    const float _e413 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    const float _e415 = airlight_wrap_turn((_e413 - _e409));
+    const float _e419 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    const float _e421 = airlight_wrap_turn((_e419 - _e409));
+    const float _e425 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    const float _e427 = airlight_wrap_turn((_e425 - _e409));
+    const float _e431 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    const float _e433 = airlight_wrap_turn((_e431 - _e409));
+    const float4 _e435 = airlight_sort4_(float4(_e415, _e421, _e427, _e433));
     uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
     bool loop_init_41 = true;
     while(true) {
         if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
         loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
         if (!loop_init_41) {
-            uint _e548 = i_35;
-            i_35 = (_e548 + 1u);
+            uint _e639 = i_35;
+            i_35 = (_e639 + 1u);
         }
         loop_init_41 = false;
-        uint _e428 = i_35;
-        if ((_e428 < 3u)) {
+        uint _e438 = i_35;
+        if ((_e438 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e431 = i_35;
-            float first_2 = (_e399 + _e425[min(uint(_e431), 3u)]);
-            uint _e434 = i_35;
-            float last_1 = (_e399 + _e425[min(uint((_e434 + 1u)), 3u)]);
-            const float2 _e442 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
-            const float2 _e443 = airlight_entry_normal(y_14, _e442);
-            if (all((_e443 == (0.0).xx))) {
+            uint _e441 = i_35;
+            float first_2 = (_e409 + _e435[min(uint(_e441), 3u)]);
+            uint _e444 = i_35;
+            float last_1 = (_e409 + _e435[min(uint((_e444 + 1u)), 3u)]);
+            const float2 _e452 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
+            const AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
+            float2 n_9 = _e453.entry;
+            if (all((n_9 == (0.0).xx))) {
                 float c_19 = ((first_2 + last_1) * 0.5);
                 float hw_5 = ((last_1 - first_2) * 0.5);
                 j_9 = 0u;
@@ -8420,93 +8453,151 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
                     loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
                     if (!loop_init_42) {
-                        uint _e472 = j_9;
-                        j_9 = (_e472 + 1u);
+                        uint _e483 = j_9;
+                        j_9 = (_e483 + 1u);
                     }
                     loop_init_42 = false;
-                    uint _e456 = j_9;
-                    if ((_e456 < 12u)) {
+                    uint _e467 = j_9;
+                    if ((_e467 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e459 = j_9;
-                        const float2 _e460 = airlight_triangle_rule(_e459);
-                        float _e461 = sum_9;
-                        const float2 _e467 = airlight_cos_sin_turns((c_19 + (hw_5 * _e460.x)));
-                        const float _e468 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e467);
-                        sum_9 = (_e461 + ((_e460.y * hw_5) * _e468));
+                        uint _e470 = j_9;
+                        const float2 _e471 = airlight_triangle_rule(_e470);
+                        float _e472 = sum_9;
+                        const float2 _e478 = airlight_cos_sin_turns((c_19 + (hw_5 * _e471.x)));
+                        const float _e479 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e478);
+                        sum_9 = (_e472 + ((_e471.y * hw_5) * _e479));
                     }
                 }
                 continue;
             }
-            float2 t_14 = float2(-(_e443.y), _e443.x);
-            const float2 _e478 = airlight_cos_sin_turns(first_2);
-            const float _e479 = airlight_mercator(_e443, _e478);
-            const float2 _e480 = airlight_cos_sin_turns(last_1);
-            const float _e481 = airlight_mercator(_e443, _e480);
-            k_9 = 0u;
-            uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-            bool loop_init_43 = true;
-            while(true) {
-                if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-                if (!loop_init_43) {
-                    uint _e545 = k_9;
-                    k_9 = (_e545 + 1u);
+            merc_first = first_2;
+            merc_last = last_1;
+            float exit_h = _e453.exit_h;
+            if ((exit_h > 0.0)) {
+                local_183 = (exit_h < (lobe_3.l * lobe_3.scale));
+            } else {
+                local_183 = false;
+            }
+            bool _e497 = local_183;
+            if (_e497) {
+                float half_20 = (0.5 * (first_2 + last_1));
+                a_24 = first_2;
+                b_15 = half_20;
+                const float2 _e503 = airlight_cos_sin_turns(first_2);
+                const float2 _e506 = airlight_cos_sin_turns(last_1);
+                if ((dot(_e503, _e453.exit) < dot(_e506, _e453.exit))) {
+                    merc_first = half_20;
+                } else {
+                    a_24 = half_20;
+                    b_15 = last_1;
+                    merc_last = half_20;
                 }
-                loop_init_43 = false;
-                uint _e484 = k_9;
-                if ((_e484 < 7u)) {
+                float2 t2_ = float2(-(_e453.exit.y), _e453.exit.x);
+                float reach_3 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
+                float _e526 = a_24;
+                const float2 _e527 = airlight_cos_sin_turns(_e526);
+                float _e528 = b_15;
+                const float2 _e529 = airlight_cos_sin_turns(_e528);
+                const float _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0.0) * reach_3));
+                const float _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0.0) * reach_3));
+                AirlightEdgeRule rule_6 = ConstructAirlightEdgeRule(exit_h, t2_, reach_3, _e537, _e545);
+                j_10 = 0u;
+                uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+                bool loop_init_43 = true;
+                while(true) {
+                    if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                    loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                    if (!loop_init_43) {
+                        uint _e561 = j_10;
+                        j_10 = (_e561 + 1u);
+                    }
+                    loop_init_43 = false;
+                    uint _e549 = j_10;
+                    if ((_e549 < 12u)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e552 = j_10;
+                        const float4 _e553 = airlight_edge_node(rule_6, _e552);
+                        float _e554 = sum_9;
+                        const float _e557 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e553.xy);
+                        sum_9 = (_e554 + (_e553.w * _e557));
+                    }
+                }
+            }
+            float2 t_14 = float2(-(n_9.y), n_9.x);
+            float _e567 = merc_first;
+            const float2 _e568 = airlight_cos_sin_turns(_e567);
+            const float _e569 = airlight_mercator(n_9, _e568);
+            float _e570 = merc_last;
+            const float2 _e571 = airlight_cos_sin_turns(_e570);
+            const float _e572 = airlight_mercator(n_9, _e571);
+            k_9 = 0u;
+            uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+            bool loop_init_44 = true;
+            while(true) {
+                if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                if (!loop_init_44) {
+                    uint _e636 = k_9;
+                    k_9 = (_e636 + 1u);
+                }
+                loop_init_44 = false;
+                uint _e575 = k_9;
+                if ((_e575 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e487 = k_9;
-                    const float _e488 = airlight_mercator_cut(_e487);
-                    float lo_8 = max(_e479, _e488);
-                    uint _e490 = k_9;
-                    const float _e493 = airlight_mercator_cut((_e490 + 1u));
-                    float hi_9 = min(_e481, _e493);
+                    uint _e578 = k_9;
+                    const float _e579 = airlight_mercator_cut(_e578);
+                    float lo_8 = max(_e569, _e579);
+                    uint _e581 = k_9;
+                    const float _e584 = airlight_mercator_cut((_e581 + 1u));
+                    float hi_9 = min(_e572, _e584);
                     if (!((lo_8 < hi_9))) {
                         continue;
                     }
                     float c_20 = ((lo_8 + hi_9) * 0.5);
                     float hw_6 = ((hi_9 - lo_8) * 0.5);
-                    j_10 = 0u;
-                    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_44 = true;
+                    j_11 = 0u;
+                    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_45 = true;
                     while(true) {
-                        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-                        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                        if (!loop_init_44) {
-                            uint _e542 = j_10;
-                            j_10 = (_e542 + 1u);
+                        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+                        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                        if (!loop_init_45) {
+                            uint _e633 = j_11;
+                            j_11 = (_e633 + 1u);
                         }
-                        loop_init_44 = false;
-                        uint _e505 = j_10;
-                        if ((_e505 < 12u)) {
+                        loop_init_45 = false;
+                        uint _e596 = j_11;
+                        if ((_e596 < 12u)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e508 = j_10;
-                            const float2 _e509 = airlight_triangle_rule(_e508);
-                            float x_37 = (c_20 + (hw_6 * _e509.x));
+                            uint _e599 = j_11;
+                            const float2 _e600 = airlight_triangle_rule(_e599);
+                            float x_37 = (c_20 + (hw_6 * _e600.x));
                             float e_17 = exp(-(abs(x_37)));
                             float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
                             float th = ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)));
-                            float _e531 = sum_9;
-                            const float _e538 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e443 * sech) + (t_14 * th)));
-                            sum_9 = (_e531 + (((_e509.y * hw_6) * sech) * _e538));
+                            float _e622 = sum_9;
+                            const float _e629 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
+                            sum_9 = (_e622 + (((_e600.y * hw_6) * sech) * _e629));
                         }
                     }
                 }
             }
         }
     }
-    float _e550 = sum_9;
-    return _e550;
+    float _e641 = sum_9;
+    return _e641;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -8516,7 +8607,7 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
+float airlight_disc(AirlightScene s_41, AirlightArea a_25, float3 x_25)
 {
     bool local_184 = (bool)0;
     bool local_185 = (bool)0;
@@ -8527,18 +8618,18 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     float2 e_9 = (float2)0;
     float r_max_1 = (float)0;
 
-    float3 rel = (x_25 - a_24.c);
-    float z_20 = dot(rel, a_24.n);
+    float3 rel = (x_25 - a_25.c);
+    float z_20 = dot(rel, a_25.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
     }
-    float fx = dot(rel, a_24.a1_);
-    float fy_1 = dot(rel, a_24.a2_);
+    float fx = dot(rel, a_25.a1_);
+    float fy_1 = dot(rel, a_25.a2_);
     float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    float radius_2 = a_24.radius;
+    float radius_2 = a_25.radius;
     float2 zero_1 = (0.0).xx;
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_24, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
+    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_25, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
         const float _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
         return _e34;
@@ -8565,16 +8656,16 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+    bool loop_init_46 = true;
     while(true) {
-        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
+        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+        if (!loop_init_46) {
             uint _e127 = i_36;
             i_36 = (_e127 + 1u);
         }
-        loop_init_45 = false;
+        loop_init_46 = false;
         uint _e73 = i_36;
         if ((_e73 < 32u)) {
         } else {
@@ -8591,15 +8682,15 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_2) {
                 e_9 = _e77.xy;
-                float b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                float root_4 = sqrt(((b_25 * b_25) - k_15));
-                r_max_1 = ((b_25 > 0.0) ? (-(k_15) / (b_25 + root_4)) : (root_4 - b_25));
+                float b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                float root_4 = sqrt(((b_26 * b_26) - k_15));
+                r_max_1 = ((b_26 > 0.0) ? (-(k_15) / (b_26 + root_4)) : (root_4 - b_26));
             }
             float _e118 = sum_10;
             AirlightAbove _e120 = above_3;
             float2 _e121 = e_9;
             float _e122 = r_max_1;
-            const float _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
+            const float _e123 = airlight_flat_radial(s_41, a_25, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -8607,27 +8698,27 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_24, float3 x_25)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
+float airlight_parallelogram(AirlightScene s_42, AirlightArea a_26, float3 x_26)
 {
     float2 q_8 = (float2)0;
     bool local_186 = (bool)0;
     float sum_11 = 0.0;
     uint i_37 = 0u;
-    uint j_11 = (uint)0;
+    uint j_12 = (uint)0;
 
-    float3 rel_1 = (x_26 - a_25.c);
-    float z_21 = dot(rel_1, a_25.n);
+    float3 rel_1 = (x_26 - a_26.c);
+    float z_21 = dot(rel_1, a_26.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    float2 foot = float2(dot(rel_1, a_25.a1_), dot(rel_1, a_25.a2_));
-    float2 u2_ = float2(dot(a_25.eu, a_25.a1_), dot(a_25.eu, a_25.a2_));
-    float2 v2_ = float2(dot(a_25.ev, a_25.a1_), dot(a_25.ev, a_25.a2_));
+    float2 foot = float2(dot(rel_1, a_26.a1_), dot(rel_1, a_26.a2_));
+    float2 u2_ = float2(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
+    float2 v2_ = float2(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
     float2 corners[5] = airlight_Constructarray5_float2_((0.0).xx, u2_, (u2_ + v2_), v2_, (0.0).xx);
     float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
     AirlightOutline about_foot = ConstructAirlightOutline(airlight_Constructarray4_float2_((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_25, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
+    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_26, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
     if ((_e69.scale > 0.0)) {
         const float _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
         return _e73;
@@ -8648,16 +8739,16 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
     const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     const float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-    bool loop_init_46 = true;
+    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+    bool loop_init_47 = true;
     while(true) {
-        if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-        if (!loop_init_46) {
+        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+        if (!loop_init_47) {
             uint _e145 = i_37;
             i_37 = (_e145 + 1u);
         }
-        loop_init_46 = false;
+        loop_init_47 = false;
         uint _e104 = i_37;
         if ((_e104 < 4u)) {
         } else {
@@ -8674,27 +8765,27 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_25, float3 x_26)
                 continue;
             }
             const AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_11 = 0u;
-            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_47 = true;
+            j_12 = 0u;
+            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+            bool loop_init_48 = true;
             while(true) {
-                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_47) {
-                    uint _e142 = j_11;
-                    j_11 = (_e142 + 1u);
+                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+                if (!loop_init_48) {
+                    uint _e142 = j_12;
+                    j_12 = (_e142 + 1u);
                 }
-                loop_init_47 = false;
-                uint _e129 = j_11;
+                loop_init_48 = false;
+                uint _e129 = j_12;
                 if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_11;
+                    uint _e132 = j_12;
                     const float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
-                    const float _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
+                    const float _e138 = airlight_flat_radial(s_42, a_26, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
             }
@@ -8723,7 +8814,7 @@ airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 a
     return ret;
 }
 
-float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap_1)
+float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_27, AirlightCap cap_1)
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_12 = 0.0;
@@ -8732,9 +8823,9 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
     float3 e2_2 = cross(cap_1.a, _e4);
-    float ad = dot(cap_1.a, a_26.d);
-    float e1d = dot(_e4, a_26.d);
-    float e2d = dot(e2_2, a_26.d);
+    float ad = dot(cap_1.a, a_27.d);
+    float e1d = dot(_e4, a_27.d);
+    float e2d = dot(e2_2, a_27.d);
     const float2 _e15 = airlight_graded_range(s_44, 1.5707964);
     float graded_9 = _e15.y;
     float c_21 = (0.5 * _e15.x);
@@ -8771,7 +8862,7 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
     rows[14] = _e161;
     const float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[15] = _e168;
-    if (a_26.isotropic) {
+    if (a_27.isotropic) {
         const float _e174 = airlight_area_phase(s_44, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_12;
@@ -8825,16 +8916,16 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_26, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-    bool loop_init_48 = true;
+    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+    bool loop_init_49 = true;
     while(true) {
-        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-        if (!loop_init_48) {
+        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+        if (!loop_init_49) {
             uint _e550 = i_38;
             i_38 = (_e550 + 1u);
         }
-        loop_init_48 = false;
+        loop_init_49 = false;
         uint _e275 = i_38;
         if ((_e275 < 32u)) {
         } else {
@@ -8961,7 +9052,7 @@ float airlight_sphere_lobe_node(AirlightScene s_45, AirlightCap cap_2, float sig
     return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_2)
+float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_28, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_2)
 {
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
@@ -8972,7 +9063,7 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
     float start_5 = (float)0;
     float around = (float)0;
 
-    float3 p_7 = (sign_2 * a_27.d);
+    float3 p_7 = (sign_2 * a_28.d);
     const float3 _e8 = airlight_basis_e1_(p_7);
     float3 v_10 = cross(p_7, _e8);
     float au = dot(cap_3.a, _e8);
@@ -8984,16 +9075,16 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_27, Airlight
         const float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-    bool loop_init_49 = true;
+    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
+    bool loop_init_50 = true;
     while(true) {
-        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
-        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-        if (!loop_init_49) {
+        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
+        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+        if (!loop_init_50) {
             uint _e290 = i_39;
             i_39 = (_e290 + 1u);
         }
-        loop_init_49 = false;
+        loop_init_50 = false;
         uint _e47 = i_39;
         if ((_e47 < 32u)) {
         } else {
@@ -9128,45 +9219,45 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
+float airlight_sphere(AirlightScene s_47, AirlightArea a_29, float3 x_27)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_12 = 0u;
+    uint j_13 = 0u;
     bool local_187 = (bool)0;
     bool local_188 = (bool)0;
     bool local_189 = (bool)0;
     bool local_190 = (bool)0;
     bool local_191 = (bool)0;
 
-    float3 v_11 = (a_28.c - x_27);
+    float3 v_11 = (a_29.c - x_27);
     const float _e5 = airlight_safe_length(v_11);
-    if (!((_e5 > a_28.radius))) {
+    if (!((_e5 > a_29.radius))) {
         return 0.0;
     }
-    float sin_a_2 = (a_28.radius / _e5);
-    AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_28.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    float sin_a_2 = (a_29.radius / _e5);
+    AirlightCap cap_4 = ConstructAirlightCap((v_11 / (_e5).xxx), _e5, a_29.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
-    bool loop_init_50 = true;
+    uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
+    bool loop_init_51 = true;
     while(true) {
-        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
-        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
-        if (!loop_init_50) {
-            uint _e92 = j_12;
-            j_12 = (_e92 + 1u);
+        if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
+        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+        if (!loop_init_51) {
+            uint _e92 = j_13;
+            j_13 = (_e92 + 1u);
         }
-        loop_init_50 = false;
-        uint _e32 = j_12;
+        loop_init_51 = false;
+        uint _e32 = j_13;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_12;
-            float2 lobe_5 = ((_e39 == 1u) ? a_28.lobes.zw : a_28.lobes.xy);
-            float c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
+            uint _e39 = j_13;
+            float2 lobe_5 = ((_e39 == 1u) ? a_29.lobes.zw : a_29.lobes.xy);
+            float c_23 = dot(cap_4.a, (lobe_5.x * a_29.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
                 local_187 = (lobe_5.y > 0.0);
@@ -9211,39 +9302,39 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_28, float3 x_27)
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        const float _e100 = airlight_sphere_about_lobe(s_47, a_28, cap_4, _e97, _e98, _e99);
+        const float _e100 = airlight_sphere_about_lobe(s_47, a_29, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    const float _e101 = airlight_sphere_cap(s_47, a_28, cap_4);
+    const float _e101 = airlight_sphere_cap(s_47, a_29, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_29, float3 x_28)
+float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_30, float3 x_28)
 {
     switch(s_48.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_48, a_29, x_28);
+            const float _e4 = airlight_disc(s_48, a_30, x_28);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_48, a_29, x_28);
+            const float _e5 = airlight_parallelogram(s_48, a_30, x_28);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_48, a_29, x_28);
+            const float _e6 = airlight_sphere(s_48, a_30, x_28);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_49, AirlightArea a_30, float theta)
+float airlight_area_node(AirlightScene s_49, AirlightArea a_31, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
-    float along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
-    float t_15 = (a_30.x_h + along_1);
-    float fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_15 * a_30.d)));
-    return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    float along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
+    float t_15 = (a_31.x_h + along_1);
+    float fade = exp(min((-(s_49.sigma_t) * max(((a_31.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_49, a_31, (s_49.origin + (t_15 * a_31.d)));
+    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 AirlightResult airlight_area_light(AirlightScene s_50)
@@ -9252,7 +9343,7 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     uint step_2 = 0u;
     float k_10 = (float)0;
     float gauss_1 = (float)0;
-    uint j_13 = (uint)0;
+    uint j_14 = (uint)0;
     bool local_192 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_50);
@@ -9265,16 +9356,16 @@ AirlightResult airlight_area_light(AirlightScene s_50)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
-    bool loop_init_51 = true;
+    uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
+    bool loop_init_52 = true;
     while(true) {
-        if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
-        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
-        if (!loop_init_51) {
+        if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
+        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+        if (!loop_init_52) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_51 = false;
+        loop_init_52 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -9289,28 +9380,28 @@ AirlightResult airlight_area_light(AirlightScene s_50)
             float hw_9 = (0.5 * (_e34 - _e36));
             k_10 = 0.0;
             gauss_1 = 0.0;
-            j_13 = 0u;
-            uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
-            bool loop_init_52 = true;
+            j_14 = 0u;
+            uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
+            bool loop_init_53 = true;
             while(true) {
-                if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
-                loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
-                if (!loop_init_52) {
-                    uint _e82 = j_13;
-                    j_13 = (_e82 + 1u);
+                if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
+                loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+                if (!loop_init_53) {
+                    uint _e82 = j_14;
+                    j_14 = (_e82 + 1u);
                 }
-                loop_init_52 = false;
-                uint _e46 = j_13;
+                loop_init_53 = false;
+                uint _e46 = j_14;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_13;
+                    uint _e49 = j_14;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_13;
+                    uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_13;
+                        uint _e66 = j_14;
                         local_192 = (_e66 < 14u);
                     } else {
                         local_192 = false;
@@ -9510,7 +9601,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     uint step_3 = 0u;
     float k_11 = (float)0;
     float gauss_2 = (float)0;
-    uint j_14 = (uint)0;
+    uint j_15 = (uint)0;
     bool local_201 = (bool)0;
     float f = (float)0;
     bool local_202 = (bool)0;
@@ -9537,16 +9628,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
-    bool loop_init_53 = true;
+    uint2 loop_bound_55 = uint2(4294967295u, 4294967295u);
+    bool loop_init_54 = true;
     while(true) {
-        if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
-        loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
-        if (!loop_init_53) {
+        if (all(loop_bound_55 == uint2(0u, 0u))) { break; }
+        loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
+        if (!loop_init_54) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_53 = false;
+        loop_init_54 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -9561,28 +9652,28 @@ AirlightResult airlight_in_scatter(AirlightScene s_54)
             float hw_10 = (0.5 * (_e49 - _e51));
             k_11 = 0.0;
             gauss_2 = 0.0;
-            j_14 = 0u;
-            uint2 loop_bound_55 = uint2(4294967295u, 4294967295u);
-            bool loop_init_54 = true;
+            j_15 = 0u;
+            uint2 loop_bound_56 = uint2(4294967295u, 4294967295u);
+            bool loop_init_55 = true;
             while(true) {
-                if (all(loop_bound_55 == uint2(0u, 0u))) { break; }
-                loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
-                if (!loop_init_54) {
-                    uint _e121 = j_14;
-                    j_14 = (_e121 + 1u);
+                if (all(loop_bound_56 == uint2(0u, 0u))) { break; }
+                loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
+                if (!loop_init_55) {
+                    uint _e121 = j_15;
+                    j_15 = (_e121 + 1u);
                 }
-                loop_init_54 = false;
-                uint _e61 = j_14;
+                loop_init_55 = false;
+                uint _e61 = j_15;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_14;
+                    uint _e64 = j_15;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_14;
+                    uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_14;
+                        uint _e81 = j_15;
                         local_201 = (_e81 < 6u);
                     } else {
                         local_201 = false;

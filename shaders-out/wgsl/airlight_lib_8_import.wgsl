@@ -229,6 +229,12 @@ struct AirlightEdgeRule {
     last: f32,
 }
 
+struct AirlightChordEdges {
+    entry: vec2<f32>,
+    exit: vec2<f32>,
+    exit_h: f32,
+}
+
 struct AirlightCap {
     a: vec3<f32>,
     dc: f32,
@@ -669,8 +675,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_15 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_15);
+    let b_16 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_16);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -680,7 +686,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_15, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_16, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -747,12 +753,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_7 = f32(_e2);
-    let b_16 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
-    let a_31 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
-    let disc = (1f - ((4f * a_31) / (b_16 * b_16)));
-    t_2 = b_16;
+    let b_17 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
+    let a_32 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
+    let disc = (1f - ((4f * a_32) / (b_17 * b_17)));
+    t_2 = b_17;
     if (disc > 0f) {
-        t_2 = ((b_16 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_17 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -890,11 +896,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_32 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_32 * a_32));
+        let a_33 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_33 * a_33));
     }
-    let b_17 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
+    let b_18 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -1008,11 +1014,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_33 = abs(g_4);
-    if !((a_33 > 0f)) {
+    let a_34 = abs(g_4);
+    if !((a_34 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_33) * (1f - a_33)) / (a_33 + a_33));
+    return (((1f - a_34) * (1f - a_34)) / (a_34 + a_34));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1026,8 +1032,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_34 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_34) / a_34), (a_34 > 0f)), sigma_1);
+            let a_35 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_35) / a_35), (a_35 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1866,8 +1872,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_35 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_35 + sqrt(max(((a_35 * a_35) - 1f), 0f)));
+    let a_36 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_36 + sqrt(max(((a_36 * a_36) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2887,9 +2893,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_36 = abs(p0_4);
+            let a_37 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_36) / a_36), (a_36 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_37) / a_37), (a_37 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -3036,23 +3042,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_37 = (a0_ / scale_3);
-    let b_18 = (b0_ / scale_3);
+    let a_38 = (a0_ / scale_3);
+    let b_19 = (b0_ / scale_3);
     let c_10 = (c0_ / scale_3);
-    let disc_1 = ((b_18 * b_18) - ((4f * a_37) * c_10));
+    let disc_1 = ((b_19 * b_19) - ((4f * a_38) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_18 < 0f) {
+    if (b_19 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_10 = (-0.5f * (b_18 + (_e47 * sqrt(disc_1))));
+    let q_10 = (-0.5f * (b_19 + (_e47 * sqrt(disc_1))));
     if (q_10 != 0f) {
         r1_ = (c_10 / q_10);
     }
-    if (a_37 != 0f) {
-        r2_2 = (q_10 / a_37);
+    if (a_38 != 0f) {
+        r2_2 = (q_10 / a_38);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3097,15 +3103,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_38 = (sigma_11 * g_15.d_el);
+    let a_39 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_38 * a_38) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_38) / d_3);
-    if (a_38 > 0f) {
-        y1_1 = (d_3 / (a_38 + root_1));
+    let root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_39) / d_3);
+    if (a_39 > 0f) {
+        y1_1 = (d_3 / (a_39 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -5003,10 +5009,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_39 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_39));
-    if (a_39 <= 4096f) {
-        let _e17 = airlight_log1p((a_39 + ((a_39 * a_39) / (1f + sqrt((1f + (a_39 * a_39)))))));
+    let a_40 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
+    if (a_40 <= 4096f) {
+        let _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1f + sqrt((1f + (a_40 * a_40)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5031,8 +5037,8 @@ fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_18: f32) -> f32 {
-    let a_40 = abs(x_18);
-    let _e8 = airlight_atan(sqrt(((1f - a_40) / (1f + a_40))));
+    let a_41 = abs(x_18);
+    let _e8 = airlight_atan(sqrt(((1f - a_41) / (1f + a_41))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
@@ -5042,12 +5048,12 @@ fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_41 = (cos_a * cos_g);
-    let b_19 = (sin_a * sin_g);
-    if (b_19 <= abs(a_41)) {
-        return select(0f, AIRLIGHT_PI, (a_41 > 0f));
+    let a_42 = (cos_a * cos_g);
+    let b_20 = (sin_a * sin_g);
+    if (b_20 <= abs(a_42)) {
+        return select(0f, AIRLIGHT_PI, (a_42 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_41) / b_19), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_42) / b_20), -1f, 1f));
     return _e18;
 }
 
@@ -5475,7 +5481,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     }
     let _e88 = inner.x;
     let _e90 = inner.y;
-    let edges_1 = array<f32, 4>(0f, _e88, _e90, cut_2);
+    let edges_2 = array<f32, 4>(0f, _e88, _e90, cut_2);
     let smoothstep_2 = (exponent_1 < 1f);
     loop {
         let _e99 = i_23;
@@ -5487,7 +5493,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_11, edges_1[_e103], edges_1[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_11, edges_2[_e103], edges_2[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5780,13 +5786,13 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_40 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
         let t_9 = (x_21 - f32(i_40));
-        let a_42 = g_25.gamma[i_40];
-        let b_20 = g_25.gamma[(i_40 + 1u)];
-        let w_8 = (b_20 - a_42);
+        let a_43 = g_25.gamma[i_40];
+        let b_21 = g_25.gamma[(i_40 + 1u)];
+        let w_8 = (b_21 - a_43);
         let u_8 = (1f - t_9);
         let smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
         let smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_42 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
         jacobian = (((w_8 * 6f) * t_9) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
@@ -5795,7 +5801,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_42 + ((w_8 * t_9) * t_9)), _e66);
+        gamma_1 = select(_e58, (a_43 + ((w_8 * t_9) * t_9)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -5811,7 +5817,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_165 = false;
         }
         let _e85 = local_165;
-        gamma_1 = select(_e77, (b_20 - ((w_8 * u_8) * u_8)), _e85);
+        gamma_1 = select(_e77, (b_21 - ((w_8 * u_8) * u_8)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_166 = !(smooth_b);
@@ -5827,7 +5833,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_42 + (w_8 * t_9)), _e102);
+        gamma_1 = select(_e96, (a_43 + (w_8 * t_9)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -6102,8 +6108,8 @@ fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_43 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_43) / a_43), (a_43 > 0f)));
+            let a_44 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_44) / a_44), (a_44 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6196,14 +6202,14 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
     if (s_35.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e67 = a_18.c;
         let oc = (o_6 - _e67);
-        let b_21 = dot(oc, _e45);
+        let b_22 = dot(oc, _e45);
         let _e72 = a_18.radius;
         let _e74 = a_18.radius;
         let k_12 = (dot(oc, oc) - (_e72 * _e74));
-        let disc_2 = ((b_21 * b_21) - k_12);
+        let disc_2 = ((b_22 * b_22) - k_12);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_12 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
+            let q_12 = (-(b_22) - select(root_2, -(root_2), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
             cut0_ = q_12;
             cut1_ = (k_12 / q_12);
             cut_count = 2u;
@@ -6448,19 +6454,19 @@ fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
         }
         {
             let _e40 = i_28;
-            let a_44 = o.corners[_e40];
+            let a_45 = o.corners[_e40];
             let _e43 = i_28;
-            let e_15 = (o.corners[((_e43 + 1u) % 4u)] - a_44);
+            let e_15 = (o.corners[((_e43 + 1u) % 4u)] - a_45);
             let _e50 = inside;
             if _e50 {
-                local_177 = ((((q_4.x - a_44.x) * e_15.y) - ((q_4.y - a_44.y) * e_15.x)) <= 0f);
+                local_177 = ((((q_4.x - a_45.x) * e_15.y) - ((q_4.y - a_45.y) * e_15.x)) <= 0f);
             } else {
                 local_177 = false;
             }
             let _e67 = local_177;
             inside = _e67;
-            let t_11 = clamp(((((q_4.x - a_44.x) * e_15.x) + ((q_4.y - a_44.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
-            let p_5 = (a_44 + (t_11 * e_15));
+            let t_11 = clamp(((((q_4.x - a_45.x) * e_15.x) + ((q_4.y - a_45.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
+            let p_5 = (a_45 + (t_11 * e_15));
             let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
@@ -6574,17 +6580,17 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
 
     if (o_3.radius > 0f) {
         let qc_1 = (q_7 - o_3.corners[0]);
-        let a_45 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        let b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        let a_46 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
         let k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        let disc_3 = ((b_22 * b_22) - (a_45 * k_13));
+        let disc_3 = ((b_23 * b_23) - (a_46 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_12 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
-        let r1_2 = (t_12 / a_45);
+        let t_12 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
+        let r1_2 = (t_12 / a_46);
         let r2_4 = (k_13 / t_12);
         let hi_8 = max(r1_2, r2_4);
         if !((hi_8 > 0f)) {
@@ -6731,68 +6737,72 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
 }
 
 fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
-    let a_46 = vec4<f32>(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
-    let b_23 = vec4<f32>(min(a_46.x, a_46.z), min(a_46.y, a_46.w), max(a_46.x, a_46.z), max(a_46.y, a_46.w));
-    return vec4<f32>(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
+    let a_47 = vec4<f32>(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
+    let b_24 = vec4<f32>(min(a_47.x, a_47.z), min(a_47.y, a_47.w), max(a_47.x, a_47.z), max(a_47.y, a_47.w));
+    return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
-fn airlight_entry_normal(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> vec2<f32> {
+fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
     var nearest_1: f32 = AIRLIGHT_FLT_MAX;
-    var normal_3: vec2<f32> = vec2(0f);
+    var farthest: f32 = 0f;
+    var edges_1: AirlightChordEdges = AirlightChordEdges(vec2(0f), vec2(0f), 0f);
     var i_30: u32 = 0u;
     var local_181: bool;
     var local_182: bool;
-    var local_183: bool;
 
     loop {
-        let _e9 = i_30;
-        if (_e9 < 4u) {
+        let _e15 = i_30;
+        if (_e15 < 4u) {
         } else {
             break;
         }
         {
-            let _e12 = i_30;
-            let a_47 = y_6[_e12];
-            let _e14 = i_30;
-            let d_5 = (y_6[((_e14 + 1u) % 4u)] - a_47);
+            let _e18 = i_30;
+            let a_48 = y_6[_e18];
+            let _e20 = i_30;
+            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_48);
             let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if (den_1 == 0f) {
                 continue;
             }
-            let r_15 = (((a_47.x * d_5.y) - (a_47.y * d_5.x)) / den_1);
-            let along = (((a_47.x * e_8.y) - (a_47.y * e_8.x)) / den_1);
+            let r_15 = (((a_48.x * d_5.y) - (a_48.y * d_5.x)) / den_1);
+            let along = (((a_48.x * e_8.y) - (a_48.y * e_8.x)) / den_1);
             if (r_15 > 0f) {
                 local_181 = (along >= 0f);
             } else {
                 local_181 = false;
             }
-            let _e53 = local_181;
-            if _e53 {
+            let _e59 = local_181;
+            if _e59 {
                 local_182 = (along <= 1f);
             } else {
                 local_182 = false;
             }
-            let _e59 = local_182;
-            if _e59 {
-                let _e62 = nearest_1;
-                local_183 = (r_15 < _e62);
-            } else {
-                local_183 = false;
-            }
-            let _e65 = local_183;
+            let _e65 = local_182;
             if _e65 {
-                nearest_1 = r_15;
                 let n_7 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
-                normal_3 = select(n_7, -(n_7), (dot(n_7, a_47) < 0f));
+                let h_10 = dot(n_7, a_48);
+                let outward = select(n_7, -(n_7), (h_10 < 0f));
+                let _e79 = nearest_1;
+                if (r_15 < _e79) {
+                    nearest_1 = r_15;
+                    edges_1.entry = outward;
+                }
+                let _e82 = farthest;
+                if (r_15 > _e82) {
+                    farthest = r_15;
+                    edges_1.exit = outward;
+                    edges_1.exit_h = abs(h_10);
+                }
             }
         }
         continuing {
-            let _e80 = i_30;
-            i_30 = (_e80 + 1u);
+            let _e88 = i_30;
+            i_30 = (_e88 + 1u);
         }
     }
-    let _e82 = normal_3;
-    return _e82;
+    let _e90 = edges_1;
+    return _e90;
 }
 
 fn airlight_mercator_cut(k_8: u32) -> f32 {
@@ -6822,8 +6832,14 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
     var j_8: u32;
     var i_35: u32 = 0u;
     var j_9: u32;
-    var k_9: u32;
+    var merc_first: f32;
+    var merc_last: f32;
+    var local_183: bool;
+    var a_24: f32;
+    var b_15: f32;
     var j_10: u32;
+    var k_9: u32;
+    var j_11: u32;
 
     let _e5 = airlight_basis_e1_(lobe_3.p);
     let v_9 = cross(lobe_3.p, _e5);
@@ -6845,287 +6861,347 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
             let along_rim = vec2<f32>(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
             let tl = sqrt(dot(along_rim, along_rim));
             t_4 = (along_rim / vec2(tl));
-            let _e67 = t_4.y;
-            let _e71 = t_4.x;
-            if (((_e67 * rim.x) - (_e71 * rim.y)) < 0f) {
-                let _e77 = t_4;
-                t_4 = -(_e77);
+            let _e66 = m_4;
+            let _e69 = m_4;
+            let outward_1 = vec2<f32>(dot(_e66, _e5.xy), dot(_e69, v_9.xy));
+            let _e74 = t_4.y;
+            let _e78 = t_4.x;
+            if (((_e74 * outward_1.x) - (_e78 * outward_1.y)) < 0f) {
+                let _e84 = t_4;
+                t_4 = -(_e84);
             }
-            let _e80 = t_4.y;
-            let _e84 = t_4.x;
-            let h_10 = ((_e80 * rim.x) - (_e84 * rim.y));
+            let _e87 = t_4.y;
+            let _e91 = t_4.x;
+            let h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
             let half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0f)));
             let width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
-            let _e101 = t_4;
-            let rule_5 = AirlightEdgeRule(h_10, _e101, sqrt(((h_10 * h_10) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
+            let _e108 = t_4;
+            let rule_5 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
             loop {
-                let _e111 = j_7;
-                if (_e111 < 16u) {
+                let _e118 = j_7;
+                if (_e118 < 16u) {
                 } else {
                     break;
                 }
                 {
-                    let _e114 = j_7;
-                    let _e115 = airlight_radial_rule(_e114);
-                    let _e119 = airlight_edge_at(rule_5, (1.5707964f * _e115.x));
-                    let _e120 = sum_9;
-                    let _e129 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e119.xy);
-                    sum_9 = (_e120 + ((((_e115.y * 0.5f) * AIRLIGHT_PI) * _e119.w) * _e129));
+                    if !((h_11 > 0f)) {
+                        break;
+                    }
+                    let _e124 = j_7;
+                    let _e125 = airlight_radial_rule(_e124);
+                    let _e129 = airlight_edge_at(rule_5, (1.5707964f * _e125.x));
+                    let _e130 = sum_9;
+                    let _e139 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e129.xy);
+                    sum_9 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
-                    let _e133 = j_7;
-                    j_7 = (_e133 + 1u);
+                    let _e143 = j_7;
+                    j_7 = (_e143 + 1u);
                 }
             }
-            let _e136 = t_4.y;
-            let _e138 = t_4.x;
-            let n_8 = vec2<f32>(_e136, -(_e138));
+            let _e146 = t_4.y;
+            let _e148 = t_4.x;
+            let n_8 = vec2<f32>(_e146, -(_e148));
             loop {
-                let _e143 = i_31;
-                if (_e143 < 32u) {
+                let _e153 = i_31;
+                if (_e153 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e147 = i_31;
-                    let _e148 = airlight_azimuths(false, _e147);
-                    let _e149 = sum_9;
-                    let _e153 = t_4;
-                    let _e158 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e148.x) + (_e153 * _e148.y))));
-                    sum_9 = (_e149 + (_e148.z * _e158));
+                    let _e157 = i_31;
+                    let _e158 = airlight_azimuths(false, _e157);
+                    let _e159 = sum_9;
+                    let _e163 = t_4;
+                    let _e168 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
+                    sum_9 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
-                    let _e162 = i_31;
-                    i_31 = (_e162 + 1u);
+                    let _e172 = i_31;
+                    i_31 = (_e172 + 1u);
                 }
             }
-            let _e164 = sum_9;
-            return _e164;
+            let _e174 = sum_9;
+            return _e174;
         }
         let d_7 = (o_5.corners[0] - q_14);
         let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
         let sb_1 = (o_5.radius / dq_3);
         let cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
-        let _e185 = airlight_lobe_azimuth(_e5, v_9, d_7);
-        let _e197 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
-        let _e199 = airlight_wrap_turn((_e197 - _e185));
-        let _e211 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
-        let _e213 = airlight_wrap_turn((_e211 - _e185));
-        let centre_2 = (_e185 + ((_e199 + _e213) * 0.5f));
-        let half_19 = (abs((_e199 - _e213)) * 0.5f);
+        let _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
+        let _e207 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        let _e209 = airlight_wrap_turn((_e207 - _e195));
+        let _e221 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        let _e223 = airlight_wrap_turn((_e221 - _e195));
+        let centre_2 = (_e195 + ((_e209 + _e223) * 0.5f));
+        let half_19 = (abs((_e209 - _e223)) * 0.5f);
         loop {
-            let _e224 = i_32;
-            if (_e224 < 32u) {
+            let _e234 = i_32;
+            if (_e234 < 32u) {
             } else {
                 break;
             }
             {
-                let _e228 = i_32;
-                let _e229 = airlight_azimuths(false, _e228);
-                let _e230 = sum_9;
-                let _e238 = airlight_cos_sin_turns((centre_2 + (half_19 * _e229.y)));
-                let _e239 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e238);
-                sum_9 = (_e230 + (((_e229.z * half_19) * _e229.x) * _e239));
+                let _e238 = i_32;
+                let _e239 = airlight_azimuths(false, _e238);
+                let _e240 = sum_9;
+                let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
+                let _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e248);
+                sum_9 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
-                let _e243 = i_32;
-                i_32 = (_e243 + 1u);
+                let _e253 = i_32;
+                i_32 = (_e253 + 1u);
             }
         }
-        let _e245 = sum_9;
-        return _e245;
+        let _e255 = sum_9;
+        return _e255;
     }
     let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
     if lobe_3.on_emitter {
         loop {
-            let _e297 = i_33;
-            if (_e297 < 4u) {
+            let _e307 = i_33;
+            if (_e307 < 4u) {
             } else {
                 break;
             }
             {
-                let _e300 = i_33;
-                let b_24 = y_14[((_e300 + 1u) % 4u)];
-                let _e306 = i_33;
-                let _e308 = i_33;
-                let _e313 = i_33;
-                area[_e306] = ((y_14[_e308].x * b_24.y) - (y_14[_e313].y * b_24.x));
+                let _e310 = i_33;
+                let b_25 = y_14[((_e310 + 1u) % 4u)];
+                let _e316 = i_33;
+                let _e318 = i_33;
+                let _e323 = i_33;
+                area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
             }
             continuing {
-                let _e320 = i_33;
-                i_33 = (_e320 + 1u);
+                let _e330 = i_33;
+                i_33 = (_e330 + 1u);
             }
         }
-        let _e323 = area.x;
-        let _e325 = area.y;
-        let _e328 = area.z;
-        let _e331 = area.w;
-        let turn = (((_e323 + _e325) + _e328) + _e331);
+        let _e333 = area.x;
+        let _e335 = area.y;
+        let _e338 = area.z;
+        let _e341 = area.w;
+        let turn = (((_e333 + _e335) + _e338) + _e341);
         loop {
-            let _e335 = i_34;
-            if (_e335 < 4u) {
+            let _e345 = i_34;
+            if (_e345 < 4u) {
             } else {
                 break;
             }
             {
-                let _e338 = i_34;
-                let _e340 = area[_e338];
-                if !(((_e340 * turn) > 0f)) {
+                let _e348 = i_34;
+                let _e350 = area[_e348];
+                if !(((_e350 * turn) > 0f)) {
                     continue;
                 }
-                let _e345 = i_34;
-                ya = y_14[_e345];
-                let _e348 = i_34;
-                yb = y_14[((_e348 + 1u) % 4u)];
+                let _e355 = i_34;
+                ya = y_14[_e355];
+                let _e358 = i_34;
+                yb = y_14[((_e358 + 1u) % 4u)];
                 if (turn < 0f) {
-                    let _e357 = i_34;
-                    ya = y_14[((_e357 + 1u) % 4u)];
-                    let _e363 = i_34;
-                    yb = y_14[_e363];
+                    let _e367 = i_34;
+                    ya = y_14[((_e367 + 1u) % 4u)];
+                    let _e373 = i_34;
+                    yb = y_14[_e373];
                 }
-                let _e365 = ya;
-                let _e366 = yb;
-                let _e370 = airlight_edge_rule(_e365, _e366, (lobe_3.l * lobe_3.scale));
+                let _e375 = ya;
+                let _e376 = yb;
+                let _e380 = airlight_edge_rule(_e375, _e376, (lobe_3.l * lobe_3.scale));
                 j_8 = 0u;
                 loop {
-                    let _e373 = j_8;
-                    if (_e373 < 12u) {
+                    let _e383 = j_8;
+                    if (_e383 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e376 = j_8;
-                        let _e377 = airlight_edge_node(_e370, _e376);
-                        let _e378 = sum_9;
-                        let _e381 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e377.xy);
-                        sum_9 = (_e378 + (_e377.w * _e381));
+                        let _e386 = j_8;
+                        let _e387 = airlight_edge_node(_e380, _e386);
+                        let _e388 = sum_9;
+                        let _e391 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e387.xy);
+                        sum_9 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
-                        let _e385 = j_8;
-                        j_8 = (_e385 + 1u);
+                        let _e395 = j_8;
+                        j_8 = (_e395 + 1u);
                     }
                 }
             }
             continuing {
-                let _e388 = i_34;
-                i_34 = (_e388 + 1u);
+                let _e398 = i_34;
+                i_34 = (_e398 + 1u);
             }
         }
-        let _e390 = sum_9;
-        return _e390;
+        let _e400 = sum_9;
+        return _e400;
     }
-    let _e399 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    let _e403 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
-    let _e405 = airlight_wrap_turn((_e403 - _e399));
-    let _e409 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
-    let _e411 = airlight_wrap_turn((_e409 - _e399));
-    let _e415 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
-    let _e417 = airlight_wrap_turn((_e415 - _e399));
-    let _e421 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
-    let _e423 = airlight_wrap_turn((_e421 - _e399));
-    let _e425 = airlight_sort4_(vec4<f32>(_e405, _e411, _e417, _e423));
+    let _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
+    let _e413 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e415 = airlight_wrap_turn((_e413 - _e409));
+    let _e419 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e421 = airlight_wrap_turn((_e419 - _e409));
+    let _e425 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e427 = airlight_wrap_turn((_e425 - _e409));
+    let _e431 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e433 = airlight_wrap_turn((_e431 - _e409));
+    let _e435 = airlight_sort4_(vec4<f32>(_e415, _e421, _e427, _e433));
     loop {
-        let _e428 = i_35;
-        if (_e428 < 3u) {
+        let _e438 = i_35;
+        if (_e438 < 3u) {
         } else {
             break;
         }
         {
-            let _e431 = i_35;
-            let first_2 = (_e399 + _e425[_e431]);
-            let _e434 = i_35;
-            let last_1 = (_e399 + _e425[(_e434 + 1u)]);
-            let _e442 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
-            let _e443 = airlight_entry_normal(y_14, _e442);
-            if all((_e443 == vec2(0f))) {
+            let _e441 = i_35;
+            let first_2 = (_e409 + _e435[_e441]);
+            let _e444 = i_35;
+            let last_1 = (_e409 + _e435[(_e444 + 1u)]);
+            let _e452 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
+            let _e453 = airlight_chord_edges(y_14, _e452);
+            let n_9 = _e453.entry;
+            if all((n_9 == vec2(0f))) {
                 let c_19 = ((first_2 + last_1) * 0.5f);
                 let hw_5 = ((last_1 - first_2) * 0.5f);
                 j_9 = 0u;
                 loop {
-                    let _e456 = j_9;
-                    if (_e456 < 12u) {
+                    let _e467 = j_9;
+                    if (_e467 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e459 = j_9;
-                        let _e460 = airlight_triangle_rule(_e459);
-                        let _e461 = sum_9;
-                        let _e467 = airlight_cos_sin_turns((c_19 + (hw_5 * _e460.x)));
-                        let _e468 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e467);
-                        sum_9 = (_e461 + ((_e460.y * hw_5) * _e468));
+                        let _e470 = j_9;
+                        let _e471 = airlight_triangle_rule(_e470);
+                        let _e472 = sum_9;
+                        let _e478 = airlight_cos_sin_turns((c_19 + (hw_5 * _e471.x)));
+                        let _e479 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e478);
+                        sum_9 = (_e472 + ((_e471.y * hw_5) * _e479));
                     }
                     continuing {
-                        let _e472 = j_9;
-                        j_9 = (_e472 + 1u);
+                        let _e483 = j_9;
+                        j_9 = (_e483 + 1u);
                     }
                 }
                 continue;
             }
-            let t_14 = vec2<f32>(-(_e443.y), _e443.x);
-            let _e478 = airlight_cos_sin_turns(first_2);
-            let _e479 = airlight_mercator(_e443, _e478);
-            let _e480 = airlight_cos_sin_turns(last_1);
-            let _e481 = airlight_mercator(_e443, _e480);
+            merc_first = first_2;
+            merc_last = last_1;
+            let exit_h = _e453.exit_h;
+            if (exit_h > 0f) {
+                local_183 = (exit_h < (lobe_3.l * lobe_3.scale));
+            } else {
+                local_183 = false;
+            }
+            let _e497 = local_183;
+            if _e497 {
+                let half_20 = (0.5f * (first_2 + last_1));
+                a_24 = first_2;
+                b_15 = half_20;
+                let _e503 = airlight_cos_sin_turns(first_2);
+                let _e506 = airlight_cos_sin_turns(last_1);
+                if (dot(_e503, _e453.exit) < dot(_e506, _e453.exit)) {
+                    merc_first = half_20;
+                } else {
+                    a_24 = half_20;
+                    b_15 = last_1;
+                    merc_last = half_20;
+                }
+                let t2_ = vec2<f32>(-(_e453.exit.y), _e453.exit.x);
+                let reach_3 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
+                let _e526 = a_24;
+                let _e527 = airlight_cos_sin_turns(_e526);
+                let _e528 = b_15;
+                let _e529 = airlight_cos_sin_turns(_e528);
+                let _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0f) * reach_3));
+                let _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0f) * reach_3));
+                let rule_6 = AirlightEdgeRule(exit_h, t2_, reach_3, _e537, _e545);
+                j_10 = 0u;
+                loop {
+                    let _e549 = j_10;
+                    if (_e549 < 12u) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e552 = j_10;
+                        let _e553 = airlight_edge_node(rule_6, _e552);
+                        let _e554 = sum_9;
+                        let _e557 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e553.xy);
+                        sum_9 = (_e554 + (_e553.w * _e557));
+                    }
+                    continuing {
+                        let _e561 = j_10;
+                        j_10 = (_e561 + 1u);
+                    }
+                }
+            }
+            let t_14 = vec2<f32>(-(n_9.y), n_9.x);
+            let _e567 = merc_first;
+            let _e568 = airlight_cos_sin_turns(_e567);
+            let _e569 = airlight_mercator(n_9, _e568);
+            let _e570 = merc_last;
+            let _e571 = airlight_cos_sin_turns(_e570);
+            let _e572 = airlight_mercator(n_9, _e571);
             k_9 = 0u;
             loop {
-                let _e484 = k_9;
-                if (_e484 < 7u) {
+                let _e575 = k_9;
+                if (_e575 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e487 = k_9;
-                    let _e488 = airlight_mercator_cut(_e487);
-                    let lo_8 = max(_e479, _e488);
-                    let _e490 = k_9;
-                    let _e493 = airlight_mercator_cut((_e490 + 1u));
-                    let hi_9 = min(_e481, _e493);
+                    let _e578 = k_9;
+                    let _e579 = airlight_mercator_cut(_e578);
+                    let lo_8 = max(_e569, _e579);
+                    let _e581 = k_9;
+                    let _e584 = airlight_mercator_cut((_e581 + 1u));
+                    let hi_9 = min(_e572, _e584);
                     if !((lo_8 < hi_9)) {
                         continue;
                     }
                     let c_20 = ((lo_8 + hi_9) * 0.5f);
                     let hw_6 = ((hi_9 - lo_8) * 0.5f);
-                    j_10 = 0u;
+                    j_11 = 0u;
                     loop {
-                        let _e505 = j_10;
-                        if (_e505 < 12u) {
+                        let _e596 = j_11;
+                        if (_e596 < 12u) {
                         } else {
                             break;
                         }
                         {
-                            let _e508 = j_10;
-                            let _e509 = airlight_triangle_rule(_e508);
-                            let x_37 = (c_20 + (hw_6 * _e509.x));
+                            let _e599 = j_11;
+                            let _e600 = airlight_triangle_rule(_e599);
+                            let x_37 = (c_20 + (hw_6 * _e600.x));
                             let e_17 = exp(-(abs(x_37)));
                             let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
                             let th = ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17)));
-                            let _e531 = sum_9;
-                            let _e538 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((_e443 * sech) + (t_14 * th)));
-                            sum_9 = (_e531 + (((_e509.y * hw_6) * sech) * _e538));
+                            let _e622 = sum_9;
+                            let _e629 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
+                            sum_9 = (_e622 + (((_e600.y * hw_6) * sech) * _e629));
                         }
                         continuing {
-                            let _e542 = j_10;
-                            j_10 = (_e542 + 1u);
+                            let _e633 = j_11;
+                            j_11 = (_e633 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e545 = k_9;
-                    k_9 = (_e545 + 1u);
+                    let _e636 = k_9;
+                    k_9 = (_e636 + 1u);
                 }
             }
         }
         continuing {
-            let _e548 = i_35;
-            i_35 = (_e548 + 1u);
+            let _e639 = i_35;
+            i_35 = (_e639 + 1u);
         }
     }
-    let _e550 = sum_9;
-    return _e550;
+    let _e641 = sum_9;
+    return _e641;
 }
 
-fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f32 {
+fn airlight_disc(s_41: AirlightScene, a_25: AirlightArea, x_25: vec3<f32>) -> f32 {
     var local_184: bool;
     var local_185: bool;
     var u_6: vec2<f32> = vec2(0f);
@@ -7135,18 +7211,18 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel = (x_25 - a_24.c);
-    let z_20 = dot(rel, a_24.n);
+    let rel = (x_25 - a_25.c);
+    let z_20 = dot(rel, a_25.n);
     if !((z_20 > 0f)) {
         return 0f;
     }
-    let fx = dot(rel, a_24.a1_);
-    let fy_1 = dot(rel, a_24.a2_);
+    let fx = dot(rel, a_25.a1_);
+    let fy_1 = dot(rel, a_25.a2_);
     let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_24.radius;
+    let radius_2 = a_25.radius;
     let zero_1 = vec2(0f);
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    let _e30 = airlight_flat_lobe(a_24, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let _e30 = airlight_flat_lobe(a_25, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
         let _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
         return _e34;
@@ -7190,15 +7266,15 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
                 e_9 = _e77.xy;
-                let b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_25 * b_25) - k_15));
-                r_max_1 = select((root_4 - b_25), (-(k_15) / (b_25 + root_4)), (b_25 > 0f));
+                let b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_26 * b_26) - k_15));
+                r_max_1 = select((root_4 - b_26), (-(k_15) / (b_26 + root_4)), (b_26 > 0f));
             }
             let _e118 = sum_10;
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_41, a_24, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_41, a_25, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -7210,26 +7286,26 @@ fn airlight_disc(s_41: AirlightScene, a_24: AirlightArea, x_25: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
     var local_186: bool;
     var sum_11: f32 = 0f;
     var i_37: u32 = 0u;
-    var j_11: u32;
+    var j_12: u32;
 
-    let rel_1 = (x_26 - a_25.c);
-    let z_21 = dot(rel_1, a_25.n);
+    let rel_1 = (x_26 - a_26.c);
+    let z_21 = dot(rel_1, a_26.n);
     if !((z_21 > 0f)) {
         return 0f;
     }
-    let foot = vec2<f32>(dot(rel_1, a_25.a1_), dot(rel_1, a_25.a2_));
-    let u2_ = vec2<f32>(dot(a_25.eu, a_25.a1_), dot(a_25.eu, a_25.a2_));
-    let v2_ = vec2<f32>(dot(a_25.ev, a_25.a1_), dot(a_25.ev, a_25.a2_));
+    let foot = vec2<f32>(dot(rel_1, a_26.a1_), dot(rel_1, a_26.a2_));
+    let u2_ = vec2<f32>(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
+    let v2_ = vec2<f32>(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
     let corners = array<vec2<f32>, 5>(vec2(0f), u2_, (u2_ + v2_), v2_, vec2(0f));
     let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    let _e69 = airlight_flat_lobe(a_25, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
+    let _e69 = airlight_flat_lobe(a_26, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
     if (_e69.scale > 0f) {
         let _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
         return _e73;
@@ -7267,23 +7343,23 @@ fn airlight_parallelogram(s_42: AirlightScene, a_25: AirlightArea, x_26: vec3<f3
                 continue;
             }
             let _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_11 = 0u;
+            j_12 = 0u;
             loop {
-                let _e129 = j_11;
+                let _e129 = j_12;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e132 = j_11;
+                    let _e132 = j_12;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_11;
-                    let _e138 = airlight_flat_radial(s_42, a_25, _e94, _e133.xy, _e133.z);
+                    let _e138 = airlight_flat_radial(s_42, a_26, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e142 = j_11;
-                    j_11 = (_e142 + 1u);
+                    let _e142 = j_12;
+                    j_12 = (_e142 + 1u);
                 }
             }
         }
@@ -7308,7 +7384,7 @@ fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_44: AirlightScene, a_27: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
     var i_38: u32 = 0u;
@@ -7316,9 +7392,9 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_26.d);
-    let e1d = dot(_e4, a_26.d);
-    let e2d = dot(e2_2, a_26.d);
+    let ad = dot(cap_1.a, a_27.d);
+    let e1d = dot(_e4, a_27.d);
+    let e2d = dot(e2_2, a_27.d);
     let _e15 = airlight_graded_range(s_44, 1.5707964f);
     let graded_9 = _e15.y;
     let c_21 = (0.5f * _e15.x);
@@ -7355,7 +7431,7 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_26: AirlightArea, cap_1: AirlightC
     rows[14] = _e161;
     let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
-    if a_26.isotropic {
+    if a_27.isotropic {
         let _e174 = airlight_area_phase(s_44, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_12;
@@ -7539,7 +7615,7 @@ fn airlight_sphere_lobe_node(s_45: AirlightScene, cap_2: AirlightCap, sign_1: f3
     return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_2: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_46: AirlightScene, a_28: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_2: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
@@ -7549,7 +7625,7 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
     var start_5: f32;
     var around: f32;
 
-    let p_7 = (sign_2 * a_27.d);
+    let p_7 = (sign_2 * a_28.d);
     let _e8 = airlight_basis_e1_(p_7);
     let v_10 = cross(p_7, _e8);
     let au = dot(cap_3.a, _e8);
@@ -7690,35 +7766,35 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_27: AirlightArea, cap_3: Ai
     return _e292;
 }
 
-fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_sphere(s_47: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_12: u32 = 0u;
+    var j_13: u32 = 0u;
     var local_187: bool;
     var local_188: bool;
     var local_189: bool;
     var local_190: bool;
     var local_191: bool;
 
-    let v_11 = (a_28.c - x_27);
+    let v_11 = (a_29.c - x_27);
     let _e5 = airlight_safe_length(v_11);
-    if !((_e5 > a_28.radius)) {
+    if !((_e5 > a_29.radius)) {
         return 0f;
     }
-    let sin_a_2 = (a_28.radius / _e5);
-    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_28.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let sin_a_2 = (a_29.radius / _e5);
+    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_29.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_12;
+        let _e32 = j_13;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_12;
-            let lobe_5 = select(a_28.lobes.xy, a_28.lobes.zw, (_e39 == 1u));
-            let c_23 = dot(cap_4.a, (lobe_5.x * a_28.d));
+            let _e39 = j_13;
+            let lobe_5 = select(a_29.lobes.xy, a_29.lobes.zw, (_e39 == 1u));
+            let c_23 = dot(cap_4.a, (lobe_5.x * a_29.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
                 local_187 = (lobe_5.y > 0f);
@@ -7758,8 +7834,8 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
             }
         }
         continuing {
-            let _e92 = j_12;
-            j_12 = (_e92 + 1u);
+            let _e92 = j_13;
+            j_13 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -7767,37 +7843,37 @@ fn airlight_sphere(s_47: AirlightScene, a_28: AirlightArea, x_27: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_47, a_28, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_47, a_29, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_47, a_28, cap_4);
+    let _e101 = airlight_sphere_cap(s_47, a_29, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_48: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_emitter_radiance(s_48: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
     switch s_48.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_48, a_29, x_28);
+            let _e4 = airlight_disc(s_48, a_30, x_28);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_48, a_29, x_28);
+            let _e5 = airlight_parallelogram(s_48, a_30, x_28);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_48, a_29, x_28);
+            let _e6 = airlight_sphere(s_48, a_30, x_28);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_49: AirlightScene, a_30: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_49: AirlightScene, a_31: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along_1 = ((a_30.h_eff * _e3.y) / _e3.x);
-    let t_15 = (a_30.x_h + along_1);
-    let fade = exp(min((-(s_49.sigma_t) * max(((a_30.x_h - s_49.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_49, a_30, (s_49.origin + (t_15 * a_30.d)));
-    return (((a_30.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
+    let t_15 = (a_31.x_h + along_1);
+    let fade = exp(min((-(s_49.sigma_t) * max(((a_31.x_h - s_49.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_49, a_31, (s_49.origin + (t_15 * a_31.d)));
+    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
@@ -7805,7 +7881,7 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     var step_2: u32 = 0u;
     var k_10: f32;
     var gauss_1: f32;
-    var j_13: u32;
+    var j_14: u32;
     var local_192: bool;
 
     let _e1 = airlight_area(s_50);
@@ -7832,19 +7908,19 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
             let hw_9 = (0.5f * (_e34 - _e36));
             k_10 = 0f;
             gauss_1 = 0f;
-            j_13 = 0u;
+            j_14 = 0u;
             loop {
-                let _e46 = j_13;
+                let _e46 = j_14;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_13;
+                    let _e49 = j_14;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_13;
+                    let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_13;
+                        let _e66 = j_14;
                         local_192 = (_e66 < 14u);
                     } else {
                         local_192 = false;
@@ -7858,8 +7934,8 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_13;
-                    j_13 = (_e82 + 1u);
+                    let _e82 = j_14;
+                    j_14 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
@@ -8031,7 +8107,7 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
     var step_3: u32 = 0u;
     var k_11: f32;
     var gauss_2: f32;
-    var j_14: u32;
+    var j_15: u32;
     var local_201: bool;
     var f: f32;
     var local_202: bool;
@@ -8069,19 +8145,19 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
             let hw_10 = (0.5f * (_e49 - _e51));
             k_11 = 0f;
             gauss_2 = 0f;
-            j_14 = 0u;
+            j_15 = 0u;
             loop {
-                let _e61 = j_14;
+                let _e61 = j_15;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_14;
+                    let _e64 = j_15;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_14;
+                    let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_14;
+                        let _e81 = j_15;
                         local_201 = (_e81 < 6u);
                     } else {
                         local_201 = false;
@@ -8114,8 +8190,8 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_14;
-                    j_14 = (_e121 + 1u);
+                    let _e121 = j_15;
+                    j_15 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;

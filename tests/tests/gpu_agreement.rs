@@ -493,17 +493,18 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
         ("outside an edge", corner + 0.5 * edge_u, -edge_v),
         ("inside a corner", corner, edge_u + edge_v),
         ("on an edge from a corner", corner, edge_u),
+        ("outside an edge by a corner", corner + 0.001 * edge_u, -edge_v),
     ];
     for (label, inside, inward) in crossings {
         for offset in [0.0005f32, 0.002] {
             cases.push(case(rectangle, Emission::Lambertian, inside + inward.normalize() * offset, 0.99, format!("g = 0.99 rectangle, crossing {offset} {label}")));
         }
     }
-    // a disc of the rectangle's plane in g = 0.95 fog on rays crossing it just inside its rim
+    // a disc of the rectangle's plane in g = 0.95 fog on rays crossing it on and just inside its rim
     // (tests/area.rs bounded_disc_with_the_lobe_next_to_its_rim)
     let centre = corner + 0.5 * (edge_u + edge_v);
     let disc = Emitter::Disc { center: centre, normal: edge_u.cross(edge_v), radius: 0.6 };
-    for offset in [0.0005f32, 0.002] {
+    for offset in [0.0f32, 0.0005, 0.002] {
         cases.push(case(disc, Emission::Lambertian, centre + edge_u.normalize() * (0.6 - offset), 0.95, format!("g = 0.95 disc, crossing {offset} inside its rim")));
     }
     cases

@@ -3210,13 +3210,17 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
             let rim = vec2<f32>(dot(rim_e, u.xy), dot(rim_e, v.xy));
             let along_rim = vec2<f32>(-m.y * u.x + m.x * u.y, -m.y * v.x + m.x * v.y);
             let tl = sqrt(dot(along_rim, along_rim));
+            // t turned by −π/2 the tangent's normal out of the disc, h q_L's distance inside it
+            // (≤ 0 on the rim or outside by rounding: no near half)
             var t = along_rim / tl;
-            if (t.y * rim.x - t.x * rim.y < 0.0) { t = -t; }
+            let outward = vec2<f32>(dot(m, u.xy), dot(m, v.xy));
+            if (t.y * outward.x - t.x * outward.y < 0.0) { t = -t; }
             let h = t.y * rim.x - t.x * rim.y;
             let half_chord = tl * sqrt(max((o.radius - d) * (o.radius + d), 0.0));
             let width = min(lobe.l * lobe.scale, half_chord);
             let rule = AirlightEdgeRule(h, t, sqrt(h * h + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
             for (var j = 0u; j < 16u; j++) {
+                if (!(h > 0.0)) { break; }
                 let node = airlight_radial_rule(j);
                 let at = airlight_edge_at(rule, 0.5 * AIRLIGHT_PI * node.x);
                 sum += node.y * 0.5 * AIRLIGHT_PI * at.w * airlight_flat_lobe_along(s, z, o, lobe, u, v, at.xy);
@@ -3287,7 +3291,8 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
     for (var i = 0u; i < 3u; i++) {
         let first = mid + psi[i];
         let last = mid + psi[i + 1u];
-        let n = airlight_entry_normal(y, airlight_cos_sin_turns(0.5 * (first + last)));
+        let edges = airlight_chord_edges(y, airlight_cos_sin_turns(0.5 * (first + last)));
+        let n = edges.entry;
         if (all(n == vec2<f32>(0.0))) {
             let c = (first + last) * 0.5;
             let hw = (last - first) * 0.5;
@@ -3297,9 +3302,38 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
             }
             continue;
         }
+        // an exit edge nearer than the lobe's footprint: the half of the wedge at the end more
+        // nearly parallel to it in the angle β of that edge (D = hypot(h, L s)), the other half
+        // in the Mercator angle of the entry edge
+        var merc_first = first;
+        var merc_last = last;
+        let exit_h = edges.exit_h;
+        if (exit_h > 0.0 && exit_h < lobe.l * lobe.scale) {
+            let half = 0.5 * (first + last);
+            var a = first;
+            var b = half;
+            if (dot(airlight_cos_sin_turns(first), edges.exit) < dot(airlight_cos_sin_turns(last), edges.exit)) {
+                merc_first = half;
+            } else {
+                a = half;
+                b = last;
+                merc_last = half;
+            }
+            let t2 = vec2<f32>(-edges.exit.y, edges.exit.x);
+            let reach = sqrt(exit_h * exit_h + lobe.l * lobe.scale * lobe.l * lobe.scale);
+            let ca = airlight_cos_sin_turns(a);
+            let cb = airlight_cos_sin_turns(b);
+            let rule = AirlightEdgeRule(exit_h, t2, reach,
+                airlight_atan2(dot(ca, t2) * exit_h, max(dot(ca, edges.exit), 0.0) * reach),
+                airlight_atan2(dot(cb, t2) * exit_h, max(dot(cb, edges.exit), 0.0) * reach));
+            for (var j = 0u; j < 12u; j++) {
+                let node = airlight_edge_node(rule, j);
+                sum += node.w * airlight_flat_lobe_along(s, z, o, lobe, u, v, node.xy);
+            }
+        }
         let t = vec2<f32>(-n.y, n.x);
-        let ua = airlight_mercator(n, airlight_cos_sin_turns(first));
-        let ub = airlight_mercator(n, airlight_cos_sin_turns(last));
+        let ua = airlight_mercator(n, airlight_cos_sin_turns(merc_first));
+        let ub = airlight_mercator(n, airlight_cos_sin_turns(merc_last));
         for (var k = 0u; k < 7u; k++) {
             let lo = max(ua, airlight_mercator_cut(k));
             let hi = min(ub, airlight_mercator_cut(k + 1u));
@@ -3340,11 +3374,20 @@ fn airlight_mercator(n: vec2<f32>, cs: vec2<f32>) -> f32 {
     return clamp(airlight_asinh(tangent), -cap, cap);
 }
 
-/// The unit normal, from the origin, of the edge by which the half-line r e (r > 0) enters the
-/// convex polygon `y`; (0, 0) if it misses it (outer.rs `entry_normal`).
-fn airlight_entry_normal(y: array<vec2<f32>, 4>, e: vec2<f32>) -> vec2<f32> {
+/// The edges by which the half-line r e (r > 0) enters and leaves a convex polygon (outer.rs
+/// `chord_edges`): their lines' unit normals from the origin, the exit line's distance; the
+/// entry normal (0, 0) if the half-line misses it.
+struct AirlightChordEdges {
+    entry: vec2<f32>,
+    exit: vec2<f32>,
+    exit_h: f32,
+}
+
+/// `AirlightChordEdges` of the half-line r e and the polygon `y`.
+fn airlight_chord_edges(y: array<vec2<f32>, 4>, e: vec2<f32>) -> AirlightChordEdges {
     var nearest = AIRLIGHT_FLT_MAX;
-    var normal = vec2<f32>(0.0);
+    var farthest = 0.0;
+    var edges = AirlightChordEdges(vec2<f32>(0.0), vec2<f32>(0.0), 0.0);
     for (var i = 0u; i < 4u; i++) {
         let a = y[i];
         let d = y[(i + 1u) % 4u] - a;
@@ -3352,13 +3395,22 @@ fn airlight_entry_normal(y: array<vec2<f32>, 4>, e: vec2<f32>) -> vec2<f32> {
         if (den == 0.0) { continue; }
         let r = (a.x * d.y - a.y * d.x) / den;
         let along = (a.x * e.y - a.y * e.x) / den;
-        if (r > 0.0 && along >= 0.0 && along <= 1.0 && r < nearest) {
-            nearest = r;
+        if (r > 0.0 && along >= 0.0 && along <= 1.0) {
             let n = vec2<f32>(d.y, -d.x) / sqrt(dot(d, d));
-            normal = select(n, -n, dot(n, a) < 0.0);
+            let h = dot(n, a);
+            let outward = select(n, -n, h < 0.0);
+            if (r < nearest) {
+                nearest = r;
+                edges.entry = outward;
+            }
+            if (r > farthest) {
+                farthest = r;
+                edges.exit = outward;
+                edges.exit_h = abs(h);
+            }
         }
     }
-    return normal;
+    return edges;
 }
 
 /// The cap a sphere subtends from x (outer.rs `Cap`): its centre's unit direction `a` at

@@ -178,23 +178,33 @@ fn mercator_rule<T: Real>(n: (T, T), ends: [(T, T); 2], mut f: impl FnMut((T, T)
     }
 }
 
-/// The unit normal `n`, from the origin, of the edge by which the half-line `r e` (`r > 0`)
-/// enters the convex polygon `corners` (`None` if it misses it).
-fn entry_normal<T: Real>(corners: &[(T, T); 4], e: (T, T)) -> Option<(T, T)> {
+/// The edges by which the half-line `r e` (`r > 0`) enters and leaves the convex polygon
+/// `corners` (`None` if it misses it), each as its line's unit normal `n` from the origin and
+/// distance `h`.
+fn chord_edges<T: Real>(corners: &[(T, T); 4], e: (T, T)) -> Option<[((T, T), T); 2]> {
     let cross = |a: (T, T), b: (T, T)| a.0 * b.1 - a.1 * b.0;
-    let mut best: Option<(T, (T, T))> = None;
+    // (r, n, h) of the nearest and farthest crossing
+    let mut entry: Option<(T, (T, T), T)> = None;
+    let mut exit = entry;
     for i in 0..4 {
         let (a, b) = (corners[i], corners[(i + 1) % 4]);
         let d = (b.0 - a.0, b.1 - a.1);
         let den = cross(e, d);
         let (r, along) = (cross(a, d) / den, cross(a, e) / den);
-        if r > T::zero() && along >= T::zero() && along <= T::one() && best.map_or(true, |(nearest, _)| r < nearest) {
+        if r > T::zero() && along >= T::zero() && along <= T::one() {
             let len = d.0.hypot(d.1);
             let n = (d.1 / len, -d.0 / len);
-            best = Some((r, if n.0 * a.0 + n.1 * a.1 < T::zero() { (-n.0, -n.1) } else { n }));
+            let h = n.0 * a.0 + n.1 * a.1;
+            let edge = if h < T::zero() { (r, (-n.0, -n.1), -h) } else { (r, n, h) };
+            if entry.map_or(true, |(nearest, _, _)| r < nearest) {
+                entry = Some(edge);
+            }
+            if exit.map_or(true, |(farthest, _, _)| r > farthest) {
+                exit = Some(edge);
+            }
         }
     }
-    best.map(|(_, n)| n)
+    Some([entry?, exit?].map(|(_, n, h)| (n, h)))
 }
 
 /// The azimuths of [`AZIMUTHAL`], once per ray: `(cos ψ, sin ψ, weight)` over the whole circle and
@@ -534,7 +544,8 @@ fn flat_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, dirs: 
 /// wedge of chords ending on an edge in the angle `β` that edge subtends ([`edge_rule`], as
 /// [`parallelogram`]'s triangles); off it, over the wedges between its corners seen from `q_L`
 /// (each chord's ends on one edge each), each in the Mercator angle of the edge its chords
-/// enter by ([`mercator_rule`]); docs/DESIGN.md §12.
+/// enter by ([`mercator_rule`]), but where the edge they leave by is nearer than `L s`, the half
+/// of the wedge more nearly parallel to it in its angle `β` ([`line_rule`]); docs/DESIGN.md §12.
 fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, outline: &Outline<T>, lobe: &FlatLobe<T>) -> T {
     let FlatLobe { p, sign, scale, l, q, on_emitter } = *lobe;
     let (u, v) = basis(p);
@@ -577,15 +588,20 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
                 let m = if d > T::zero() { (dx / d, dy / d) } else { (T::one(), T::zero()) };
                 let (rim, along_rim) = (lobe_plane((c.0 + radius * m.0 - q.0, c.1 + radius * m.1 - q.1)), lobe_plane((-m.1, m.0)));
                 let tl = along_rim.0.hypot(along_rim.1);
-                // t turned by −π/2 towards the tangent
+                // t turned by −π/2 the tangent's normal out of the disc, h q_L's distance inside
+                // it (≤ 0 for a q_L on the rim or outside by rounding, [`flat_lobe`])
                 let mut t = (along_rim.0 / tl, along_rim.1 / tl);
-                if t.1 * rim.0 - t.0 * rim.1 < T::zero() {
+                let outward = lobe_plane(m);
+                if t.1 * outward.0 - t.0 * outward.1 < T::zero() {
                     t = (-t.0, -t.1);
                 }
                 let h = t.1 * rim.0 - t.0 * rim.1;
                 // the chord of the rim parallel to the tangent through q_L: its half
                 let half_chord = tl * ((radius - d) * (radius + d)).max(T::zero()).sqrt();
-                line_rule(&RADIAL, h, t, h.hypot((l * scale).min(half_chord)), [-T::FRAC_PI_2(), T::FRAC_PI_2()], |dir, _, w| sum = sum + w * along(dir.0, dir.1));
+                // (none with q_L on the rim: those chords have no length)
+                if h > T::zero() {
+                    line_rule(&RADIAL, h, t, h.hypot((l * scale).min(half_chord)), [-T::FRAC_PI_2(), T::FRAC_PI_2()], |dir, _, w| sum = sum + w * along(dir.0, dir.1));
+                }
                 let n = (t.1, -t.0);
                 for &(cos, sin, w) in &light.azimuths.half {
                     sum = sum + w * along(-(n.0 * cos + t.0 * sin), -(n.1 * cos + t.1 * sin));
@@ -632,8 +648,33 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             for i in 0..3 {
                 let (from, to) = (mid + psi[i], mid + psi[i + 1]);
                 let (sm, cm) = sin_cos_turns(T::lit(0.5) * (from + to));
-                match entry_normal(&lobe_plane, (cm, sm)) {
-                    Some(n) => mercator_rule(n, [from, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s)),
+                match chord_edges(&lobe_plane, (cm, sm)) {
+                    // the chords' ends on an exit edge nearer than the lobe's footprint grow as a
+                    // triangle's towards the end more nearly parallel to it: that half in the
+                    // angle β of the exit edge ([`line_rule`], D = hypot(h, L s)), the other in
+                    // the Mercator angle of the entry edge
+                    Some([(entry, _), (exit, h)]) if h > T::zero() && h < l * scale => {
+                        let t = (-exit.1, exit.0);
+                        let reach = h.hypot(l * scale);
+                        let beta = |a: T| {
+                            let (s, c) = sin_cos_turns(a);
+                            ((c * t.0 + s * t.1) * h / ((c * exit.0 + s * exit.1).max(T::zero()) * reach)).atan()
+                        };
+                        let half = T::lit(0.5) * (from + to);
+                        let [near_end, far_end] = [from, to].map(|a| {
+                            let (s, c) = sin_cos_turns(a);
+                            c * exit.0 + s * exit.1
+                        });
+                        let exit_rule = |a: T, b: T, sum: &mut T| line_rule(&TRIANGLE_AZIMUTHAL, h, t, reach, [beta(a), beta(b)], |dir, _, w| *sum = *sum + w * along(dir.0, dir.1));
+                        if near_end < far_end {
+                            exit_rule(from, half, &mut sum);
+                            mercator_rule(entry, [half, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
+                        } else {
+                            mercator_rule(entry, [from, half].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
+                            exit_rule(half, to, &mut sum);
+                        }
+                    }
+                    Some([(entry, _), _]) => mercator_rule(entry, [from, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s)),
                     None => each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
                         let (s, c) = sin_cos_turns(a);
                         sum = sum + w * along(c, s);
