@@ -24,7 +24,7 @@ fn main() {
     for g in [0.95, 0.99] {
         // the corners (0, 0) and (1, 1), the middles of the edges v = 0 and u = 1; inward directions
         for ((u, v), inward) in [((0.0, 0.0), 1.0), ((1.0, 1.0), -1.0), ((0.5, 0.0), 1.0), ((1.0, 0.5), -1.0)] {
-            for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
+            for offset in [-0.002, -0.0005, -0.0001, 0.0001, 0.0005, 0.002, 0.01] {
                 for (label, (a, b)) in [("u", (1.0, 0.0)), ("v", (0.0, 1.0)), ("diagonal", (0.7, 0.7))] {
                     let towards = (eu * a + ev * b).normalize() * inward;
                     let dir = corner + eu * u + ev * v + towards * offset;
