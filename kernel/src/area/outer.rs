@@ -582,7 +582,8 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             if on_emitter {
                 // the half of the directions towards the rim's nearest point in the angle β of
                 // its tangent there (in the lobe's plane the line h n + σ t, as a
-                // parallelogram's edge: σ = D tan β, D = hypot(h, L s)), the far half in ψ
+                // parallelogram's edge: σ = D tan β, D = hypot(h, min(L s, half chord))), the
+                // far half in ψ
                 let (dx, dy) = (q.0 - c.0, q.1 - c.1);
                 let d = dx.hypot(dy);
                 let m = if d > T::zero() { (dx / d, dy / d) } else { (T::one(), T::zero()) };
@@ -622,9 +623,8 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         }
         Outline::Polygon(corners) if on_emitter => {
             // the chords of the wedge between two corners end on the edge between them, in the
-            // lobe's plane (a point e ↦ (e·u, e·v): its angle is ψ, its length about L θ) the
-            // segment between the corners' images; they turn as a parallelogram's triangles do,
-            // with the lobe's footprint L s in place of ρ₀ min(1, s)
+            // lobe's plane the segment between the corners' images; they turn as a
+            // parallelogram's triangles do, with the lobe's footprint L s in place of ρ₀ min(1, s)
             let lobe_plane = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
             // the image keeps or reverses the corners' turn; an edge q_L is on (or outside by
             // rounding, [`flat_lobe`]) has no chords of its own
