@@ -625,13 +625,13 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
             // the chords of the wedge between two corners end on the edge between them, in the
             // lobe's plane the segment between the corners' images; they turn as a
             // parallelogram's triangles do, with the lobe's footprint L s in place of ρ₀ min(1, s)
-            let lobe_plane = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
+            let images = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
             // the image keeps or reverses the corners' turn; an edge q_L is on (or outside by
             // rounding, [`flat_lobe`]) has no chords of its own
-            let cross = |i: usize| lobe_plane[i].0 * lobe_plane[(i + 1) % 4].1 - lobe_plane[i].1 * lobe_plane[(i + 1) % 4].0;
+            let cross = |i: usize| images[i].0 * images[(i + 1) % 4].1 - images[i].1 * images[(i + 1) % 4].0;
             let turn = (0..4).fold(T::zero(), |sum, i| sum + cross(i));
             for i in 0..4 {
-                let (a, b) = (lobe_plane[i], lobe_plane[(i + 1) % 4]);
+                let (a, b) = (images[i], images[(i + 1) % 4]);
                 if cross(i) * turn > T::zero() {
                     let (a, b) = if turn < T::zero() { (b, a) } else { (a, b) };
                     edge_rule(a, b, l * scale, |dir, _, w| sum = sum + w * along(dir.0, dir.1));
@@ -641,45 +641,41 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         Outline::Polygon(corners) => {
             // the wedges between the corners' azimuths about the centre's, in order, each in the
             // Mercator angle of the edge its chords enter by
-            let lobe_plane = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
+            let images = corners.map(|c| lobe_plane((c.0 - q.0, c.1 - q.1)));
             let mid = azimuth((T::lit(0.5) * (corners[0].0 + corners[2].0) - q.0, T::lit(0.5) * (corners[0].1 + corners[2].1) - q.1));
             let mut psi = corners.map(|c| wrap(azimuth((c.0 - q.0, c.1 - q.1)) - mid));
             psi.sort_unstable_by(|a, b| a.partial_cmp(b).unwrap_or(core::cmp::Ordering::Equal));
             for i in 0..3 {
                 let (from, to) = (mid + psi[i], mid + psi[i + 1]);
-                let (sm, cm) = sin_cos_turns(T::lit(0.5) * (from + to));
-                match chord_edges(&lobe_plane, (cm, sm)) {
-                    // the chords' ends on an exit edge nearer than the lobe's footprint grow as a
-                    // triangle's towards the end more nearly parallel to it: that half in the
-                    // angle β of the exit edge ([`line_rule`], D = hypot(h, L s)), the other in
-                    // the Mercator angle of the entry edge
-                    Some([(entry, _), (exit, h)]) if h > T::zero() && h < l * scale => {
-                        let t = (-exit.1, exit.0);
-                        let reach = h.hypot(l * scale);
-                        let beta = |a: T| {
-                            let (s, c) = sin_cos_turns(a);
-                            ((c * t.0 + s * t.1) * h / ((c * exit.0 + s * exit.1).max(T::zero()) * reach)).atan()
-                        };
-                        let half = T::lit(0.5) * (from + to);
-                        let [near_end, far_end] = [from, to].map(|a| {
-                            let (s, c) = sin_cos_turns(a);
-                            c * exit.0 + s * exit.1
-                        });
-                        let exit_rule = |a: T, b: T, sum: &mut T| line_rule(&TRIANGLE_AZIMUTHAL, h, t, reach, [beta(a), beta(b)], |dir, _, w| *sum = *sum + w * along(dir.0, dir.1));
-                        if near_end < far_end {
-                            exit_rule(from, half, &mut sum);
-                            mercator_rule(entry, [half, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
-                        } else {
-                            mercator_rule(entry, [from, half].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
-                            exit_rule(half, to, &mut sum);
-                        }
-                    }
-                    Some([(entry, _), _]) => mercator_rule(entry, [from, to].map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s)),
-                    None => each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
+                let half = T::lit(0.5) * (from + to);
+                let (sm, cm) = sin_cos_turns(half);
+                let Some([(entry, _), (exit, h)]) = chord_edges(&images, (cm, sm)) else {
+                    each_node(&TRIANGLE_AZIMUTHAL, from, to, |a, w| {
                         let (s, c) = sin_cos_turns(a);
                         sum = sum + w * along(c, s);
-                    }),
+                    });
+                    continue;
+                };
+                // the chords' ends on an exit edge nearer than the lobe's footprint grow as a
+                // triangle's towards the end more nearly parallel to it: that half in the angle β
+                // of the exit edge ([`line_rule`], D = hypot(h, L s)), the rest in the Mercator
+                // angle of the entry edge
+                let mut mercator = [from, to];
+                if h > T::zero() && h < l * scale {
+                    let (t, reach) = ((-exit.1, exit.0), h.hypot(l * scale));
+                    let cos_exit = |(s, c): (T, T)| c * exit.0 + s * exit.1;
+                    let beta = |(s, c): (T, T)| ((c * t.0 + s * t.1) * h / (cos_exit((s, c)).max(T::zero()) * reach)).atan();
+                    let ends = [from, to].map(|a| sin_cos_turns(a));
+                    let exit_half = if cos_exit(ends[0]) < cos_exit(ends[1]) {
+                        mercator[0] = half;
+                        [ends[0], (sm, cm)]
+                    } else {
+                        mercator[1] = half;
+                        [(sm, cm), ends[1]]
+                    };
+                    line_rule(&TRIANGLE_AZIMUTHAL, h, t, reach, exit_half.map(beta), |dir, _, w| sum = sum + w * along(dir.0, dir.1));
                 }
+                mercator_rule(entry, mercator.map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
             }
         }
     }
