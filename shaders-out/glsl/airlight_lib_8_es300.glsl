@@ -183,14 +183,14 @@ struct AirlightArea {
     vec4 lobes;
     bool isotropic;
 };
+struct AirlightOutline {
+    vec2 corners[4];
+    float radius;
+};
 struct AirlightAbove {
     float z;
     vec2 off;
     float rho0_;
-};
-struct AirlightOutline {
-    vec2 corners[4];
-    float radius;
 };
 struct AirlightFlatLobe {
     vec3 p;
@@ -279,6 +279,7 @@ const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
 const float AIRLIGHT_EDGE_REACH = 0.5;
+const float AIRLIGHT_CROSSING_REACH = 16.0;
 
 
 float[8] airlight_zero_terms() {
@@ -440,8 +441,8 @@ vec2 airlight_csqrt(vec2 z_1) {
 vec2 airlight_cos_sin(float x) {
     float z_15 = (x * x);
     float c_8 = (1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (2.4801588e-5 + (z_15 * (-2.755732e-7 + (z_15 * (2.0876756e-9 + (z_15 * (-1.1470745e-11 + (z_15 * 4.7794773e-14))))))))))))))));
-    float s_55 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
-    return vec2(c_8, (s_55 * x));
+    float s_56 = (1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (2.7557319e-6 + (z_15 * (-2.5052108e-8 + (z_15 * (1.6059044e-10 + (z_15 * (-7.6471636e-13 + (z_15 * 2.8114574e-15))))))))))))))));
+    return vec2(c_8, (s_56 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -495,10 +496,10 @@ float airlight_log1p(float x_2) {
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_56 = (x_2 / (2.0 + x_2));
-    float z_17 = (s_56 * s_56);
+    float s_57 = (x_2 / (2.0 + x_2));
+    float z_17 = (s_57 * s_57);
     float sum_14 = ((((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0);
-    return ((2.0 * s_56) * sum_14);
+    return ((2.0 * s_57) * sum_14);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -570,9 +571,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_29 * x_29) + (y_7 * y_7)) < 1.0);
+    return (((x_30 * x_30) + (y_7 * y_7)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -725,8 +726,8 @@ float airlight_en_scaled_cf(float x_4, uint n) {
     float nf_1 = float(n);
     float m_7 = float(_e2);
     float b_17 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
-    float a_32 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
-    float disc = (1.0 - ((4.0 * a_32) / (b_17 * b_17)));
+    float a_33 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
+    float disc = (1.0 - ((4.0 * a_33) / (b_17 * b_17)));
     t_2 = b_17;
     if ((disc > 0.0)) {
         t_2 = ((b_17 * (1.0 + sqrt(disc))) * 0.5);
@@ -868,8 +869,8 @@ float[10] airlight_en_scaled(float x_5) {
 
 float airlight_hg_base(float g_2, float om, float op) {
     if ((g_2 >= 0.0)) {
-        float a_33 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_33 * a_33));
+        float a_34 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_34 * a_34));
     }
     float b_18 = (1.0 + g_2);
     return ((op * -((g_2 + g_2))) + (b_18 * b_18));
@@ -966,8 +967,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_2 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_30 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
-            return ((x_30 * x_30) * (3.0 - (2.0 * x_30)));
+            float x_31 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
+            return ((x_31 * x_31) * (3.0 - (2.0 * x_31)));
         }
         default: {
             return 1.0;
@@ -986,11 +987,11 @@ float airlight_singular_height(float side, float gap, float sigma) {
 }
 
 float airlight_hg_gap(float g_4) {
-    float a_34 = abs(g_4);
-    if (!((a_34 > 0.0))) {
+    float a_35 = abs(g_4);
+    if (!((a_35 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_34) * (1.0 - a_34)) / (a_34 + a_34));
+    return (((1.0 - a_35) * (1.0 - a_35)) / (a_35 + a_35));
 }
 
 vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
@@ -1005,8 +1006,8 @@ vec3 airlight_singular_heights(AirlightScene s_2, float sigma_1) {
             break;
         }
         case 3u: {
-            float a_35 = abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, ((a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_36 = abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, ((a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1230,10 +1231,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_31 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_31);
+            float x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_32);
             if (_e42) {
-                float _e43 = airlight_log1p(x_31);
+                float _e43 = airlight_log1p(x_32);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1365,8 +1366,8 @@ vec2[4] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[4], uint i_3) {
-    float x_32 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_32) : x_32);
+    float x_33 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_33) : x_33);
 }
 
 float[8] airlight_legendre(float g_7[8]) {
@@ -1441,8 +1442,8 @@ float[8] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_33 = (lambda / float((2u * k0_)));
-            float per_step = (x_33 * x_33);
+            float x_34 = (lambda / float((2u * k0_)));
+            float per_step = (x_34 * x_34);
             share = per_step;
             bool loop_init_6 = true;
             while(true) {
@@ -1853,8 +1854,8 @@ float airlight_error_factor(float c_2[8], float m_1[8], float floor_) {
 
 float airlight_bernstein_rho(float re, float im) {
     float im2_ = (im * im);
-    float a_36 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_36 + sqrt(max(((a_36 * a_36) - 1.0), 0.0)));
+    float a_37 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_37 + sqrt(max(((a_37 * a_37) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs) {
@@ -1868,8 +1869,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_34 = (half_5.big_h * _e13);
-    return ((x_34 > 0.0) ? exp(-(x_34)) : 1.0);
+    float x_35 = (half_5.big_h * _e13);
+    return ((x_35 > 0.0) ? exp(-(x_35)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2332,13 +2333,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_35 = (abs(alpha) + abs(beta_1));
+    float x_36 = (abs(alpha) + abs(beta_1));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_35) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_36) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2348,7 +2349,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_35) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_36) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2358,7 +2359,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_35) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_36) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2368,7 +2369,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_35) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_36) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2378,7 +2379,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_35) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_36) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2388,7 +2389,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_35) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_36) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2398,7 +2399,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_35) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_36) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2408,7 +2409,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_35) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_36) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -2879,9 +2880,9 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             break;
         }
         case 3u: {
-            float a_37 = abs(p0_4);
+            float a_38 = abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, ((a_37 > 0.0) ? ((1.0 - a_37) / a_37) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, ((a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3021,9 +3022,9 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     float a0_ = (k_4 + (sigma_9 * d_el));
     float b0_ = -((d_c + d_c));
     float c0_ = (k_4 - (sigma_9 * d_el));
-    float scale_3 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if (!(!((scale_3 > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale_3);
+    float scale_4 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if (!(!((scale_4 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_4);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3032,10 +3033,10 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     if (_e24) {
         return vec2(-1.0, -1.0);
     }
-    float a_38 = (a0_ / scale_3);
-    float b_19 = (b0_ / scale_3);
-    float c_10 = (c0_ / scale_3);
-    float disc_1 = ((b_19 * b_19) - ((4.0 * a_38) * c_10));
+    float a_39 = (a0_ / scale_4);
+    float b_19 = (b0_ / scale_4);
+    float c_10 = (c0_ / scale_4);
+    float disc_1 = ((b_19 * b_19) - ((4.0 * a_39) * c_10));
     if (!((disc_1 >= 0.0))) {
         return vec2(-1.0, -1.0);
     }
@@ -3047,8 +3048,8 @@ vec2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4) {
     if ((q_10 != 0.0)) {
         r1_ = (c_10 / q_10);
     }
-    if ((a_38 != 0.0)) {
-        r2_2 = (q_10 / a_38);
+    if ((a_39 != 0.0)) {
+        r2_2 = (q_10 / a_39);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3092,15 +3093,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_39 = (sigma_11 * g_15.d_el);
+    float a_40 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_39) / d_3);
-    if ((a_39 > 0.0)) {
-        y1_1 = (d_3 / (a_39 + root_1));
+    float root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_40) / d_3);
+    if ((a_40 > 0.0)) {
+        y1_1 = (d_3 / (a_40 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -4817,8 +4818,8 @@ AirlightListScan airlight_list_scan(AirlightPanelList l_2, uint count_1) {
     return _e329;
 }
 
-AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) {
-    float cuts_1[3] = float[3](0.0, 0.0, 0.0);
+AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[4]) {
+    float cuts_1[4] = float[4](0.0, 0.0, 0.0, 0.0);
     AirlightEdges e_1 = AirlightEdges(float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u);
     uint n_1 = 0u;
     uint i_18 = 0u;
@@ -4832,64 +4833,80 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[3]) 
         cuts_1[0] = _e13;
         cuts_1[1] = c_11;
     }
-    float _e16 = cuts_1[2];
-    float _e18 = cuts_1[1];
+    float _e16 = cuts_1[3];
+    float _e18 = cuts_1[2];
     if ((_e16 < _e18)) {
-        float c_12 = cuts_1[1];
-        float _e24 = cuts_1[2];
-        cuts_1[1] = _e24;
-        cuts_1[2] = c_12;
+        float c_12 = cuts_1[2];
+        float _e24 = cuts_1[3];
+        cuts_1[2] = _e24;
+        cuts_1[3] = c_12;
     }
-    float _e27 = cuts_1[1];
+    float _e27 = cuts_1[2];
     float _e29 = cuts_1[0];
     if ((_e27 < _e29)) {
         float c_13 = cuts_1[0];
-        float _e35 = cuts_1[1];
+        float _e35 = cuts_1[2];
         cuts_1[0] = _e35;
-        cuts_1[1] = c_13;
+        cuts_1[2] = c_13;
+    }
+    float _e38 = cuts_1[3];
+    float _e40 = cuts_1[1];
+    if ((_e38 < _e40)) {
+        float c_14 = cuts_1[1];
+        float _e46 = cuts_1[3];
+        cuts_1[1] = _e46;
+        cuts_1[3] = c_14;
+    }
+    float _e49 = cuts_1[2];
+    float _e51 = cuts_1[1];
+    if ((_e49 < _e51)) {
+        float c_15 = cuts_1[1];
+        float _e57 = cuts_1[2];
+        cuts_1[1] = _e57;
+        cuts_1[2] = c_15;
     }
     e_1 = AirlightEdges(float[13](lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     bool loop_init_22 = true;
     while(true) {
         if (!loop_init_22) {
-            uint _e74 = i_18;
-            i_18 = (_e74 + 1u);
+            uint _e96 = i_18;
+            i_18 = (_e96 + 1u);
         }
         loop_init_22 = false;
-        uint _e45 = i_18;
-        if ((_e45 < 3u)) {
+        uint _e67 = i_18;
+        if ((_e67 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e48 = i_18;
-            float _e50 = cuts_1[_e48];
-            uint _e52 = n_1;
-            float _e54 = e_1.at[_e52];
-            if ((_e50 > _e54)) {
-                uint _e58 = i_18;
-                float _e60 = cuts_1[_e58];
-                local_130 = (_e60 < hi_3);
+            uint _e70 = i_18;
+            float _e72 = cuts_1[_e70];
+            uint _e74 = n_1;
+            float _e76 = e_1.at[_e74];
+            if ((_e72 > _e76)) {
+                uint _e80 = i_18;
+                float _e82 = cuts_1[_e80];
+                local_130 = (_e82 < hi_3);
             } else {
                 local_130 = false;
             }
-            bool _e63 = local_130;
-            if (_e63) {
-                uint _e64 = n_1;
-                n_1 = (_e64 + 1u);
-                uint _e68 = n_1;
-                uint _e70 = i_18;
-                float _e72 = cuts_1[_e70];
-                e_1.at[_e68] = _e72;
+            bool _e85 = local_130;
+            if (_e85) {
+                uint _e86 = n_1;
+                n_1 = (_e86 + 1u);
+                uint _e90 = n_1;
+                uint _e92 = i_18;
+                float _e94 = cuts_1[_e92];
+                e_1.at[_e90] = _e94;
             }
         }
     }
-    uint _e77 = n_1;
-    e_1.at[(_e77 + 1u)] = hi_3;
-    uint _e82 = n_1;
-    e_1.panels = (_e82 + 1u);
-    AirlightEdges _e85 = e_1;
-    return _e85;
+    uint _e99 = n_1;
+    e_1.at[(_e99 + 1u)] = hi_3;
+    uint _e104 = n_1;
+    e_1.panels = (_e104 + 1u);
+    AirlightEdges _e107 = e_1;
+    return _e107;
 }
 
 AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
@@ -5000,10 +5017,10 @@ AirlightAdaptive airlight_adaptive_step(AirlightAdaptive state, float kronrod, f
 
 float airlight_asinh(float x_16) {
     float r_4 = 0.0;
-    float a_40 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
-    if ((a_40 <= 4096.0)) {
-        float _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1.0 + sqrt((1.0 + (a_40 * a_40)))))));
+    float a_41 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
+    if ((a_41 <= 4096.0)) {
+        float _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1.0 + sqrt((1.0 + (a_41 * a_41)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5028,8 +5045,8 @@ vec2 airlight_cos_sin_half_turn(float x_17) {
 }
 
 float airlight_acos(float x_18) {
-    float a_41 = abs(x_18);
-    float _e8 = airlight_atan(sqrt(((1.0 - a_41) / (1.0 + a_41))));
+    float a_42 = abs(x_18);
+    float _e8 = airlight_atan(sqrt(((1.0 - a_42) / (1.0 + a_42))));
     return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -5039,12 +5056,12 @@ float airlight_angle(float c_6, float s_23) {
 }
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g) {
-    float a_42 = (cos_a * cos_g);
+    float a_43 = (cos_a * cos_g);
     float b_20 = (sin_a * sin_g);
-    if ((b_20 <= abs(a_42))) {
-        return ((a_42 > 0.0) ? AIRLIGHT_PI : 0.0);
+    if ((b_20 <= abs(a_43))) {
+        return ((a_43 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    float _e18 = airlight_acos(clamp((-(a_42) / b_20), -1.0, 1.0));
+    float _e18 = airlight_acos(clamp((-(a_43) / b_20), -1.0, 1.0));
     return _e18;
 }
 
@@ -5126,22 +5143,22 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         vec3 _e105 = airlight_normalize(s_25.brdf_view);
         vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         vec3 _e112 = u_1;
-        float x_36 = dot(_e111, _e112);
+        float x_37 = dot(_e111, _e112);
         vec3 _e114 = u_1;
         float y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_36 * x_36) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_36, abs(y_12));
+            float _e140 = airlight_angle(x_37, abs(y_12));
             float phi_r = (((y_12 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_36 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5189,7 +5206,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         }
         {
             uint _e227 = i_19;
-            float c_14 = cuts_2[_e227];
+            float c_16 = cuts_2[_e227];
             uint _e230 = i_19;
             j_4 = _e230;
             while(true) {
@@ -5197,7 +5214,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2[(_e237 - 1u)];
-                    local_135 = (_e241 > c_14);
+                    local_135 = (_e241 > c_16);
                 } else {
                     local_135 = false;
                 }
@@ -5216,7 +5233,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
                 }
             }
             uint _e255 = j_4;
-            cuts_2[_e255] = c_14;
+            cuts_2[_e255] = c_16;
         }
     }
     float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1));
@@ -5444,9 +5461,9 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
     vec2 inner = vec2(0.0);
     float sum_6 = 0.0;
     uint i_23 = 0u;
-    float c_15 = (g_23.cos_r * cs.x);
+    float c_17 = (g_23.cos_r * cs.x);
     float d_4 = (g_23.sin_r * cs.y);
-    float peak = (c_15 + d_4);
+    float peak = (c_17 + d_4);
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -5521,7 +5538,7 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     bool local_155 = false;
     bool local_156 = false;
     bool local_157 = false;
-    float cuts_3[3] = float[3](3.4028235e38, 3.4028235e38, 3.4028235e38);
+    float cuts_3[4] = float[4](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
     bool local_158 = false;
     uint i_24 = 0u;
@@ -5672,15 +5689,15 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     g_24.s_star = _e170;
     float _e172 = scale;
     g_24.scale = _e172;
-    float _e178 = s_star;
-    at = float[3](_e178, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
-    float _e187 = scale;
-    if ((_e187 > 0.0)) {
-        AirlightOuter _e192 = g_24;
-        float _e194 = airlight_to_w(_e192, 0.0);
-        AirlightOuter _e196 = g_24;
-        float _e197 = airlight_to_w(_e196, _e15);
-        local_158 = (min(-(_e194), _e197) < 0.5);
+    float _e179 = s_star;
+    at = float[3](_e179, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
+    float _e188 = scale;
+    if ((_e188 > 0.0)) {
+        AirlightOuter _e193 = g_24;
+        float _e195 = airlight_to_w(_e193, 0.0);
+        AirlightOuter _e197 = g_24;
+        float _e198 = airlight_to_w(_e197, _e15);
+        local_158 = (min(-(_e195), _e198) < 0.5);
     } else {
         local_158 = false;
     }
@@ -5688,76 +5705,76 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     bool loop_init_30 = true;
     while(true) {
         if (!loop_init_30) {
-            uint _e252 = i_24;
-            i_24 = (_e252 + 1u);
+            uint _e253 = i_24;
+            i_24 = (_e253 + 1u);
         }
         loop_init_30 = false;
-        uint _e205 = i_24;
-        if ((_e205 < 3u)) {
+        uint _e206 = i_24;
+        if ((_e206 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e208 = i_24;
-            if ((_e208 == 0u)) {
+            uint _e209 = i_24;
+            if ((_e209 == 0u)) {
                 local_159 = sliver;
             } else {
                 local_159 = false;
             }
-            bool _e214 = local_159;
-            if (_e214) {
+            bool _e215 = local_159;
+            if (_e215) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
-                uint _e219 = i_24;
-                local_160 = (_e219 > 0u);
+                uint _e220 = i_24;
+                local_160 = (_e220 > 0u);
             } else {
                 local_160 = false;
             }
-            bool _e223 = local_160;
-            if (_e223) {
+            bool _e224 = local_160;
+            if (_e224) {
                 continue;
             }
-            uint _e224 = i_24;
-            if ((_e224 == 2u)) {
+            uint _e225 = i_24;
+            if ((_e225 == 2u)) {
                 local_161 = infinite_5;
             } else {
                 local_161 = false;
             }
-            bool _e230 = local_161;
-            if (_e230) {
+            bool _e231 = local_161;
+            if (_e231) {
                 continue;
             }
-            uint _e231 = i_24;
-            float _e233 = at[_e231];
-            if ((_e233 > 0.0)) {
-                uint _e238 = i_24;
-                float _e240 = at[_e238];
-                local_162 = (_e240 < _e15);
+            uint _e232 = i_24;
+            float _e234 = at[_e232];
+            if ((_e234 > 0.0)) {
+                uint _e239 = i_24;
+                float _e241 = at[_e239];
+                local_162 = (_e241 < _e15);
             } else {
                 local_162 = false;
             }
-            bool _e243 = local_162;
-            if (_e243) {
-                uint _e244 = i_24;
-                AirlightOuter _e246 = g_24;
-                uint _e247 = i_24;
-                float _e249 = at[_e247];
-                float _e250 = airlight_to_w(_e246, _e249);
-                cuts_3[_e244] = _e250;
+            bool _e244 = local_162;
+            if (_e244) {
+                uint _e245 = i_24;
+                AirlightOuter _e247 = g_24;
+                uint _e248 = i_24;
+                float _e250 = at[_e248];
+                float _e251 = airlight_to_w(_e247, _e250);
+                cuts_3[_e245] = _e251;
             }
         }
     }
-    AirlightOuter _e254 = g_24;
-    float _e256 = airlight_to_w(_e254, 0.0);
-    AirlightOuter _e257 = g_24;
-    float _e258 = airlight_to_w(_e257, _e15);
-    float _e259[3] = cuts_3;
-    AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_24.edges = _e260.at;
-    g_24.panels = _e260.panels;
-    AirlightOuter _e265 = g_24;
-    return _e265;
+    AirlightOuter _e255 = g_24;
+    float _e257 = airlight_to_w(_e255, 0.0);
+    AirlightOuter _e258 = g_24;
+    float _e259 = airlight_to_w(_e258, _e15);
+    float _e260[4] = cuts_3;
+    AirlightEdges _e261 = airlight_edges_between(_e257, _e259, _e260);
+    g_24.edges = _e261.at;
+    g_24.panels = _e261.panels;
+    AirlightOuter _e266 = g_24;
+    return _e266;
 }
 
 AirlightCanonical airlight_no_canonical() {
@@ -5782,15 +5799,15 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_40 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_21 - float(i_40));
-        float a_43 = g_25.gamma[i_40];
-        float b_21 = g_25.gamma[(i_40 + 1u)];
-        float w_8 = (b_21 - a_43);
+        uint i_42 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_42));
+        float a_44 = g_25.gamma[i_42];
+        float b_21 = g_25.gamma[(i_42 + 1u)];
+        float w_8 = (b_21 - a_44);
         float u_8 = (1.0 - t_9);
-        bool smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        bool smooth_a = (((g_25.smooth_edges >> i_42) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
         jacobian = (((w_8 * 6.0) * t_9) * u_8);
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -5799,7 +5816,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_43 + ((w_8 * t_9) * t_9)) : _e58);
+        gamma_1 = (_e66 ? (a_44 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -5831,7 +5848,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_43 + (w_8 * t_9)) : _e96);
+        gamma_1 = (_e102 ? (a_44 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -6104,8 +6121,8 @@ vec4 airlight_phase_lobes(AirlightScene s_34) {
             break;
         }
         case 3u: {
-            float a_44 = abs(p0_5);
-            vec2 _e21 = airlight_lobe(p0_5, ((a_44 > 0.0) ? ((1.0 - a_44) / a_44) : AIRLIGHT_FLT_MAX));
+            float a_45 = abs(p0_5);
+            vec2 _e21 = airlight_lobe(p0_5, ((a_45 > 0.0) ? ((1.0 - a_45) / a_45) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -6157,52 +6174,114 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3) {
     return _e7;
 }
 
-AirlightArea airlight_area(AirlightScene s_35) {
-    AirlightArea a_18 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
+vec2 airlight_outline_distances(AirlightOutline o) {
+    vec2 nearest = vec2(3.4028235e38);
+    uint i_27 = 0u;
+    if ((o.radius > 0.0)) {
+        vec2 c_18 = o.corners[0];
+        return vec2(abs((sqrt(((c_18.x * c_18.x) + (c_18.y * c_18.y))) - o.radius)), AIRLIGHT_FLT_MAX);
+    }
+    bool loop_init_31 = true;
+    while(true) {
+        if (!loop_init_31) {
+            uint _e78 = i_27;
+            i_27 = (_e78 + 1u);
+        }
+        loop_init_31 = false;
+        uint _e24 = i_27;
+        if ((_e24 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e28 = i_27;
+            vec2 a_46 = o.corners[_e28];
+            uint _e31 = i_27;
+            vec2 e_15 = (o.corners[((_e31 + 1u) % 4u)] - a_46);
+            vec2 p_4 = (a_46 + (clamp((-(((a_46.x * e_15.x) + (a_46.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0) * e_15));
+            float distance_ = sqrt(((p_4.x * p_4.x) + (p_4.y * p_4.y)));
+            float _e68 = nearest.x;
+            if ((distance_ < _e68)) {
+                float _e71 = nearest.x;
+                nearest = vec2(distance_, _e71);
+            } else {
+                float _e74 = nearest.y;
+                if ((distance_ < _e74)) {
+                    nearest.y = distance_;
+                }
+            }
+        }
+    }
+    vec2 _e80 = nearest;
+    return _e80;
+}
+
+AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_18, vec3 x_22) {
+    vec3 rel = (x_22 - a_18.c);
+    vec2 foot = vec2(dot(rel, a_18.a1_), dot(rel, a_18.a2_));
+    vec2 zero = vec2(0.0);
+    if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
+        return AirlightOutline(vec2[4](-(foot), zero, zero, zero), a_18.radius);
+    }
+    vec2 u2_ = vec2(dot(a_18.eu, a_18.a1_), dot(a_18.eu, a_18.a2_));
+    vec2 v2_ = vec2(dot(a_18.ev, a_18.a1_), dot(a_18.ev, a_18.a2_));
+    return AirlightOutline(vec2[4](-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0.0);
+}
+
+AirlightArea airlight_area(AirlightScene s_36) {
+    AirlightArea a_19 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
     bool local_172 = false;
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
+    vec2 distances = vec2(3.4028235e38);
+    float front = 1.0;
     vec3 centre = vec3(0.0);
     float size = 0.0;
     float t_end_1 = 0.0;
     bool end_infinite = false;
     bool local_173 = false;
-    float cuts_4[3] = float[3](0.0, 0.0, 0.0);
-    uint i_27 = 0u;
+    float cuts_4[4] = float[4](0.0, 0.0, 0.0, 0.0);
+    float scale_1 = 1.0;
     bool local_174 = false;
     bool local_175 = false;
     bool local_176 = false;
-    vec3 zero = vec3(0.0);
-    vec4 _e21 = airlight_phase_lobes(s_35);
-    a_18 = AirlightArea(zero, s_35.light_position, zero, zero, zero, zero, zero, zero, s_35.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
-    bool _e28 = airlight_isotropic_phase(s_35);
-    a_18.isotropic = _e28;
-    if (!((s_35.intensity == 0.0))) {
-        local_172 = (s_35.sigma_s == 0.0);
+    bool local_177 = false;
+    uint i_28 = 0u;
+    uint i_29 = 0u;
+    bool local_178 = false;
+    bool local_179 = false;
+    bool local_180 = false;
+    vec3 zero_1 = vec3(0.0);
+    vec4 _e21 = airlight_phase_lobes(s_36);
+    a_19 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    bool _e28 = airlight_isotropic_phase(s_36);
+    a_19.isotropic = _e28;
+    if (!((s_36.intensity == 0.0))) {
+        local_172 = (s_36.sigma_s == 0.0);
     } else {
         local_172 = true;
     }
     bool _e39 = local_172;
     if (_e39) {
-        a_18.outcome = 1u;
-        AirlightArea _e42 = a_18;
+        a_19.outcome = 1u;
+        AirlightArea _e42 = a_19;
         return _e42;
     }
-    vec3 o_6 = s_35.origin;
-    vec3 _e45 = airlight_normalize(s_35.dir);
-    a_18.d = _e45;
-    bool infinite_6 = ((s_35.flags & 1u) != 0u);
-    float t0_2 = s_35.t_min;
-    centre = s_35.light_position;
-    size = s_35.light_param_a;
-    if ((s_35.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
-        vec3 _e67 = a_18.c;
-        vec3 oc = (o_6 - _e67);
+    vec3 o_7 = s_36.origin;
+    vec3 _e45 = airlight_normalize(s_36.dir);
+    a_19.d = _e45;
+    bool infinite_6 = ((s_36.flags & 1u) != 0u);
+    float t0_2 = s_36.t_min;
+    centre = s_36.light_position;
+    size = s_36.light_param_a;
+    if ((s_36.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+        vec3 _e72 = a_19.c;
+        vec3 oc = (o_7 - _e72);
         float b_22 = dot(oc, _e45);
-        float _e72 = a_18.radius;
-        float _e74 = a_18.radius;
-        float k_12 = (dot(oc, oc) - (_e72 * _e74));
+        float _e77 = a_19.radius;
+        float _e79 = a_19.radius;
+        float k_12 = (dot(oc, oc) - (_e77 * _e79));
         float disc_2 = ((b_22 * b_22) - k_12);
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
@@ -6212,295 +6291,373 @@ AirlightArea airlight_area(AirlightScene s_35) {
             cut_count = 2u;
         }
     } else {
-        if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            vec3 _e98 = airlight_normalize(s_35.light_axis);
-            a_18.n = _e98;
-            vec3 _e101 = a_18.n;
-            vec3 _e102 = airlight_basis_e1_(_e101);
-            a_18.a1_ = _e102;
+        if ((s_36.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            vec3 _e103 = airlight_normalize(s_36.light_axis);
+            a_19.n = _e103;
+            vec3 _e106 = a_19.n;
+            vec3 _e107 = airlight_basis_e1_(_e106);
+            a_19.a1_ = _e107;
         } else {
-            a_18.eu = s_35.light_axis;
-            a_18.ev = s_35.light_end;
-            vec3 _e109 = a_18.eu;
-            vec3 _e111 = a_18.ev;
-            vec3 _e113 = airlight_normalize(cross(_e109, _e111));
-            a_18.n = _e113;
-            vec3 _e116 = a_18.eu;
-            vec3 _e117 = airlight_normalize(_e116);
-            a_18.a1_ = _e117;
-            vec3 _e119 = a_18.eu;
-            vec3 _e121 = a_18.ev;
-            vec3 diagonal = (_e119 + _e121);
-            vec3 _e124 = a_18.c;
-            centre = (_e124 + (0.5 * diagonal));
-            float _e128 = airlight_safe_length(diagonal);
-            vec3 _e130 = a_18.eu;
-            vec3 _e132 = a_18.ev;
-            float _e134 = airlight_safe_length((_e130 - _e132));
-            size = (0.5 * max(_e128, _e134));
+            a_19.eu = s_36.light_axis;
+            a_19.ev = s_36.light_end;
+            vec3 _e114 = a_19.eu;
+            vec3 _e116 = a_19.ev;
+            vec3 _e118 = airlight_normalize(cross(_e114, _e116));
+            a_19.n = _e118;
+            vec3 _e121 = a_19.eu;
+            vec3 _e122 = airlight_normalize(_e121);
+            a_19.a1_ = _e122;
+            vec3 _e124 = a_19.eu;
+            vec3 _e126 = a_19.ev;
+            vec3 diagonal = (_e124 + _e126);
+            vec3 _e129 = a_19.c;
+            centre = (_e129 + (0.5 * diagonal));
+            float _e133 = airlight_safe_length(diagonal);
+            vec3 _e135 = a_19.eu;
+            vec3 _e137 = a_19.ev;
+            float _e139 = airlight_safe_length((_e135 - _e137));
+            size = (0.5 * max(_e133, _e139));
         }
-        vec3 _e140 = a_18.n;
-        vec3 _e142 = a_18.a1_;
-        a_18.a2_ = cross(_e140, _e142);
-        vec3 _e146 = a_18.a1_;
-        vec3 _e149 = a_18.a2_;
-        vec3 _e152 = a_18.n;
-        a_18.dirs = vec3(dot(_e146, _e45), dot(_e149, _e45), dot(_e152, _e45));
-        vec3 _e156 = a_18.c;
-        vec3 _e159 = a_18.n;
-        vec3 _e162 = a_18.n;
-        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
+        vec3 _e145 = a_19.n;
+        vec3 _e147 = a_19.a1_;
+        a_19.a2_ = cross(_e145, _e147);
+        vec3 _e151 = a_19.a1_;
+        vec3 _e154 = a_19.a2_;
+        vec3 _e157 = a_19.n;
+        a_19.dirs = vec3(dot(_e151, _e45), dot(_e154, _e45), dot(_e157, _e45));
+        vec3 _e161 = a_19.c;
+        vec3 _e164 = a_19.n;
+        vec3 _e167 = a_19.n;
+        cut0_ = (dot((_e161 - o_7), _e164) / dot(_e45, _e167));
         cut_count = 1u;
+        AirlightArea _e171 = a_19;
+        float _e172 = cut0_;
+        AirlightOutline _e175 = airlight_outline_at(s_36, _e171, (o_7 + (_e172 * _e45)));
+        vec2 _e176 = airlight_outline_distances(_e175);
+        distances = _e176;
+        vec3 _e178 = a_19.n;
+        front = ((dot(_e45, _e178) < 0.0) ? -1.0 : 1.0);
     }
-    float _e166 = size;
-    if (!((_e166 > 0.0))) {
-        a_18.outcome = 1u;
-        AirlightArea _e172 = a_18;
-        return _e172;
-    }
-    vec3 _e173 = centre;
-    vec3 to_centre = (_e173 - o_6);
-    a_18.x_h = dot(to_centre, _e45);
-    float _e178 = a_18.x_h;
-    float _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
-    float _e184 = size;
     float _e185 = size;
-    a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
-    t_end_1 = s_35.t_max;
+    if (!((_e185 > 0.0))) {
+        a_19.outcome = 1u;
+        AirlightArea _e191 = a_19;
+        return _e191;
+    }
+    vec3 _e192 = centre;
+    vec3 to_centre = (_e192 - o_7);
+    a_19.x_h = dot(to_centre, _e45);
+    float _e197 = a_19.x_h;
+    float _e200 = airlight_safe_length((to_centre - (_e197 * _e45)));
+    float _e203 = size;
+    float _e204 = size;
+    a_19.h_eff = sqrt(((_e200 * _e200) + (_e203 * _e204)));
+    t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
-    if ((s_35.sigma_t > 0.0)) {
-        vec3 _e195 = centre;
-        float _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
-        float _e201 = size;
-        float reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t));
+    if ((s_36.sigma_t > 0.0)) {
+        vec3 _e214 = centre;
+        float _e218 = airlight_safe_length((_e214 - (o_7 + (t0_2 * _e45))));
+        float _e220 = size;
+        float reach_1 = (((t0_2 + _e218) + _e220) - (-15.942385 / s_36.sigma_t));
         if (!(infinite_6)) {
-            float _e210 = t_end_1;
-            local_173 = (reach_1 < _e210);
+            float _e229 = t_end_1;
+            local_173 = (reach_1 < _e229);
         } else {
             local_173 = true;
         }
-        bool _e213 = local_173;
-        if (_e213) {
+        bool _e232 = local_173;
+        if (_e232) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e215 = a_18;
-    float _e217 = airlight_area_theta(_e215, t0_2, false);
-    AirlightArea _e218 = a_18;
-    float _e219 = t_end_1;
-    bool _e220 = end_infinite;
-    float _e221 = airlight_area_theta(_e218, _e219, _e220);
-    float _e223 = a_18.x_h;
-    float _e225 = a_18.x_h;
-    float _e226 = cut0_;
-    uint _e227 = cut_count;
-    float _e232 = a_18.x_h;
-    float _e233 = cut1_;
-    uint _e234 = cut_count;
-    cuts_4 = float[3](_e223, ((_e227 > 0u) ? _e226 : _e225), ((_e234 > 1u) ? _e233 : _e232));
-    bool loop_init_31 = true;
-    while(true) {
-        if (!loop_init_31) {
-            uint _e274 = i_27;
-            i_27 = (_e274 + 1u);
+    AirlightArea _e234 = a_19;
+    float _e236 = airlight_area_theta(_e234, t0_2, false);
+    AirlightArea _e237 = a_19;
+    float _e238 = t_end_1;
+    bool _e239 = end_infinite;
+    float _e240 = airlight_area_theta(_e237, _e238, _e239);
+    float _e242 = a_19.x_h;
+    float _e244 = a_19.x_h;
+    float _e245 = cut0_;
+    uint _e246 = cut_count;
+    float _e251 = a_19.x_h;
+    float _e252 = cut1_;
+    uint _e253 = cut_count;
+    float _e258 = a_19.x_h;
+    cuts_4 = float[4](_e242, ((_e246 > 0u) ? _e245 : _e244), ((_e253 > 1u) ? _e252 : _e251), _e258);
+    float _e265 = a_19.lobes.y;
+    if ((_e265 > 0.0)) {
+        float _e268 = scale_1;
+        float _e271 = a_19.lobes.y;
+        scale_1 = min(_e268, _e271);
+    }
+    float _e275 = a_19.lobes.w;
+    if ((_e275 > 0.0)) {
+        float _e278 = scale_1;
+        float _e281 = a_19.lobes.w;
+        scale_1 = min(_e278, _e281);
+    }
+    uint _e283 = cut_count;
+    if ((_e283 == 1u)) {
+        float _e288 = scale_1;
+        local_174 = (_e288 < 1.0);
+    } else {
+        local_174 = false;
+    }
+    bool _e292 = local_174;
+    if (_e292) {
+        float _e295 = cut0_;
+        local_175 = (_e295 >= t0_2);
+    } else {
+        local_175 = false;
+    }
+    bool _e298 = local_175;
+    if (_e298) {
+        bool _e301 = end_infinite;
+        if (!(_e301)) {
+            float _e305 = cut0_;
+            float _e306 = t_end_1;
+            local_177 = (_e305 <= _e306);
+        } else {
+            local_177 = true;
         }
-        loop_init_31 = false;
-        uint _e242 = i_27;
-        if ((_e242 < 3u)) {
+        bool _e309 = local_177;
+        local_176 = _e309;
+    } else {
+        local_176 = false;
+    }
+    bool _e311 = local_176;
+    if (_e311) {
+        bool loop_init_32 = true;
+        while(true) {
+            if (!loop_init_32) {
+                uint _e336 = i_28;
+                i_28 = (_e336 + 1u);
+            }
+            loop_init_32 = false;
+            uint _e314 = i_28;
+            if ((_e314 < 2u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e318 = i_28;
+                float _e320 = distances[_e318];
+                float _e322 = scale_1;
+                float reach_2 = ((AIRLIGHT_CROSSING_REACH * _e320) / _e322);
+                float _e325 = a_19.h_eff;
+                if ((reach_2 < _e325)) {
+                    uint _e327 = i_28;
+                    float _e331 = cut0_;
+                    float _e332 = front;
+                    cuts_4[(_e327 + 2u)] = (_e331 + (_e332 * reach_2));
+                }
+            }
+        }
+    }
+    bool loop_init_33 = true;
+    while(true) {
+        if (!loop_init_33) {
+            uint _e372 = i_29;
+            i_29 = (_e372 + 1u);
+        }
+        loop_init_33 = false;
+        uint _e340 = i_29;
+        if ((_e340 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e245 = i_27;
-            float t_10 = cuts_4[_e245];
-            uint _e248 = i_27;
-            cuts_4[_e248] = _e217;
-            bool _e250 = airlight_is_finite(t_10);
-            if (_e250) {
-                local_174 = (t_10 >= t0_2);
+            uint _e343 = i_29;
+            float t_10 = cuts_4[_e343];
+            uint _e346 = i_29;
+            cuts_4[_e346] = _e236;
+            bool _e348 = airlight_is_finite(t_10);
+            if (_e348) {
+                local_178 = (t_10 >= t0_2);
             } else {
-                local_174 = false;
+                local_178 = false;
             }
-            bool _e255 = local_174;
-            if (_e255) {
-                bool _e258 = end_infinite;
-                if (!(_e258)) {
-                    float _e262 = t_end_1;
-                    local_176 = (t_10 <= _e262);
+            bool _e353 = local_178;
+            if (_e353) {
+                bool _e356 = end_infinite;
+                if (!(_e356)) {
+                    float _e360 = t_end_1;
+                    local_180 = (t_10 <= _e360);
                 } else {
-                    local_176 = true;
+                    local_180 = true;
                 }
-                bool _e265 = local_176;
-                local_175 = _e265;
+                bool _e363 = local_180;
+                local_179 = _e363;
             } else {
-                local_175 = false;
+                local_179 = false;
             }
-            bool _e267 = local_175;
-            if (_e267) {
-                uint _e268 = i_27;
-                AirlightArea _e270 = a_18;
-                float _e272 = airlight_area_theta(_e270, t_10, false);
-                cuts_4[_e268] = _e272;
+            bool _e365 = local_179;
+            if (_e365) {
+                uint _e366 = i_29;
+                AirlightArea _e368 = a_19;
+                float _e370 = airlight_area_theta(_e368, t_10, false);
+                cuts_4[_e366] = _e370;
             }
         }
     }
-    float _e276[3] = cuts_4;
-    AirlightEdges _e277 = airlight_edges_between(_e217, _e221, _e276);
-    a_18.edges = _e277.at;
-    a_18.panels = _e277.panels;
-    AirlightArea _e282 = a_18;
-    return _e282;
+    float _e374[4] = cuts_4;
+    AirlightEdges _e375 = airlight_edges_between(_e236, _e240, _e374);
+    a_19.edges = _e375.at;
+    a_19.panels = _e375.panels;
+    AirlightArea _e380 = a_19;
+    return _e380;
 }
 
 AirlightAbove airlight_above(float z_10, vec2 off) {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-float airlight_flat_node(AirlightScene s_36, AirlightArea a_19, AirlightAbove above_1, vec2 e_3, float graded_1, float node_1) {
+float airlight_flat_node(AirlightScene s_37, AirlightArea a_20, AirlightAbove above_1, vec2 e_3, float graded_1, float node_1) {
     vec2 _e6 = airlight_graded_node(graded_1, node_1);
     vec2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    vec2 p_4 = (above_1.off + (r_13 * e_3));
+    vec2 p_5 = (above_1.off + (r_13 * e_3));
     float z_19 = above_1.z;
-    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    float dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    float _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
-    float _e52 = airlight_emitted(s_36, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    float _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_19 * a_20.dirs.z)) * inv_5));
+    float _e52 = airlight_emitted(s_37, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_37, AirlightArea a_20, AirlightAbove above_2, vec2 e_4, float r_max) {
+float airlight_flat_radial(AirlightScene s_38, AirlightArea a_21, AirlightAbove above_2, vec2 e_4, float r_max) {
     float sum_7 = 0.0;
     float _e7 = airlight_atan((r_max / above_2.rho0_));
-    vec2 _e8 = airlight_graded_range(s_37, _e7);
+    vec2 _e8 = airlight_graded_range(s_38, _e7);
     float graded_6 = _e8.y;
-    float c_16 = (0.5 * _e8.x);
+    float c_19 = (0.5 * _e8.x);
     float hw_2 = (0.5 * _e8.x);
     float _e18 = sum_7;
-    float _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.09501251 * hw_2)));
+    float _e24 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.09501251 * hw_2)));
     sum_7 = (_e18 + ((0.1894506 * hw_2) * _e24));
     float _e27 = sum_7;
-    float _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.09501251 * hw_2)));
+    float _e33 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.09501251 * hw_2)));
     sum_7 = (_e27 + ((0.1894506 * hw_2) * _e33));
     float _e36 = sum_7;
-    float _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.28160354 * hw_2)));
+    float _e42 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.28160354 * hw_2)));
     sum_7 = (_e36 + ((0.18260342 * hw_2) * _e42));
     float _e45 = sum_7;
-    float _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.28160354 * hw_2)));
+    float _e51 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.28160354 * hw_2)));
     sum_7 = (_e45 + ((0.18260342 * hw_2) * _e51));
     float _e54 = sum_7;
-    float _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.45801678 * hw_2)));
+    float _e60 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.45801678 * hw_2)));
     sum_7 = (_e54 + ((0.16915652 * hw_2) * _e60));
     float _e63 = sum_7;
-    float _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.45801678 * hw_2)));
+    float _e69 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.45801678 * hw_2)));
     sum_7 = (_e63 + ((0.16915652 * hw_2) * _e69));
     float _e72 = sum_7;
-    float _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.61787623 * hw_2)));
+    float _e78 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.61787623 * hw_2)));
     sum_7 = (_e72 + ((0.14959599 * hw_2) * _e78));
     float _e81 = sum_7;
-    float _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.61787623 * hw_2)));
+    float _e87 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.61787623 * hw_2)));
     sum_7 = (_e81 + ((0.14959599 * hw_2) * _e87));
     float _e90 = sum_7;
-    float _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.7554044 * hw_2)));
+    float _e96 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.7554044 * hw_2)));
     sum_7 = (_e90 + ((0.12462897 * hw_2) * _e96));
     float _e99 = sum_7;
-    float _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.7554044 * hw_2)));
+    float _e105 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.7554044 * hw_2)));
     sum_7 = (_e99 + ((0.12462897 * hw_2) * _e105));
     float _e108 = sum_7;
-    float _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.8656312 * hw_2)));
+    float _e114 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.8656312 * hw_2)));
     sum_7 = (_e108 + ((0.09515851 * hw_2) * _e114));
     float _e117 = sum_7;
-    float _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.8656312 * hw_2)));
+    float _e123 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.8656312 * hw_2)));
     sum_7 = (_e117 + ((0.09515851 * hw_2) * _e123));
     float _e126 = sum_7;
-    float _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.944575 * hw_2)));
+    float _e132 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.944575 * hw_2)));
     sum_7 = (_e126 + ((0.062253524 * hw_2) * _e132));
     float _e135 = sum_7;
-    float _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.944575 * hw_2)));
+    float _e141 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.944575 * hw_2)));
     sum_7 = (_e135 + ((0.062253524 * hw_2) * _e141));
     float _e144 = sum_7;
-    float _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.9894009 * hw_2)));
+    float _e150 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.9894009 * hw_2)));
     sum_7 = (_e144 + ((0.02715246 * hw_2) * _e150));
     float _e153 = sum_7;
-    float _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.9894009 * hw_2)));
+    float _e159 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.9894009 * hw_2)));
     sum_7 = (_e153 + ((0.02715246 * hw_2) * _e159));
     float _e162 = sum_7;
     return _e162;
 }
 
-vec3 airlight_outline_boundary(AirlightOutline o, vec2 q_4) {
+vec3 airlight_outline_boundary(AirlightOutline o_1, vec2 q_4) {
     float best = AIRLIGHT_FLT_MAX;
-    vec2 nearest = vec2(0.0);
+    vec2 nearest_1 = vec2(0.0);
     bool inside = true;
-    uint i_28 = 0u;
-    bool local_177 = false;
-    if ((o.radius > 0.0)) {
-        vec2 qc = (q_4 - o.corners[0]);
+    uint i_30 = 0u;
+    bool local_181 = false;
+    if ((o_1.radius > 0.0)) {
+        vec2 qc = (q_4 - o_1.corners[0]);
         float dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
-        return vec3((o.corners[0] + ((qc * o.radius) / vec2(dq))), ((dq <= o.radius) ? 1.0 : 0.0));
+        return vec3((o_1.corners[0] + ((qc * o_1.radius) / vec2(dq))), ((dq <= o_1.radius) ? 1.0 : 0.0));
     }
-    nearest = q_4;
-    bool loop_init_32 = true;
+    nearest_1 = q_4;
+    bool loop_init_34 = true;
     while(true) {
-        if (!loop_init_32) {
-            uint _e110 = i_28;
-            i_28 = (_e110 + 1u);
+        if (!loop_init_34) {
+            uint _e110 = i_30;
+            i_30 = (_e110 + 1u);
         }
-        loop_init_32 = false;
-        uint _e36 = i_28;
+        loop_init_34 = false;
+        uint _e36 = i_30;
         if ((_e36 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e40 = i_28;
-            vec2 a_45 = o.corners[_e40];
-            uint _e43 = i_28;
-            vec2 e_15 = (o.corners[((_e43 + 1u) % 4u)] - a_45);
+            uint _e40 = i_30;
+            vec2 a_47 = o_1.corners[_e40];
+            uint _e43 = i_30;
+            vec2 e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_47);
             bool _e50 = inside;
             if (_e50) {
-                local_177 = ((((q_4.x - a_45.x) * e_15.y) - ((q_4.y - a_45.y) * e_15.x)) <= 0.0);
+                local_181 = ((((q_4.x - a_47.x) * e_16.y) - ((q_4.y - a_47.y) * e_16.x)) <= 0.0);
             } else {
-                local_177 = false;
+                local_181 = false;
             }
-            bool _e67 = local_177;
+            bool _e67 = local_181;
             inside = _e67;
-            float t_11 = clamp(((((q_4.x - a_45.x) * e_15.x) + ((q_4.y - a_45.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0);
-            vec2 p_5 = (a_45 + (t_11 * e_15));
-            float dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
+            float t_11 = clamp(((((q_4.x - a_47.x) * e_16.x) + ((q_4.y - a_47.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0.0, 1.0);
+            vec2 p_6 = (a_47 + (t_11 * e_16));
+            float dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
             float _e107 = best;
             if ((dd < _e107)) {
                 best = dd;
-                nearest = p_5;
+                nearest_1 = p_6;
             }
         }
     }
-    vec2 _e112 = nearest;
+    vec2 _e112 = nearest_1;
     bool _e113 = inside;
     return vec3(_e112, (_e113 ? 1.0 : 0.0));
 }
 
-vec2 airlight_outline_nearest(AirlightOutline o_1, vec2 q_5) {
-    vec3 _e2 = airlight_outline_boundary(o_1, q_5);
+vec2 airlight_outline_nearest(AirlightOutline o_2, vec2 q_5) {
+    vec3 _e2 = airlight_outline_boundary(o_2, q_5);
     return ((_e2.z > 0.0) ? q_5 : _e2.xy);
 }
 
-AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutline o_2, vec2 centre_1, float size_1) {
+AirlightFlatLobe airlight_flat_lobe(AirlightArea a_22, float z_11, AirlightOutline o_3, vec2 centre_1, float size_1) {
     uint j_5 = 0u;
-    bool local_178 = false;
-    bool local_179 = false;
-    bool local_180 = false;
+    bool local_182 = false;
+    bool local_183 = false;
+    bool local_184 = false;
     float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
-    bool loop_init_33 = true;
+    bool loop_init_35 = true;
     while(true) {
-        if (!loop_init_33) {
+        if (!loop_init_35) {
             uint _e80 = j_5;
             j_5 = (_e80 + 1u);
         }
-        loop_init_33 = false;
+        loop_init_35 = false;
         uint _e13 = j_5;
         if ((_e13 < 2u)) {
         } else {
@@ -6508,36 +6665,36 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
         }
         {
             uint _e20 = j_5;
-            vec2 lobe_4 = ((_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy);
-            vec3 p_6 = (lobe_4.x * a_21.dirs);
+            vec2 lobe_4 = ((_e20 == 1u) ? a_22.lobes.zw : a_22.lobes.xy);
+            vec3 p_7 = (lobe_4.x * a_22.dirs);
             if ((lobe_4.y > 0.0)) {
-                local_178 = (p_6.z < 0.0);
+                local_182 = (p_7.z < 0.0);
             } else {
-                local_178 = false;
+                local_182 = false;
             }
-            bool _e36 = local_178;
+            bool _e36 = local_182;
             if (_e36) {
-                local_179 = (lobe_4.y < (_e10 + _e10));
+                local_183 = (lobe_4.y < (_e10 + _e10));
             } else {
-                local_179 = false;
+                local_183 = false;
             }
-            bool _e43 = local_179;
+            bool _e43 = local_183;
             if (_e43) {
-                float l_4 = (z_11 / -(p_6.z));
-                vec2 q_13 = (l_4 * p_6.xy);
-                vec2 _e49 = airlight_outline_nearest(o_2, q_13);
+                float l_4 = (z_11 / -(p_7.z));
+                vec2 q_13 = (l_4 * p_7.xy);
+                vec2 _e49 = airlight_outline_nearest(o_3, q_13);
                 vec3 to_near = vec3(_e49, -(z_11));
-                float cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                float cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1.0);
                 bool on_emitter = (length((_e49 - q_13)) <= (1.9073486e-6 * ((length(q_13) + size_1) + z_11)));
                 if (!(on_emitter)) {
                     float _e69 = airlight_acos(cos_1);
-                    local_180 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_180 = true;
+                    local_184 = true;
                 }
-                bool _e75 = local_180;
+                bool _e75 = local_184;
                 if (_e75) {
-                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
+                    return AirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                 }
             }
         }
@@ -6545,9 +6702,9 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_21, float z_11, AirlightOutli
     return AirlightFlatLobe(vec3(0.0), 1.0, 0.0, 0.0, vec2(0.0), false);
 }
 
-vec2 airlight_radial_rule(uint i_29) {
+vec2 airlight_radial_rule(uint i_31) {
     vec2 rule_4[16] = vec2[16](vec2(-0.09501251, 0.1894506), vec2(0.09501251, 0.1894506), vec2(-0.28160354, 0.18260342), vec2(0.28160354, 0.18260342), vec2(-0.45801678, 0.16915652), vec2(0.45801678, 0.16915652), vec2(-0.61787623, 0.14959599), vec2(0.61787623, 0.14959599), vec2(-0.7554044, 0.12462897), vec2(0.7554044, 0.12462897), vec2(-0.8656312, 0.09515851), vec2(0.8656312, 0.09515851), vec2(-0.944575, 0.062253524), vec2(0.944575, 0.062253524), vec2(-0.9894009, 0.02715246), vec2(0.9894009, 0.02715246));
-    return rule_4[i_29];
+    return rule_4[i_31];
 }
 
 vec4 airlight_edge_at(AirlightEdgeRule rule_1, float beta) {
@@ -6559,9 +6716,9 @@ vec4 airlight_edge_at(AirlightEdgeRule rule_1, float beta) {
     return vec4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
-vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_6, vec2 e_5) {
-    vec2 m_13 = vec2((b_13.y - a_22.y), (a_22.x - b_13.x));
-    float num = (((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y));
+vec2 airlight_clip(vec2 chord, vec2 a_23, vec2 b_13, vec2 q_6, vec2 e_5) {
+    vec2 m_13 = vec2((b_13.y - a_23.y), (a_23.x - b_13.x));
+    float num = (((q_6.x - a_23.x) * m_13.x) + ((q_6.y - a_23.y) * m_13.y));
     float den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if ((den > 0.0)) {
         return vec2(chord.x, min(chord.y, (-(num) / den)));
@@ -6575,21 +6732,21 @@ vec2 airlight_clip(vec2 chord, vec2 a_22, vec2 b_13, vec2 q_6, vec2 e_5) {
     return chord;
 }
 
-vec2 airlight_outline_chord(AirlightOutline o_3, vec2 q_7, vec2 e_6) {
+vec2 airlight_outline_chord(AirlightOutline o_4, vec2 q_7, vec2 e_6) {
     vec2 chord_1 = vec2(0.0, 3.4028235e38);
-    if ((o_3.radius > 0.0)) {
-        vec2 qc_1 = (q_7 - o_3.corners[0]);
-        float a_46 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+    if ((o_4.radius > 0.0)) {
+        vec2 qc_1 = (q_7 - o_4.corners[0]);
+        float a_48 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         float b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        float k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        float disc_3 = ((b_23 * b_23) - (a_46 * k_13));
+        float k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        float disc_3 = ((b_23 * b_23) - (a_48 * k_13));
         if (!((disc_3 > 0.0))) {
             return vec2(0.0);
         }
         float root_3 = sqrt(disc_3);
         float t_12 = (-(b_23) - (((floatBitsToUint(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_12 / a_46);
+        float r1_2 = (t_12 / a_48);
         float r2_4 = (k_13 / t_12);
         float hi_8 = max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
@@ -6598,21 +6755,21 @@ vec2 airlight_outline_chord(AirlightOutline o_3, vec2 q_7, vec2 e_6) {
         return vec2(max(min(r1_2, r2_4), 0.0), hi_8);
     }
     vec2 _e70 = chord_1;
-    vec2 _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
+    vec2 _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_7, e_6);
     chord_1 = _e75;
     vec2 _e76 = chord_1;
-    vec2 _e81 = airlight_clip(_e76, o_3.corners[1], o_3.corners[2], q_7, e_6);
+    vec2 _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_7, e_6);
     chord_1 = _e81;
     vec2 _e82 = chord_1;
-    vec2 _e87 = airlight_clip(_e82, o_3.corners[2], o_3.corners[3], q_7, e_6);
+    vec2 _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_7, e_6);
     chord_1 = _e87;
     vec2 _e88 = chord_1;
-    vec2 _e93 = airlight_clip(_e88, o_3.corners[3], o_3.corners[0], q_7, e_6);
+    vec2 _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_7, e_6);
     return _e93;
 }
 
-vec2 airlight_graded_from(float scale_1, float start_1, float to) {
-    float graded_7 = max(scale_1, start_1);
+vec2 airlight_graded_from(float scale_2, float start_1, float to) {
+    float graded_7 = max(scale_2, start_1);
     float _e6 = airlight_atan(((to - start_1) / graded_7));
     return vec2(graded_7, _e6);
 }
@@ -6623,22 +6780,22 @@ vec3 airlight_graded_from_node(float start_2, float graded_2, float g_26) {
     return vec3(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
-float airlight_flat_lobe_node(AirlightScene s_38, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_3, float graded_3, float g_27) {
+float airlight_flat_lobe_node(AirlightScene s_39, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_3, float graded_3, float g_27) {
     vec3 _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
-    float c_17 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
-    if (!((c_17 > 0.0))) {
+    float c_20 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
+    if (!((c_20 > 0.0))) {
         return 0.0;
     }
-    float _e20 = airlight_emitted(s_38, c_17);
-    float _e32 = airlight_area_phase(s_38, (lobe_1.sign_ * _e7.x));
-    return ((((_e20 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0.0))) * _e32) * _e7.y) * _e7.z);
+    float _e20 = airlight_emitted(s_39, c_20);
+    float _e32 = airlight_area_phase(s_39, (lobe_1.sign_ * _e7.x));
+    return ((((_e20 * exp(min(((-(s_39.sigma_t) * z_12) / c_20), 0.0))) * _e32) * _e7.y) * _e7.z);
 }
 
-float airlight_flat_lobe_along(AirlightScene s_39, float z_13, AirlightOutline o_4, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
+float airlight_flat_lobe_along(AirlightScene s_40, float z_13, AirlightOutline o_5, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
     float sum_8 = 0.0;
     vec3 w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
     float k_14 = (w_9.z / -(lobe_2.p.z));
-    vec2 _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
+    vec2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
@@ -6646,55 +6803,55 @@ float airlight_flat_lobe_along(AirlightScene s_39, float z_13, AirlightOutline o
     float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     vec2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
-    float c_18 = (0.5 * _e42.y);
+    float c_21 = (0.5 * _e42.y);
     float hw_3 = (0.5 * _e42.y);
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.09501251 * hw_3)));
+    float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.09501251 * hw_3)));
+    float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.28160354 * hw_3)));
+    float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.28160354 * hw_3)));
+    float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.45801678 * hw_3)));
+    float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.45801678 * hw_3)));
+    float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.61787623 * hw_3)));
+    float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.61787623 * hw_3)));
+    float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.7554044 * hw_3)));
+    float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.7554044 * hw_3)));
+    float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.8656312 * hw_3)));
+    float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.8656312 * hw_3)));
+    float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.944575 * hw_3)));
+    float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.944575 * hw_3)));
+    float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.9894009 * hw_3)));
+    float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.9894009 * hw_3)));
+    float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -6706,25 +6863,25 @@ float airlight_lobe_azimuth(vec3 u_5, vec3 v_7, vec2 e_7) {
     return _e17;
 }
 
-float airlight_wrap_turn(float x_22) {
-    return (x_22 - (6.2831855 * roundEven((x_22 / 6.2831855))));
+float airlight_wrap_turn(float x_23) {
+    return (x_23 - (6.2831855 * roundEven((x_23 / 6.2831855))));
 }
 
-vec2 airlight_cos_sin_turns(float x_23) {
-    float _e1 = airlight_wrap_turn(x_23);
+vec2 airlight_cos_sin_turns(float x_24) {
+    float _e1 = airlight_wrap_turn(x_24);
     vec2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
 
-AirlightEdgeRule airlight_edge_rule(vec2 a_23, vec2 b_14, float width_1) {
-    vec2 e_16 = (b_14 - a_23);
-    float el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
-    vec2 t_13 = (e_16 / vec2(el));
-    float h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
-    float reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    float _e27 = airlight_atan2_(dot(a_23, t_13), reach_2);
-    float _e29 = airlight_atan2_(dot(b_14, t_13), reach_2);
-    return AirlightEdgeRule(h_9, t_13, reach_2, _e27, _e29);
+AirlightEdgeRule airlight_edge_rule(vec2 a_24, vec2 b_14, float width_1) {
+    vec2 e_17 = (b_14 - a_24);
+    float el = sqrt(((e_17.x * e_17.x) + (e_17.y * e_17.y)));
+    vec2 t_13 = (e_17 / vec2(el));
+    float h_9 = (((a_24.x * b_14.y) - (a_24.y * b_14.x)) / el);
+    float reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
+    float _e27 = airlight_atan2_(dot(a_24, t_13), reach_3);
+    float _e29 = airlight_atan2_(dot(b_14, t_13), reach_3);
+    return AirlightEdgeRule(h_9, t_13, reach_3, _e27, _e29);
 }
 
 vec4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_6) {
@@ -6734,61 +6891,61 @@ vec4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_6) {
     return vec4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-vec4 airlight_sort4_(vec4 x_24) {
-    vec4 a_47 = vec4(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
-    vec4 b_24 = vec4(min(a_47.x, a_47.z), min(a_47.y, a_47.w), max(a_47.x, a_47.z), max(a_47.y, a_47.w));
+vec4 airlight_sort4_(vec4 x_25) {
+    vec4 a_49 = vec4(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+    vec4 b_24 = vec4(min(a_49.x, a_49.z), min(a_49.y, a_49.w), max(a_49.x, a_49.z), max(a_49.y, a_49.w));
     return vec4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
 AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
-    float nearest_1 = AIRLIGHT_FLT_MAX;
+    float nearest_2 = AIRLIGHT_FLT_MAX;
     float farthest = 0.0;
     AirlightChordEdges edges_1 = AirlightChordEdges(vec2(0.0), vec2(0.0), 0.0);
-    uint i_30 = 0u;
-    bool local_181 = false;
-    bool local_182 = false;
-    bool loop_init_34 = true;
+    uint i_32 = 0u;
+    bool local_185 = false;
+    bool local_186 = false;
+    bool loop_init_36 = true;
     while(true) {
-        if (!loop_init_34) {
-            uint _e88 = i_30;
-            i_30 = (_e88 + 1u);
+        if (!loop_init_36) {
+            uint _e88 = i_32;
+            i_32 = (_e88 + 1u);
         }
-        loop_init_34 = false;
-        uint _e15 = i_30;
+        loop_init_36 = false;
+        uint _e15 = i_32;
         if ((_e15 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e18 = i_30;
-            vec2 a_48 = y_6[_e18];
-            uint _e20 = i_30;
-            vec2 d_5 = (y_6[((_e20 + 1u) % 4u)] - a_48);
+            uint _e18 = i_32;
+            vec2 a_50 = y_6[_e18];
+            uint _e20 = i_32;
+            vec2 d_5 = (y_6[((_e20 + 1u) % 4u)] - a_50);
             float den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if ((den_1 == 0.0)) {
                 continue;
             }
-            float r_15 = (((a_48.x * d_5.y) - (a_48.y * d_5.x)) / den_1);
-            float along = (((a_48.x * e_8.y) - (a_48.y * e_8.x)) / den_1);
+            float r_15 = (((a_50.x * d_5.y) - (a_50.y * d_5.x)) / den_1);
+            float along = (((a_50.x * e_8.y) - (a_50.y * e_8.x)) / den_1);
             if ((r_15 > 0.0)) {
-                local_181 = (along >= 0.0);
+                local_185 = (along >= 0.0);
             } else {
-                local_181 = false;
+                local_185 = false;
             }
-            bool _e59 = local_181;
+            bool _e59 = local_185;
             if (_e59) {
-                local_182 = (along <= 1.0);
+                local_186 = (along <= 1.0);
             } else {
-                local_182 = false;
+                local_186 = false;
             }
-            bool _e65 = local_182;
+            bool _e65 = local_186;
             if (_e65) {
                 vec2 n_7 = (vec2(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
-                float h_10 = dot(n_7, a_48);
+                float h_10 = dot(n_7, a_50);
                 vec2 outward = ((h_10 < 0.0) ? -(n_7) : n_7);
-                float _e79 = nearest_1;
+                float _e79 = nearest_2;
                 if ((r_15 < _e79)) {
-                    nearest_1 = r_15;
+                    nearest_2 = r_15;
                     edges_1.entry = outward;
                 }
                 float _e82 = farthest;
@@ -6816,25 +6973,25 @@ float airlight_mercator(vec2 n_3, vec2 cs_2) {
     return clamp(_e21, -(_e3), _e3);
 }
 
-float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o_5, AirlightFlatLobe lobe_3) {
+float airlight_flat_about_lobe(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3) {
     float sum_9 = 0.0;
     vec2 m_4 = vec2(1.0, 0.0);
     vec2 t_4 = vec2(0.0);
     uint j_7 = 0u;
-    uint i_31 = 0u;
-    uint i_32 = 0u;
-    vec4 area = vec4(0.0);
     uint i_33 = 0u;
     uint i_34 = 0u;
+    vec4 area = vec4(0.0);
+    uint i_35 = 0u;
+    uint i_36 = 0u;
     vec2 ya = vec2(0.0);
     vec2 yb = vec2(0.0);
     uint j_8 = 0u;
-    uint i_35 = 0u;
+    uint i_37 = 0u;
     uint j_9 = 0u;
     float merc_first = 0.0;
     float merc_last = 0.0;
-    bool local_183 = false;
-    float a_24 = 0.0;
+    bool local_187 = false;
+    float a_25 = 0.0;
     float b_15 = 0.0;
     uint j_10 = 0u;
     uint k_9 = 0u;
@@ -6842,15 +6999,15 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
     vec3 _e5 = airlight_basis_e1_(lobe_3.p);
     vec3 v_9 = cross(lobe_3.p, _e5);
     vec2 q_14 = lobe_3.q;
-    if ((o_5.radius > 0.0)) {
+    if ((o_6.radius > 0.0)) {
         if (lobe_3.on_emitter) {
-            vec2 dq_2 = (q_14 - o_5.corners[0]);
+            vec2 dq_2 = (q_14 - o_6.corners[0]);
             float d_6 = sqrt(dot(dq_2, dq_2));
             if ((d_6 > 0.0)) {
                 m_4 = (dq_2 / vec2(d_6));
             }
             vec2 _e31 = m_4;
-            vec2 rim_e = ((o_5.corners[0] + (o_5.radius * _e31)) - q_14);
+            vec2 rim_e = ((o_6.corners[0] + (o_6.radius * _e31)) - q_14);
             vec2 rim = vec2(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
             float _e41 = m_4.y;
             float _e46 = m_4.x;
@@ -6871,17 +7028,17 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             float _e87 = t_4.y;
             float _e91 = t_4.x;
             float h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
-            float half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0.0)));
+            float half_chord = (tl * sqrt(max(((o_6.radius - d_6) * (o_6.radius + d_6)), 0.0)));
             float width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
             vec2 _e108 = t_4;
             AirlightEdgeRule rule_5 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964, 1.5707964);
-            bool loop_init_35 = true;
+            bool loop_init_37 = true;
             while(true) {
-                if (!loop_init_35) {
+                if (!loop_init_37) {
                     uint _e143 = j_7;
                     j_7 = (_e143 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_37 = false;
                 uint _e118 = j_7;
                 if ((_e118 < 16u)) {
                 } else {
@@ -6895,41 +7052,41 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     vec2 _e125 = airlight_radial_rule(_e124);
                     vec4 _e129 = airlight_edge_at(rule_5, (1.5707964 * _e125.x));
                     float _e130 = sum_9;
-                    float _e139 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e129.xy);
+                    float _e139 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e129.xy);
                     sum_9 = (_e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
             }
             float _e146 = t_4.y;
             float _e148 = t_4.x;
             vec2 n_8 = vec2(_e146, -(_e148));
-            bool loop_init_36 = true;
+            bool loop_init_38 = true;
             while(true) {
-                if (!loop_init_36) {
-                    uint _e172 = i_31;
-                    i_31 = (_e172 + 1u);
+                if (!loop_init_38) {
+                    uint _e172 = i_33;
+                    i_33 = (_e172 + 1u);
                 }
-                loop_init_36 = false;
-                uint _e153 = i_31;
+                loop_init_38 = false;
+                uint _e153 = i_33;
                 if ((_e153 < 32u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = i_31;
+                    uint _e157 = i_33;
                     vec3 _e158 = airlight_azimuths(false, _e157);
                     float _e159 = sum_9;
                     vec2 _e163 = t_4;
-                    float _e168 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
+                    float _e168 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
                     sum_9 = (_e159 + (_e158.z * _e168));
                 }
             }
             float _e174 = sum_9;
             return _e174;
         }
-        vec2 d_7 = (o_5.corners[0] - q_14);
+        vec2 d_7 = (o_6.corners[0] - q_14);
         float dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
-        float sb_1 = (o_5.radius / dq_3);
-        float cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
+        float sb_1 = (o_6.radius / dq_3);
+        float cb = (sqrt(((dq_3 - o_6.radius) * (dq_3 + o_6.radius))) / dq_3);
         float _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
         float _e207 = airlight_lobe_azimuth(_e5, v_9, vec2(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
         float _e209 = airlight_wrap_turn((_e207 - _e195));
@@ -6937,50 +7094,50 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         float _e223 = airlight_wrap_turn((_e221 - _e195));
         float centre_2 = (_e195 + ((_e209 + _e223) * 0.5));
         float half_19 = (abs((_e209 - _e223)) * 0.5);
-        bool loop_init_37 = true;
+        bool loop_init_39 = true;
         while(true) {
-            if (!loop_init_37) {
-                uint _e253 = i_32;
-                i_32 = (_e253 + 1u);
+            if (!loop_init_39) {
+                uint _e253 = i_34;
+                i_34 = (_e253 + 1u);
             }
-            loop_init_37 = false;
-            uint _e234 = i_32;
+            loop_init_39 = false;
+            uint _e234 = i_34;
             if ((_e234 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e238 = i_32;
+                uint _e238 = i_34;
                 vec3 _e239 = airlight_azimuths(false, _e238);
                 float _e240 = sum_9;
                 vec2 _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e248);
+                float _e249 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e248);
                 sum_9 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
         }
         float _e255 = sum_9;
         return _e255;
     }
-    vec2 y_14[4] = vec2[4](vec2(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
+    vec2 y_14[4] = vec2[4](vec2(dot((o_6.corners[0] - q_14), _e5.xy), dot((o_6.corners[0] - q_14), v_9.xy)), vec2(dot((o_6.corners[1] - q_14), _e5.xy), dot((o_6.corners[1] - q_14), v_9.xy)), vec2(dot((o_6.corners[2] - q_14), _e5.xy), dot((o_6.corners[2] - q_14), v_9.xy)), vec2(dot((o_6.corners[3] - q_14), _e5.xy), dot((o_6.corners[3] - q_14), v_9.xy)));
     if (lobe_3.on_emitter) {
-        bool loop_init_38 = true;
+        bool loop_init_40 = true;
         while(true) {
-            if (!loop_init_38) {
-                uint _e330 = i_33;
-                i_33 = (_e330 + 1u);
+            if (!loop_init_40) {
+                uint _e330 = i_35;
+                i_35 = (_e330 + 1u);
             }
-            loop_init_38 = false;
-            uint _e307 = i_33;
+            loop_init_40 = false;
+            uint _e307 = i_35;
             if ((_e307 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e310 = i_33;
+                uint _e310 = i_35;
                 vec2 b_25 = y_14[((_e310 + 1u) % 4u)];
-                uint _e316 = i_33;
-                uint _e318 = i_33;
-                uint _e323 = i_33;
+                uint _e316 = i_35;
+                uint _e318 = i_35;
+                uint _e323 = i_35;
                 area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
             }
         }
@@ -6989,45 +7146,45 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         float _e338 = area.z;
         float _e341 = area.w;
         float turn = (((_e333 + _e335) + _e338) + _e341);
-        bool loop_init_39 = true;
+        bool loop_init_41 = true;
         while(true) {
-            if (!loop_init_39) {
-                uint _e398 = i_34;
-                i_34 = (_e398 + 1u);
+            if (!loop_init_41) {
+                uint _e398 = i_36;
+                i_36 = (_e398 + 1u);
             }
-            loop_init_39 = false;
-            uint _e345 = i_34;
+            loop_init_41 = false;
+            uint _e345 = i_36;
             if ((_e345 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e348 = i_34;
+                uint _e348 = i_36;
                 float _e350 = area[_e348];
                 if (!(((_e350 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e355 = i_34;
+                uint _e355 = i_36;
                 ya = y_14[_e355];
-                uint _e358 = i_34;
+                uint _e358 = i_36;
                 yb = y_14[((_e358 + 1u) % 4u)];
                 if ((turn < 0.0)) {
-                    uint _e367 = i_34;
+                    uint _e367 = i_36;
                     ya = y_14[((_e367 + 1u) % 4u)];
-                    uint _e373 = i_34;
+                    uint _e373 = i_36;
                     yb = y_14[_e373];
                 }
                 vec2 _e375 = ya;
                 vec2 _e376 = yb;
                 AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, (lobe_3.l * lobe_3.scale));
                 j_8 = 0u;
-                bool loop_init_40 = true;
+                bool loop_init_42 = true;
                 while(true) {
-                    if (!loop_init_40) {
+                    if (!loop_init_42) {
                         uint _e395 = j_8;
                         j_8 = (_e395 + 1u);
                     }
-                    loop_init_40 = false;
+                    loop_init_42 = false;
                     uint _e383 = j_8;
                     if ((_e383 < 12u)) {
                     } else {
@@ -7037,7 +7194,7 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                         uint _e386 = j_8;
                         vec4 _e387 = airlight_edge_node(_e380, _e386);
                         float _e388 = sum_9;
-                        float _e391 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e387.xy);
+                        float _e391 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e387.xy);
                         sum_9 = (_e388 + (_e387.w * _e391));
                     }
                 }
@@ -7046,47 +7203,47 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
         float _e400 = sum_9;
         return _e400;
     }
-    float _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    float _e413 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    float _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5 * (o_6.corners[0] + o_6.corners[2])) - q_14));
+    float _e413 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[0] - q_14));
     float _e415 = airlight_wrap_turn((_e413 - _e409));
-    float _e419 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    float _e419 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[1] - q_14));
     float _e421 = airlight_wrap_turn((_e419 - _e409));
-    float _e425 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    float _e425 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[2] - q_14));
     float _e427 = airlight_wrap_turn((_e425 - _e409));
-    float _e431 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    float _e431 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[3] - q_14));
     float _e433 = airlight_wrap_turn((_e431 - _e409));
     vec4 _e435 = airlight_sort4_(vec4(_e415, _e421, _e427, _e433));
-    bool loop_init_41 = true;
+    bool loop_init_43 = true;
     while(true) {
-        if (!loop_init_41) {
-            uint _e639 = i_35;
-            i_35 = (_e639 + 1u);
+        if (!loop_init_43) {
+            uint _e639 = i_37;
+            i_37 = (_e639 + 1u);
         }
-        loop_init_41 = false;
-        uint _e438 = i_35;
+        loop_init_43 = false;
+        uint _e438 = i_37;
         if ((_e438 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e441 = i_35;
+            uint _e441 = i_37;
             float first_2 = (_e409 + _e435[_e441]);
-            uint _e444 = i_35;
+            uint _e444 = i_37;
             float last_1 = (_e409 + _e435[(_e444 + 1u)]);
             vec2 _e452 = airlight_cos_sin_turns((0.5 * (first_2 + last_1)));
             AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
             vec2 n_9 = _e453.entry;
             if (all(equal(n_9, vec2(0.0)))) {
-                float c_19 = ((first_2 + last_1) * 0.5);
+                float c_22 = ((first_2 + last_1) * 0.5);
                 float hw_5 = ((last_1 - first_2) * 0.5);
                 j_9 = 0u;
-                bool loop_init_42 = true;
+                bool loop_init_44 = true;
                 while(true) {
-                    if (!loop_init_42) {
+                    if (!loop_init_44) {
                         uint _e483 = j_9;
                         j_9 = (_e483 + 1u);
                     }
-                    loop_init_42 = false;
+                    loop_init_44 = false;
                     uint _e467 = j_9;
                     if ((_e467 < 12u)) {
                     } else {
@@ -7096,8 +7253,8 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                         uint _e470 = j_9;
                         vec2 _e471 = airlight_triangle_rule(_e470);
                         float _e472 = sum_9;
-                        vec2 _e478 = airlight_cos_sin_turns((c_19 + (hw_5 * _e471.x)));
-                        float _e479 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e478);
+                        vec2 _e478 = airlight_cos_sin_turns((c_22 + (hw_5 * _e471.x)));
+                        float _e479 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e478);
                         sum_9 = (_e472 + ((_e471.y * hw_5) * _e479));
                     }
                 }
@@ -7107,41 +7264,41 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             merc_last = last_1;
             float exit_h = _e453.exit_h;
             if ((exit_h > 0.0)) {
-                local_183 = (exit_h < (lobe_3.l * lobe_3.scale));
+                local_187 = (exit_h < (lobe_3.l * lobe_3.scale));
             } else {
-                local_183 = false;
+                local_187 = false;
             }
-            bool _e497 = local_183;
+            bool _e497 = local_187;
             if (_e497) {
                 float half_20 = (0.5 * (first_2 + last_1));
-                a_24 = first_2;
+                a_25 = first_2;
                 b_15 = half_20;
                 vec2 _e503 = airlight_cos_sin_turns(first_2);
                 vec2 _e506 = airlight_cos_sin_turns(last_1);
                 if ((dot(_e503, _e453.exit) < dot(_e506, _e453.exit))) {
                     merc_first = half_20;
                 } else {
-                    a_24 = half_20;
+                    a_25 = half_20;
                     b_15 = last_1;
                     merc_last = half_20;
                 }
                 vec2 t2_ = vec2(-(_e453.exit.y), _e453.exit.x);
-                float reach_3 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
-                float _e526 = a_24;
+                float reach_4 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
+                float _e526 = a_25;
                 vec2 _e527 = airlight_cos_sin_turns(_e526);
                 float _e528 = b_15;
                 vec2 _e529 = airlight_cos_sin_turns(_e528);
-                float _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0.0) * reach_3));
-                float _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0.0) * reach_3));
-                AirlightEdgeRule rule_6 = AirlightEdgeRule(exit_h, t2_, reach_3, _e537, _e545);
+                float _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0.0) * reach_4));
+                float _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0.0) * reach_4));
+                AirlightEdgeRule rule_6 = AirlightEdgeRule(exit_h, t2_, reach_4, _e537, _e545);
                 j_10 = 0u;
-                bool loop_init_43 = true;
+                bool loop_init_45 = true;
                 while(true) {
-                    if (!loop_init_43) {
+                    if (!loop_init_45) {
                         uint _e561 = j_10;
                         j_10 = (_e561 + 1u);
                     }
-                    loop_init_43 = false;
+                    loop_init_45 = false;
                     uint _e549 = j_10;
                     if ((_e549 < 12u)) {
                     } else {
@@ -7151,7 +7308,7 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                         uint _e552 = j_10;
                         vec4 _e553 = airlight_edge_node(rule_6, _e552);
                         float _e554 = sum_9;
-                        float _e557 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e553.xy);
+                        float _e557 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e553.xy);
                         sum_9 = (_e554 + (_e553.w * _e557));
                     }
                 }
@@ -7164,13 +7321,13 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
             vec2 _e571 = airlight_cos_sin_turns(_e570);
             float _e572 = airlight_mercator(n_9, _e571);
             k_9 = 0u;
-            bool loop_init_44 = true;
+            bool loop_init_46 = true;
             while(true) {
-                if (!loop_init_44) {
+                if (!loop_init_46) {
                     uint _e636 = k_9;
                     k_9 = (_e636 + 1u);
                 }
-                loop_init_44 = false;
+                loop_init_46 = false;
                 uint _e575 = k_9;
                 if ((_e575 < 7u)) {
                 } else {
@@ -7186,16 +7343,16 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                     if (!((lo_8 < hi_9))) {
                         continue;
                     }
-                    float c_20 = ((lo_8 + hi_9) * 0.5);
+                    float c_23 = ((lo_8 + hi_9) * 0.5);
                     float hw_6 = ((hi_9 - lo_8) * 0.5);
                     j_11 = 0u;
-                    bool loop_init_45 = true;
+                    bool loop_init_47 = true;
                     while(true) {
-                        if (!loop_init_45) {
+                        if (!loop_init_47) {
                             uint _e633 = j_11;
                             j_11 = (_e633 + 1u);
                         }
-                        loop_init_45 = false;
+                        loop_init_47 = false;
                         uint _e596 = j_11;
                         if ((_e596 < 12u)) {
                         } else {
@@ -7204,12 +7361,12 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
                         {
                             uint _e599 = j_11;
                             vec2 _e600 = airlight_triangle_rule(_e599);
-                            float x_37 = (c_20 + (hw_6 * _e600.x));
-                            float e_17 = exp(-(abs(x_37)));
-                            float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
-                            float th = ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)));
+                            float x_38 = (c_23 + (hw_6 * _e600.x));
+                            float e_18 = exp(-(abs(x_38)));
+                            float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
+                            float th = ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)));
                             float _e622 = sum_9;
-                            float _e629 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
+                            float _e629 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
                             sum_9 = (_e622 + (((_e600.y * hw_6) * sech) * _e629));
                         }
                     }
@@ -7221,44 +7378,44 @@ float airlight_flat_about_lobe(AirlightScene s_40, float z_14, AirlightOutline o
     return _e641;
 }
 
-float airlight_disc(AirlightScene s_41, AirlightArea a_25, vec3 x_25) {
-    bool local_184 = false;
-    bool local_185 = false;
+float airlight_disc(AirlightScene s_42, AirlightArea a_26, vec3 x_26) {
+    bool local_188 = false;
+    bool local_189 = false;
     vec2 u_6 = vec2(0.0);
     AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
     float sum_10 = 0.0;
-    uint i_36 = 0u;
+    uint i_38 = 0u;
     vec2 e_9 = vec2(0.0);
     float r_max_1 = 0.0;
-    vec3 rel = (x_25 - a_25.c);
-    float z_20 = dot(rel, a_25.n);
+    vec3 rel_1 = (x_26 - a_26.c);
+    float z_20 = dot(rel_1, a_26.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
     }
-    float fx = dot(rel, a_25.a1_);
-    float fy_1 = dot(rel, a_25.a2_);
+    float fx = dot(rel_1, a_26.a1_);
+    float fy_1 = dot(rel_1, a_26.a2_);
     float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    float radius_2 = a_25.radius;
-    vec2 zero_1 = vec2(0.0);
-    AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_25, z_20, outline, vec2(-(fx), -(fy_1)), radius_2);
+    float radius_2 = a_26.radius;
+    vec2 zero_2 = vec2(0.0);
+    AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        float _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_42, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_185 = _e44;
+            bool _e44 = airlight_far_from_edge(s_42, (radius_2 - rf), z_20);
+            local_189 = _e44;
         } else {
-            local_185 = true;
+            local_189 = true;
         }
-        bool _e46 = local_185;
-        local_184 = _e46;
+        bool _e46 = local_189;
+        local_188 = _e46;
     } else {
-        local_184 = false;
+        local_188 = false;
     }
-    bool inside_2 = local_184;
+    bool inside_2 = local_188;
     AirlightAbove _e54 = airlight_above(z_20, vec2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
@@ -7268,20 +7425,20 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_25, vec3 x_25) {
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
-    bool loop_init_46 = true;
+    bool loop_init_48 = true;
     while(true) {
-        if (!loop_init_46) {
-            uint _e127 = i_36;
-            i_36 = (_e127 + 1u);
+        if (!loop_init_48) {
+            uint _e127 = i_38;
+            i_38 = (_e127 + 1u);
         }
-        loop_init_46 = false;
-        uint _e73 = i_36;
+        loop_init_48 = false;
+        uint _e73 = i_38;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_36;
+            uint _e76 = i_38;
             vec3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
@@ -7299,7 +7456,7 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_25, vec3 x_25) {
             AirlightAbove _e120 = above_3;
             vec2 _e121 = e_9;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_41, a_25, _e120, _e121, _e122);
+            float _e123 = airlight_flat_radial(s_42, a_26, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -7307,62 +7464,62 @@ float airlight_disc(AirlightScene s_41, AirlightArea a_25, vec3 x_25) {
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_42, AirlightArea a_26, vec3 x_26) {
+float airlight_parallelogram(AirlightScene s_43, AirlightArea a_27, vec3 x_27) {
     vec2 q_8 = vec2(0.0);
-    bool local_186 = false;
+    bool local_190 = false;
     float sum_11 = 0.0;
-    uint i_37 = 0u;
+    uint i_39 = 0u;
     uint j_12 = 0u;
-    vec3 rel_1 = (x_26 - a_26.c);
-    float z_21 = dot(rel_1, a_26.n);
+    vec3 rel_2 = (x_27 - a_27.c);
+    float z_21 = dot(rel_2, a_27.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    vec2 foot = vec2(dot(rel_1, a_26.a1_), dot(rel_1, a_26.a2_));
-    vec2 u2_ = vec2(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
-    vec2 v2_ = vec2(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
-    vec2 corners[5] = vec2[5](vec2(0.0), u2_, (u2_ + v2_), v2_, vec2(0.0));
-    float det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
-    AirlightOutline about_foot = AirlightOutline(vec2[4]((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0.0);
-    float size_2 = (0.5 * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_26, z_21, about_foot, ((0.5 * corners[2]) - foot), size_2);
+    vec2 foot_1 = vec2(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
+    vec2 u2_1 = vec2(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
+    vec2 v2_1 = vec2(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
+    vec2 corners[5] = vec2[5](vec2(0.0), u2_1, (u2_1 + v2_1), v2_1, vec2(0.0));
+    float det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
+    AirlightOutline about_foot = AirlightOutline(vec2[4]((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0.0);
+    float size_2 = (0.5 * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
     if ((_e69.scale > 0.0)) {
-        float _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_43, z_21, about_foot, _e69);
         return _e73;
     }
     vec3 _e76 = airlight_outline_boundary(about_foot, vec2(0.0));
-    q_8 = (_e76.xy + foot);
+    q_8 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
-        bool _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_186 = _e89;
+        bool _e89 = airlight_far_from_edge(s_43, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_190 = _e89;
     } else {
-        local_186 = false;
+        local_190 = false;
     }
-    bool _e91 = local_186;
+    bool _e91 = local_190;
     if (_e91) {
-        q_8 = foot;
+        q_8 = foot_1;
     }
     vec2 _e92 = q_8;
-    AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot));
+    AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot_1));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    bool loop_init_47 = true;
+    float _e99 = airlight_narrowed(s_43, _e94.rho0_);
+    bool loop_init_49 = true;
     while(true) {
-        if (!loop_init_47) {
-            uint _e145 = i_37;
-            i_37 = (_e145 + 1u);
+        if (!loop_init_49) {
+            uint _e145 = i_39;
+            i_39 = (_e145 + 1u);
         }
-        loop_init_47 = false;
-        uint _e104 = i_37;
+        loop_init_49 = false;
+        uint _e104 = i_39;
         if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e107 = i_37;
+            uint _e107 = i_39;
             vec2 _e109 = q_8;
             vec2 ca = (corners[_e107] - _e109);
-            uint _e111 = i_37;
+            uint _e111 = i_39;
             vec2 _e115 = q_8;
             vec2 cb_1 = (corners[(_e111 + 1u)] - _e115);
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
@@ -7370,13 +7527,13 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_26, vec3 x_26) {
             }
             AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
             j_12 = 0u;
-            bool loop_init_48 = true;
+            bool loop_init_50 = true;
             while(true) {
-                if (!loop_init_48) {
+                if (!loop_init_50) {
                     uint _e142 = j_12;
                     j_12 = (_e142 + 1u);
                 }
-                loop_init_48 = false;
+                loop_init_50 = false;
                 uint _e129 = j_12;
                 if ((_e129 < 12u)) {
                 } else {
@@ -7386,7 +7543,7 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_26, vec3 x_26) {
                     uint _e132 = j_12;
                     vec4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
-                    float _e138 = airlight_flat_radial(s_42, a_26, _e94, _e133.xy, _e133.z);
+                    float _e138 = airlight_flat_radial(s_43, a_27, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
             }
@@ -7396,66 +7553,66 @@ float airlight_parallelogram(AirlightScene s_42, AirlightArea a_26, vec3 x_26) {
     return _e147;
 }
 
-vec3 airlight_cap_row(AirlightScene s_43, AirlightCap cap, float graded_4, float node_2, float weight_1) {
+vec3 airlight_cap_row(AirlightScene s_44, AirlightCap cap, float graded_4, float node_2, float weight_1) {
     vec2 _e5 = airlight_graded_node(graded_4, node_2);
     float w_10 = (weight_1 * _e5.y);
     vec2 _e9 = airlight_cos_sin_half_turn(_e5.x);
     float sb_2 = (cap.sin_a * _e9.y);
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0.0);
-    float _e28 = airlight_emitted(s_43, _e9.x);
-    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0.0)));
+    float _e28 = airlight_emitted(s_44, _e9.x);
+    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_44.sigma_t) * dist_1), 0.0)));
     return vec3(factor, cb_2, sb_2);
 }
 
-float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_27, AirlightCap cap_1) {
+float airlight_sphere_cap(AirlightScene s_45, AirlightArea a_28, AirlightCap cap_1) {
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     float sum_12 = 0.0;
-    uint i_38 = 0u;
+    uint i_40 = 0u;
     float at_2 = 0.0;
     vec3 _e4 = airlight_basis_e1_(cap_1.a);
     vec3 e2_2 = cross(cap_1.a, _e4);
-    float ad = dot(cap_1.a, a_27.d);
-    float e1d = dot(_e4, a_27.d);
-    float e2d = dot(e2_2, a_27.d);
-    vec2 _e15 = airlight_graded_range(s_44, 1.5707964);
+    float ad = dot(cap_1.a, a_28.d);
+    float e1d = dot(_e4, a_28.d);
+    float e2d = dot(e2_2, a_28.d);
+    vec2 _e15 = airlight_graded_range(s_45, 1.5707964);
     float graded_9 = _e15.y;
-    float c_21 = (0.5 * _e15.x);
+    float c_24 = (0.5 * _e15.x);
     float hw_7 = (0.5 * _e15.x);
-    vec3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    vec3 _e63 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[0] = _e63;
-    vec3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    vec3 _e70 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[1] = _e70;
-    vec3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    vec3 _e77 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[2] = _e77;
-    vec3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    vec3 _e84 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[3] = _e84;
-    vec3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    vec3 _e91 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[4] = _e91;
-    vec3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    vec3 _e98 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[5] = _e98;
-    vec3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    vec3 _e105 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[6] = _e105;
-    vec3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    vec3 _e112 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[7] = _e112;
-    vec3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    vec3 _e119 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[8] = _e119;
-    vec3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    vec3 _e126 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[9] = _e126;
-    vec3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    vec3 _e133 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[10] = _e133;
-    vec3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    vec3 _e140 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[11] = _e140;
-    vec3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.944575 * hw_7)), (0.062253524 * hw_7));
+    vec3 _e147 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[12] = _e147;
-    vec3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.944575 * hw_7)), (0.062253524 * hw_7));
+    vec3 _e154 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[13] = _e154;
-    vec3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    vec3 _e161 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[14] = _e161;
-    vec3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    vec3 _e168 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[15] = _e168;
-    if (a_27.isotropic) {
-        float _e174 = airlight_area_phase(s_44, 0.0);
+    if (a_28.isotropic) {
+        float _e174 = airlight_area_phase(s_45, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_12;
         float _e179 = rows[0].x;
@@ -7508,20 +7665,20 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_27, AirlightCap cap
         float _e272 = sum_12;
         return _e272;
     }
-    bool loop_init_49 = true;
+    bool loop_init_51 = true;
     while(true) {
-        if (!loop_init_49) {
-            uint _e550 = i_38;
-            i_38 = (_e550 + 1u);
+        if (!loop_init_51) {
+            uint _e550 = i_40;
+            i_40 = (_e550 + 1u);
         }
-        loop_init_49 = false;
-        uint _e275 = i_38;
+        loop_init_51 = false;
+        uint _e275 = i_40;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_38;
+            uint _e279 = i_40;
             vec3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -7529,97 +7686,97 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_27, AirlightCap cap
             float _e291 = rows[0].x;
             float _e294 = rows[0].y;
             float _e298 = rows[0].z;
-            float _e301 = airlight_area_phase(s_44, ((_e294 * ad) + (_e298 * across_1)));
+            float _e301 = airlight_area_phase(s_45, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             float _e304 = at_2;
             float _e307 = rows[1].x;
             float _e310 = rows[1].y;
             float _e314 = rows[1].z;
-            float _e317 = airlight_area_phase(s_44, ((_e310 * ad) + (_e314 * across_1)));
+            float _e317 = airlight_area_phase(s_45, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             float _e320 = at_2;
             float _e323 = rows[2].x;
             float _e326 = rows[2].y;
             float _e330 = rows[2].z;
-            float _e333 = airlight_area_phase(s_44, ((_e326 * ad) + (_e330 * across_1)));
+            float _e333 = airlight_area_phase(s_45, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[3].x;
             float _e342 = rows[3].y;
             float _e346 = rows[3].z;
-            float _e349 = airlight_area_phase(s_44, ((_e342 * ad) + (_e346 * across_1)));
+            float _e349 = airlight_area_phase(s_45, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[4].x;
             float _e358 = rows[4].y;
             float _e362 = rows[4].z;
-            float _e365 = airlight_area_phase(s_44, ((_e358 * ad) + (_e362 * across_1)));
+            float _e365 = airlight_area_phase(s_45, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[5].x;
             float _e374 = rows[5].y;
             float _e378 = rows[5].z;
-            float _e381 = airlight_area_phase(s_44, ((_e374 * ad) + (_e378 * across_1)));
+            float _e381 = airlight_area_phase(s_45, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[6].x;
             float _e390 = rows[6].y;
             float _e394 = rows[6].z;
-            float _e397 = airlight_area_phase(s_44, ((_e390 * ad) + (_e394 * across_1)));
+            float _e397 = airlight_area_phase(s_45, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[7].x;
             float _e406 = rows[7].y;
             float _e410 = rows[7].z;
-            float _e413 = airlight_area_phase(s_44, ((_e406 * ad) + (_e410 * across_1)));
+            float _e413 = airlight_area_phase(s_45, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[8].x;
             float _e422 = rows[8].y;
             float _e426 = rows[8].z;
-            float _e429 = airlight_area_phase(s_44, ((_e422 * ad) + (_e426 * across_1)));
+            float _e429 = airlight_area_phase(s_45, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[9].x;
             float _e438 = rows[9].y;
             float _e442 = rows[9].z;
-            float _e445 = airlight_area_phase(s_44, ((_e438 * ad) + (_e442 * across_1)));
+            float _e445 = airlight_area_phase(s_45, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[10].x;
             float _e454 = rows[10].y;
             float _e458 = rows[10].z;
-            float _e461 = airlight_area_phase(s_44, ((_e454 * ad) + (_e458 * across_1)));
+            float _e461 = airlight_area_phase(s_45, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[11].x;
             float _e470 = rows[11].y;
             float _e474 = rows[11].z;
-            float _e477 = airlight_area_phase(s_44, ((_e470 * ad) + (_e474 * across_1)));
+            float _e477 = airlight_area_phase(s_45, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[12].x;
             float _e486 = rows[12].y;
             float _e490 = rows[12].z;
-            float _e493 = airlight_area_phase(s_44, ((_e486 * ad) + (_e490 * across_1)));
+            float _e493 = airlight_area_phase(s_45, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[13].x;
             float _e502 = rows[13].y;
             float _e506 = rows[13].z;
-            float _e509 = airlight_area_phase(s_44, ((_e502 * ad) + (_e506 * across_1)));
+            float _e509 = airlight_area_phase(s_45, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[14].x;
             float _e518 = rows[14].y;
             float _e522 = rows[14].z;
-            float _e525 = airlight_area_phase(s_44, ((_e518 * ad) + (_e522 * across_1)));
+            float _e525 = airlight_area_phase(s_45, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[15].x;
             float _e534 = rows[15].y;
             float _e538 = rows[15].z;
-            float _e541 = airlight_area_phase(s_44, ((_e534 * ad) + (_e538 * across_1)));
+            float _e541 = airlight_area_phase(s_45, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = sum_12;
             float _e546 = at_2;
@@ -7630,28 +7787,28 @@ float airlight_sphere_cap(AirlightScene s_44, AirlightArea a_27, AirlightCap cap
     return _e552;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_45, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_4, float graded_5, float g_28) {
+float airlight_sphere_lobe_node(AirlightScene s_46, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_4, float graded_5, float g_28) {
     vec3 _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
     float toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
     float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
-    float _e37 = airlight_emitted(s_45, (root_5 / cap_2.radius));
-    float _e47 = airlight_area_phase(s_45, (sign_1 * _e8.x));
-    return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
+    float _e37 = airlight_emitted(s_46, (root_5 / cap_2.radius));
+    float _e47 = airlight_area_phase(s_46, (sign_1 * _e8.x));
+    return ((((_e37 * exp(min((-(s_46.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_28, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_2) {
+float airlight_sphere_about_lobe(AirlightScene s_47, AirlightArea a_29, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_3) {
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_39 = 0u;
+    uint i_41 = 0u;
     float big_b_1 = 0.0;
     float wpsi = 0.0;
     float start_5 = 0.0;
     float around = 0.0;
-    vec3 p_7 = (sign_2 * a_28.d);
-    vec3 _e8 = airlight_basis_e1_(p_7);
-    vec3 v_10 = cross(p_7, _e8);
+    vec3 p_8 = (sign_2 * a_29.d);
+    vec3 _e8 = airlight_basis_e1_(p_8);
+    vec3 v_10 = cross(p_8, _e8);
     float au = dot(cap_3.a, _e8);
     float av = dot(cap_3.a, v_10);
     bool inside_3 = (cos_p_1 > cap_3.cos_a);
@@ -7661,20 +7818,20 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_28, Airlight
         float _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0.0)) / sin_p), 1.0));
         half_15 = _e42;
     }
-    bool loop_init_50 = true;
+    bool loop_init_52 = true;
     while(true) {
-        if (!loop_init_50) {
-            uint _e290 = i_39;
-            i_39 = (_e290 + 1u);
+        if (!loop_init_52) {
+            uint _e290 = i_41;
+            i_41 = (_e290 + 1u);
         }
-        loop_init_50 = false;
-        uint _e47 = i_39;
+        loop_init_52 = false;
+        uint _e47 = i_41;
         if ((_e47 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e50 = i_39;
+            uint _e50 = i_41;
             vec3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -7697,90 +7854,90 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_28, Airlight
                 start_5 = max((_e78 - _e89), 0.0);
             }
             float _e96 = start_5;
-            vec2 _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
+            vec2 _e98 = airlight_graded_from(scale_3, _e96, (_e78 + _e89));
             float graded_10 = _e98.x;
-            float c_22 = (0.5 * _e98.y);
+            float c_25 = (0.5 * _e98.y);
             float hw_8 = (0.5 * _e98.y);
             around = 0.0;
             float _e108 = around;
             float _e111 = big_b_1;
             float _e112 = start_5;
-            float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_22 - (0.09501251 * hw_8)));
+            float _e116 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_25 - (0.09501251 * hw_8)));
             around = (_e108 + ((0.1894506 * hw_8) * _e116));
             float _e119 = around;
             float _e122 = big_b_1;
             float _e123 = start_5;
-            float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_22 + (0.09501251 * hw_8)));
+            float _e127 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_25 + (0.09501251 * hw_8)));
             around = (_e119 + ((0.1894506 * hw_8) * _e127));
             float _e130 = around;
             float _e133 = big_b_1;
             float _e134 = start_5;
-            float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_22 - (0.28160354 * hw_8)));
+            float _e138 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_25 - (0.28160354 * hw_8)));
             around = (_e130 + ((0.18260342 * hw_8) * _e138));
             float _e141 = around;
             float _e144 = big_b_1;
             float _e145 = start_5;
-            float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_22 + (0.28160354 * hw_8)));
+            float _e149 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_25 + (0.28160354 * hw_8)));
             around = (_e141 + ((0.18260342 * hw_8) * _e149));
             float _e152 = around;
             float _e155 = big_b_1;
             float _e156 = start_5;
-            float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_22 - (0.45801678 * hw_8)));
+            float _e160 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_25 - (0.45801678 * hw_8)));
             around = (_e152 + ((0.16915652 * hw_8) * _e160));
             float _e163 = around;
             float _e166 = big_b_1;
             float _e167 = start_5;
-            float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_22 + (0.45801678 * hw_8)));
+            float _e171 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_25 + (0.45801678 * hw_8)));
             around = (_e163 + ((0.16915652 * hw_8) * _e171));
             float _e174 = around;
             float _e177 = big_b_1;
             float _e178 = start_5;
-            float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_22 - (0.61787623 * hw_8)));
+            float _e182 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_25 - (0.61787623 * hw_8)));
             around = (_e174 + ((0.14959599 * hw_8) * _e182));
             float _e185 = around;
             float _e188 = big_b_1;
             float _e189 = start_5;
-            float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_22 + (0.61787623 * hw_8)));
+            float _e193 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_25 + (0.61787623 * hw_8)));
             around = (_e185 + ((0.14959599 * hw_8) * _e193));
             float _e196 = around;
             float _e199 = big_b_1;
             float _e200 = start_5;
-            float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_22 - (0.7554044 * hw_8)));
+            float _e204 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_25 - (0.7554044 * hw_8)));
             around = (_e196 + ((0.12462897 * hw_8) * _e204));
             float _e207 = around;
             float _e210 = big_b_1;
             float _e211 = start_5;
-            float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_22 + (0.7554044 * hw_8)));
+            float _e215 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_25 + (0.7554044 * hw_8)));
             around = (_e207 + ((0.12462897 * hw_8) * _e215));
             float _e218 = around;
             float _e221 = big_b_1;
             float _e222 = start_5;
-            float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_22 - (0.8656312 * hw_8)));
+            float _e226 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_25 - (0.8656312 * hw_8)));
             around = (_e218 + ((0.09515851 * hw_8) * _e226));
             float _e229 = around;
             float _e232 = big_b_1;
             float _e233 = start_5;
-            float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_22 + (0.8656312 * hw_8)));
+            float _e237 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_25 + (0.8656312 * hw_8)));
             around = (_e229 + ((0.09515851 * hw_8) * _e237));
             float _e240 = around;
             float _e243 = big_b_1;
             float _e244 = start_5;
-            float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_22 - (0.944575 * hw_8)));
+            float _e248 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_25 - (0.944575 * hw_8)));
             around = (_e240 + ((0.062253524 * hw_8) * _e248));
             float _e251 = around;
             float _e254 = big_b_1;
             float _e255 = start_5;
-            float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_22 + (0.944575 * hw_8)));
+            float _e259 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_25 + (0.944575 * hw_8)));
             around = (_e251 + ((0.062253524 * hw_8) * _e259));
             float _e262 = around;
             float _e265 = big_b_1;
             float _e266 = start_5;
-            float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_22 - (0.9894009 * hw_8)));
+            float _e270 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_25 - (0.9894009 * hw_8)));
             around = (_e262 + ((0.02715246 * hw_8) * _e270));
             float _e273 = around;
             float _e276 = big_b_1;
             float _e277 = start_5;
-            float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_22 + (0.9894009 * hw_8)));
+            float _e281 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_25 + (0.9894009 * hw_8)));
             around = (_e273 + ((0.02715246 * hw_8) * _e281));
             float _e284 = sum_13;
             float _e285 = wpsi;
@@ -7792,31 +7949,31 @@ float airlight_sphere_about_lobe(AirlightScene s_46, AirlightArea a_28, Airlight
     return _e292;
 }
 
-float airlight_sphere(AirlightScene s_47, AirlightArea a_29, vec3 x_27) {
+float airlight_sphere(AirlightScene s_48, AirlightArea a_30, vec3 x_28) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_187 = false;
-    bool local_188 = false;
-    bool local_189 = false;
-    bool local_190 = false;
     bool local_191 = false;
-    vec3 v_11 = (a_29.c - x_27);
+    bool local_192 = false;
+    bool local_193 = false;
+    bool local_194 = false;
+    bool local_195 = false;
+    vec3 v_11 = (a_30.c - x_28);
     float _e5 = airlight_safe_length(v_11);
-    if (!((_e5 > a_29.radius))) {
+    if (!((_e5 > a_30.radius))) {
         return 0.0;
     }
-    float sin_a_2 = (a_29.radius / _e5);
-    AirlightCap cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_29.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    float sin_a_2 = (a_30.radius / _e5);
+    AirlightCap cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    bool loop_init_51 = true;
+    bool loop_init_53 = true;
     while(true) {
-        if (!loop_init_51) {
+        if (!loop_init_53) {
             uint _e92 = j_13;
             j_13 = (_e92 + 1u);
         }
-        loop_init_51 = false;
+        loop_init_53 = false;
         uint _e32 = j_13;
         if ((_e32 < 2u)) {
         } else {
@@ -7824,44 +7981,44 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_29, vec3 x_27) {
         }
         {
             uint _e39 = j_13;
-            vec2 lobe_5 = ((_e39 == 1u) ? a_29.lobes.zw : a_29.lobes.xy);
-            float c_23 = dot(cap_4.a, (lobe_5.x * a_29.d));
+            vec2 lobe_5 = ((_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy);
+            float c_26 = dot(cap_4.a, (lobe_5.x * a_30.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_187 = (lobe_5.y > 0.0);
+                local_191 = (lobe_5.y > 0.0);
             } else {
-                local_187 = false;
+                local_191 = false;
             }
-            bool _e57 = local_187;
+            bool _e57 = local_191;
             if (_e57) {
-                local_188 = (lobe_5.y < (_e23 + _e23));
+                local_192 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_188 = false;
+                local_192 = false;
             }
-            bool _e64 = local_188;
+            bool _e64 = local_192;
             if (_e64) {
-                if (!((c_23 > cap_4.cos_a))) {
-                    if ((c_23 > -(cap_4.cos_a))) {
-                        float _e77 = airlight_acos(c_23);
-                        local_191 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                if (!((c_26 > cap_4.cos_a))) {
+                    if ((c_26 > -(cap_4.cos_a))) {
+                        float _e77 = airlight_acos(c_26);
+                        local_195 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_191 = false;
+                        local_195 = false;
                     }
-                    bool _e84 = local_191;
-                    local_190 = _e84;
+                    bool _e84 = local_195;
+                    local_194 = _e84;
                 } else {
-                    local_190 = true;
+                    local_194 = true;
                 }
-                bool _e86 = local_190;
-                local_189 = _e86;
+                bool _e86 = local_194;
+                local_193 = _e86;
             } else {
-                local_189 = false;
+                local_193 = false;
             }
-            bool _e88 = local_189;
+            bool _e88 = local_193;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_23;
+                cos_p_2 = c_26;
             }
         }
     }
@@ -7870,47 +8027,47 @@ float airlight_sphere(AirlightScene s_47, AirlightArea a_29, vec3 x_27) {
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_47, a_29, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_48, a_30, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_47, a_29, cap_4);
+    float _e101 = airlight_sphere_cap(s_48, a_30, cap_4);
     return _e101;
 }
 
-float airlight_emitter_radiance(AirlightScene s_48, AirlightArea a_30, vec3 x_28) {
-    switch(s_48.light_shape) {
+float airlight_emitter_radiance(AirlightScene s_49, AirlightArea a_31, vec3 x_29) {
+    switch(s_49.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_48, a_30, x_28);
+            float _e4 = airlight_disc(s_49, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_48, a_30, x_28);
+            float _e5 = airlight_parallelogram(s_49, a_31, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_48, a_30, x_28);
+            float _e6 = airlight_sphere(s_49, a_31, x_29);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_49, AirlightArea a_31, float theta) {
+float airlight_area_node(AirlightScene s_50, AirlightArea a_32, float theta) {
     vec2 _e3 = airlight_cos_sin(theta);
-    float along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
-    float t_15 = (a_31.x_h + along_1);
-    float fade = exp(min((-(s_49.sigma_t) * max(((a_31.x_h - s_49.t_min) + along_1), 0.0)), 0.0));
-    float _e33 = airlight_emitter_radiance(s_49, a_31, (s_49.origin + (t_15 * a_31.d)));
-    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    float along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
+    float t_15 = (a_32.x_h + along_1);
+    float fade = exp(min((-(s_50.sigma_t) * max(((a_32.x_h - s_50.t_min) + along_1), 0.0)), 0.0));
+    float _e33 = airlight_emitter_radiance(s_50, a_32, (s_50.origin + (t_15 * a_32.d)));
+    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_50) {
+AirlightResult airlight_area_light(AirlightScene s_51) {
     AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
     float k_10 = 0.0;
     float gauss_1 = 0.0;
     uint j_14 = 0u;
-    bool local_192 = false;
-    AirlightArea _e1 = airlight_area(s_50);
+    bool local_196 = false;
+    AirlightArea _e1 = airlight_area(s_51);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -7919,13 +8076,13 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    bool loop_init_52 = true;
+    bool loop_init_54 = true;
     while(true) {
-        if (!loop_init_52) {
+        if (!loop_init_54) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_52 = false;
+        loop_init_54 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -7934,20 +8091,20 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_24 = (0.5 * (_e27 + _e29));
+            float c_27 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
             float hw_9 = (0.5 * (_e34 - _e36));
             k_10 = 0.0;
             gauss_1 = 0.0;
             j_14 = 0u;
-            bool loop_init_53 = true;
+            bool loop_init_55 = true;
             while(true) {
-                if (!loop_init_53) {
+                if (!loop_init_55) {
                     uint _e82 = j_14;
                     j_14 = (_e82 + 1u);
                 }
-                loop_init_53 = false;
+                loop_init_55 = false;
                 uint _e46 = j_14;
                 if ((_e46 < 15u)) {
                 } else {
@@ -7959,13 +8116,13 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
                     uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_14;
-                        local_192 = (_e66 < 14u);
+                        local_196 = (_e66 < 14u);
                     } else {
-                        local_192 = false;
+                        local_196 = false;
                     }
-                    bool _e70 = local_192;
-                    float x_38 = (_e70 ? (c_24 - (hw_9 * node_4.x)) : (c_24 + (hw_9 * node_4.x)));
-                    float _e72 = airlight_area_node(s_50, _e1, x_38);
+                    bool _e70 = local_196;
+                    float x_39 = (_e70 ? (c_27 - (hw_9 * node_4.x)) : (c_27 + (hw_9 * node_4.x)));
+                    float _e72 = airlight_area_node(s_51, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
@@ -7991,88 +8148,15 @@ AirlightResult airlight_area_light(AirlightScene s_50) {
     if (!(_e105)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    return AirlightResult((s_50.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_51.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_51) {
-    bool local_193 = false;
-    bool local_194 = false;
-    bool _e1 = airlight_valid(s_51);
-    if (!(!(_e1))) {
-        local_193 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_193 = true;
-    }
-    bool _e10 = local_193;
-    if (!(_e10)) {
-        local_194 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_194 = true;
-    }
-    bool _e18 = local_194;
-    if (_e18) {
-        return AirlightResult(0.0, 1u);
-    }
-    AirlightResult _e22 = airlight_area_light(s_51);
-    return _e22;
-}
-
-AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_195 = false;
-    bool _e2 = airlight_is_finite(r_5.in_scatter);
-    if (!(!(_e2))) {
-        local_195 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
-    } else {
-        local_195 = true;
-    }
-    bool _e11 = local_195;
-    if (_e11) {
-        return AirlightResult(3.4028235e38, 2u);
-    }
-    return r_5;
-}
-
-AirlightResult airlight_node_integral(AirlightNode n_4) {
-    AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_196 = false;
-    AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
-    AirlightScene p_8 = n_4.scene;
-    bool _e7 = airlight_vec_finite(p_8.light_position);
-    if (_e7) {
-        bool _e11 = airlight_vec_finite(p_8.dir);
-        local_196 = _e11;
-    } else {
-        local_196 = false;
-    }
-    bool _e13 = local_196;
-    if (_e13) {
-        g_29 = n_4.canonical;
-        if (!(n_4.exact)) {
-            AirlightCanonical _e18 = airlight_canonical(p_8);
-            AirlightCanonical _e19 = airlight_refined(p_8, _e18);
-            g_29 = _e19;
-        }
-        AirlightCanonical _e20 = g_29;
-        AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
-        r_6 = _e21;
-    }
-    AirlightResult _e22 = r_6;
-    AirlightResult _e23 = airlight_overflowed(_e22);
-    return _e23;
-}
-
-AirlightResult airlight_point_integral(AirlightScene p_1) {
-    AirlightCanonical _e1 = airlight_no_canonical();
-    AirlightResult _e5 = airlight_node_integral(AirlightNode(p_1, 1.0, _e1, false));
-    return _e5;
-}
-
-AirlightResult airlight_in_scatter_point(AirlightScene s_52) {
+AirlightResult airlight_in_scatter_area(AirlightScene s_52) {
     bool local_197 = false;
     bool local_198 = false;
     bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_197 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_197 = (s_52.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_197 = true;
     }
@@ -8086,39 +8170,112 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_52) {
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_point_integral(s_52);
+    AirlightResult _e22 = airlight_area_light(s_52);
     return _e22;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_53) {
+AirlightResult airlight_overflowed(AirlightResult r_5) {
     bool local_199 = false;
-    bool local_200 = false;
-    bool _e1 = airlight_valid(s_53);
-    if (!(!(_e1))) {
-        local_199 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    bool _e2 = airlight_is_finite(r_5.in_scatter);
+    if (!(!(_e2))) {
+        local_199 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
         local_199 = true;
     }
-    bool _e10 = local_199;
-    if (!(_e10)) {
-        local_200 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_200 = true;
+    bool _e11 = local_199;
+    if (_e11) {
+        return AirlightResult(3.4028235e38, 2u);
     }
-    bool _e18 = local_200;
+    return r_5;
+}
+
+AirlightResult airlight_node_integral(AirlightNode n_4) {
+    AirlightResult r_6 = AirlightResult(0.0, 0u);
+    bool local_200 = false;
+    AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
+    AirlightScene p_9 = n_4.scene;
+    bool _e7 = airlight_vec_finite(p_9.light_position);
+    if (_e7) {
+        bool _e11 = airlight_vec_finite(p_9.dir);
+        local_200 = _e11;
+    } else {
+        local_200 = false;
+    }
+    bool _e13 = local_200;
+    if (_e13) {
+        g_29 = n_4.canonical;
+        if (!(n_4.exact)) {
+            AirlightCanonical _e18 = airlight_canonical(p_9);
+            AirlightCanonical _e19 = airlight_refined(p_9, _e18);
+            g_29 = _e19;
+        }
+        AirlightCanonical _e20 = g_29;
+        AirlightResult _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        r_6 = _e21;
+    }
+    AirlightResult _e22 = r_6;
+    AirlightResult _e23 = airlight_overflowed(_e22);
+    return _e23;
+}
+
+AirlightResult airlight_point_integral(AirlightScene p_1) {
+    AirlightCanonical _e1 = airlight_no_canonical();
+    AirlightResult _e5 = airlight_node_integral(AirlightNode(p_1, 1.0, _e1, false));
+    return _e5;
+}
+
+AirlightResult airlight_in_scatter_point(AirlightScene s_53) {
+    bool local_201 = false;
+    bool local_202 = false;
+    bool _e1 = airlight_valid(s_53);
+    if (!(!(_e1))) {
+        local_201 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_201 = true;
+    }
+    bool _e10 = local_201;
+    if (!(_e10)) {
+        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_202 = true;
+    }
+    bool _e18 = local_202;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e22 = airlight_canonical(s_53);
-    AirlightCanonical _e23 = airlight_refined(s_53, _e22);
-    AirlightResult _e24 = airlight_limits(s_53, _e23);
+    AirlightResult _e22 = airlight_point_integral(s_53);
+    return _e22;
+}
+
+AirlightResult airlight_in_scatter_route(AirlightScene s_54) {
+    bool local_203 = false;
+    bool local_204 = false;
+    bool _e1 = airlight_valid(s_54);
+    if (!(!(_e1))) {
+        local_203 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_203 = true;
+    }
+    bool _e10 = local_203;
+    if (!(_e10)) {
+        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_204 = true;
+    }
+    bool _e18 = local_204;
+    if (_e18) {
+        return AirlightResult(0.0, 1u);
+    }
+    AirlightCanonical _e22 = airlight_canonical(s_54);
+    AirlightCanonical _e23 = airlight_refined(s_54, _e22);
+    AirlightResult _e24 = airlight_limits(s_54, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_53);
+    bool _e29 = airlight_isotropic_scene(s_54);
     if (!(_e29)) {
-        vec2 _e31 = airlight_angle_route(s_53, _e23);
+        vec2 _e31 = airlight_angle_route(s_54, _e23);
         if ((_e31.x > 0.5)) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8127,23 +8284,23 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_53) {
     return AirlightResult(0.0, 3u);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_54) {
+AirlightResult airlight_in_scatter(AirlightScene s_55) {
     AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
     float k_11 = 0.0;
     float gauss_2 = 0.0;
     uint j_15 = 0u;
-    bool local_201 = false;
+    bool local_205 = false;
     float f = 0.0;
-    bool local_202 = false;
-    bool _e1 = airlight_valid(s_54);
+    bool local_206 = false;
+    bool _e1 = airlight_valid(s_55);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    if ((s_54.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_55.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e12 = airlight_outer(s_54);
+    AirlightOuter _e12 = airlight_outer(s_55);
     if ((_e12.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -8154,13 +8311,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    bool loop_init_54 = true;
+    bool loop_init_56 = true;
     while(true) {
-        if (!loop_init_54) {
+        if (!loop_init_56) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_54 = false;
+        loop_init_56 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -8169,20 +8326,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_25 = (0.5 * (_e42 + _e44));
+            float c_28 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
             float hw_10 = (0.5 * (_e49 - _e51));
             k_11 = 0.0;
             gauss_2 = 0.0;
             j_15 = 0u;
-            bool loop_init_55 = true;
+            bool loop_init_57 = true;
             while(true) {
-                if (!loop_init_55) {
+                if (!loop_init_57) {
                     uint _e121 = j_15;
                     j_15 = (_e121 + 1u);
                 }
-                loop_init_55 = false;
+                loop_init_57 = false;
                 uint _e61 = j_15;
                 if ((_e61 < 7u)) {
                 } else {
@@ -8194,25 +8351,25 @@ AirlightResult airlight_in_scatter(AirlightScene s_54) {
                     uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_15;
-                        local_201 = (_e81 < 6u);
+                        local_205 = (_e81 < 6u);
                     } else {
-                        local_201 = false;
+                        local_205 = false;
                     }
-                    bool _e85 = local_201;
-                    float w_11 = (_e85 ? (c_25 - (hw_10 * node_5.x)) : (c_25 + (hw_10 * node_5.x)));
-                    AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
+                    bool _e85 = local_205;
+                    float w_11 = (_e85 ? (c_28 - (hw_10 * node_5.x)) : (c_28 + (hw_10 * node_5.x)));
+                    AirlightNode _e87 = airlight_outer_node(s_55, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
                             return _e93;
                         }
-                        if ((s_54.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_202 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_55.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_206 = (s_55.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_202 = false;
+                            local_206 = false;
                         }
-                        bool _e106 = local_202;
+                        bool _e106 = local_206;
                         if (_e106) {
                             return _e93;
                         }

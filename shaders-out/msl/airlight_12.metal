@@ -121,9 +121,6 @@ struct AirlightEdges {
     airlight_type_3 at;
     uint panels;
 };
-struct airlight_type_17 {
-    float inner[3];
-};
 struct AirlightSplit {
     bool split;
     char _pad1[3];
@@ -171,10 +168,10 @@ struct AirlightOuter {
     uint smooth_edges;
     char _pad21[4];
 };
-struct airlight_type_18 {
+struct airlight_type_17 {
     float inner[11];
 };
-struct airlight_type_19 {
+struct airlight_type_18 {
     float inner[6];
 };
 struct AirlightLobe {
@@ -186,8 +183,11 @@ struct AirlightLobe {
     float sin_delta;
     float exponent;
 };
-struct airlight_type_20 {
+struct airlight_type_19 {
     metal::float2 inner[5];
+};
+struct airlight_type_20 {
+    float inner[3];
 };
 struct AirlightNode {
     AirlightScene scene;
@@ -258,6 +258,7 @@ constant uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 constant float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 constant float AIRLIGHT_LOBE_REACH = 8.0;
 constant float AIRLIGHT_EDGE_REACH = 0.5;
+constant float AIRLIGHT_CROSSING_REACH = 16.0;
 
 airlight_type_2 airlight_zero_terms(
 ) {
@@ -5536,9 +5537,9 @@ AirlightListScan airlight_list_scan(
 AirlightEdges airlight_edges_between(
     float lo_3,
     float hi_3,
-    airlight_type_17 unsorted
+    airlight_type_14 unsorted
 ) {
-    airlight_type_17 cuts_1 = {};
+    airlight_type_14 cuts_1 = {};
     AirlightEdges e_1 = {};
     uint n_1 = 0u;
     uint i_18 = 0u;
@@ -5552,21 +5553,37 @@ AirlightEdges airlight_edges_between(
         cuts_1.inner[0] = _e13;
         cuts_1.inner[1] = c_10;
     }
-    float _e16 = cuts_1.inner[2];
-    float _e18 = cuts_1.inner[1];
+    float _e16 = cuts_1.inner[3];
+    float _e18 = cuts_1.inner[2];
     if (_e16 < _e18) {
-        float c_11 = cuts_1.inner[1];
-        float _e24 = cuts_1.inner[2];
-        cuts_1.inner[1] = _e24;
-        cuts_1.inner[2] = c_11;
+        float c_11 = cuts_1.inner[2];
+        float _e24 = cuts_1.inner[3];
+        cuts_1.inner[2] = _e24;
+        cuts_1.inner[3] = c_11;
     }
-    float _e27 = cuts_1.inner[1];
+    float _e27 = cuts_1.inner[2];
     float _e29 = cuts_1.inner[0];
     if (_e27 < _e29) {
         float c_12 = cuts_1.inner[0];
-        float _e35 = cuts_1.inner[1];
+        float _e35 = cuts_1.inner[2];
         cuts_1.inner[0] = _e35;
-        cuts_1.inner[1] = c_12;
+        cuts_1.inner[2] = c_12;
+    }
+    float _e38 = cuts_1.inner[3];
+    float _e40 = cuts_1.inner[1];
+    if (_e38 < _e40) {
+        float c_13 = cuts_1.inner[1];
+        float _e46 = cuts_1.inner[3];
+        cuts_1.inner[1] = _e46;
+        cuts_1.inner[3] = c_13;
+    }
+    float _e49 = cuts_1.inner[2];
+    float _e51 = cuts_1.inner[1];
+    if (_e49 < _e51) {
+        float c_14 = cuts_1.inner[1];
+        float _e57 = cuts_1.inner[2];
+        cuts_1.inner[1] = _e57;
+        cuts_1.inner[2] = c_14;
     }
     e_1 = AirlightEdges {airlight_type_3 {{lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3}}, 0u};
     uint2 loop_bound_22 = uint2(4294967295u);
@@ -5575,44 +5592,44 @@ AirlightEdges airlight_edges_between(
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e74 = i_18;
-            i_18 = _e74 + 1u;
+            uint _e96 = i_18;
+            i_18 = _e96 + 1u;
         }
         loop_init_22 = false;
-        uint _e45 = i_18;
-        if (_e45 < 3u) {
+        uint _e67 = i_18;
+        if (_e67 < 4u) {
         } else {
             break;
         }
         {
-            uint _e48 = i_18;
-            float _e50 = cuts_1.inner[metal::min(unsigned(_e48), 2u)];
-            uint _e52 = n_1;
-            float _e54 = e_1.at.inner[metal::min(unsigned(_e52), 12u)];
-            if (_e50 > _e54) {
-                uint _e58 = i_18;
-                float _e60 = cuts_1.inner[metal::min(unsigned(_e58), 2u)];
-                local_130 = _e60 < hi_3;
+            uint _e70 = i_18;
+            float _e72 = cuts_1.inner[metal::min(unsigned(_e70), 3u)];
+            uint _e74 = n_1;
+            float _e76 = e_1.at.inner[metal::min(unsigned(_e74), 12u)];
+            if (_e72 > _e76) {
+                uint _e80 = i_18;
+                float _e82 = cuts_1.inner[metal::min(unsigned(_e80), 3u)];
+                local_130 = _e82 < hi_3;
             } else {
                 local_130 = false;
             }
-            bool _e63 = local_130;
-            if (_e63) {
-                uint _e64 = n_1;
-                n_1 = _e64 + 1u;
-                uint _e68 = n_1;
-                uint _e70 = i_18;
-                float _e72 = cuts_1.inner[metal::min(unsigned(_e70), 2u)];
-                e_1.at.inner[metal::min(unsigned(_e68), 12u)] = _e72;
+            bool _e85 = local_130;
+            if (_e85) {
+                uint _e86 = n_1;
+                n_1 = _e86 + 1u;
+                uint _e90 = n_1;
+                uint _e92 = i_18;
+                float _e94 = cuts_1.inner[metal::min(unsigned(_e92), 3u)];
+                e_1.at.inner[metal::min(unsigned(_e90), 12u)] = _e94;
             }
         }
     }
-    uint _e77 = n_1;
-    e_1.at.inner[metal::min(unsigned(_e77 + 1u), 12u)] = hi_3;
-    uint _e82 = n_1;
-    e_1.panels = _e82 + 1u;
-    AirlightEdges _e85 = e_1;
-    return _e85;
+    uint _e99 = n_1;
+    e_1.at.inner[metal::min(unsigned(_e99 + 1u), 12u)] = hi_3;
+    uint _e104 = n_1;
+    e_1.panels = _e104 + 1u;
+    AirlightEdges _e107 = e_1;
+    return _e107;
 }
 
 AirlightSplit airlight_split_worst(
@@ -5821,7 +5838,7 @@ AirlightOuter airlight_surface(
     AirlightOuter g_20 = {};
     bool local_134 = {};
     metal::float3 u_1 = {};
-    airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     uint i_19 = 1u;
     uint j_4 = {};
     bool local_135 = {};
@@ -5938,7 +5955,7 @@ AirlightOuter airlight_surface(
     float _e216 = cuts_2.inner[3];
     float _e218 = cuts_2.inner[9];
     float _e220 = cuts_2.inner[10];
-    airlight_type_19 kinks = airlight_type_19 {{_e210, _e212, _e214, _e216, _e218, _e220}};
+    airlight_type_18 kinks = airlight_type_18 {{_e210, _e212, _e214, _e216, _e218, _e220}};
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
@@ -5956,7 +5973,7 @@ AirlightOuter airlight_surface(
         }
         {
             uint _e227 = i_19;
-            float c_13 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
+            float c_15 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
             uint _e230 = i_19;
             j_4 = _e230;
             uint2 loop_bound_25 = uint2(4294967295u);
@@ -5967,7 +5984,7 @@ AirlightOuter airlight_surface(
                 if (_e232 > 0u) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2.inner[metal::min(unsigned(_e237 - 1u), 10u)];
-                    local_135 = _e241 > c_13;
+                    local_135 = _e241 > c_15;
                 } else {
                     local_135 = false;
                 }
@@ -5986,7 +6003,7 @@ AirlightOuter airlight_surface(
                 }
             }
             uint _e255 = j_4;
-            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_13;
+            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_15;
         }
     }
     float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
@@ -6185,9 +6202,9 @@ float airlight_arc_end(
     return _e24 ? _e15 : 0.0;
 }
 
-airlight_type_20 airlight_lobe_rule(
+airlight_type_19 airlight_lobe_rule(
 ) {
-    return airlight_type_20 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
+    return airlight_type_19 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
 }
 
 float airlight_lobe_piece(
@@ -6210,7 +6227,7 @@ float airlight_lobe_piece(
     if (_e19) {
         return 0.0;
     }
-    airlight_type_20 _e21 = airlight_lobe_rule();
+    airlight_type_19 _e21 = airlight_lobe_rule();
     uint2 loop_bound_29 = uint2(4294967295u);
     bool loop_init_28 = true;
     while(true) {
@@ -6250,9 +6267,9 @@ float airlight_lobe_arcs(
     metal::float2 inner = metal::float2(0.0);
     float sum_6 = 0.0;
     uint i_23 = 0u;
-    float c_14 = g_21.cos_r * cs.x;
+    float c_16 = g_21.cos_r * cs.x;
     float d_4 = g_21.sin_r * cs.y;
-    float peak = c_14 + d_4;
+    float peak = c_16 + d_4;
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -6332,8 +6349,8 @@ AirlightOuter airlight_outer(
     bool local_155 = {};
     bool local_156 = {};
     bool local_157 = {};
-    airlight_type_17 cuts_3 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_17 at = {};
+    airlight_type_14 cuts_3 = airlight_type_14 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_20 at = {};
     bool local_158 = {};
     uint i_24 = 0u;
     bool local_159 = {};
@@ -6483,15 +6500,15 @@ AirlightOuter airlight_outer(
     g_22.s_star = _e170;
     float _e172 = scale;
     g_22.scale = _e172;
-    float _e178 = s_star;
-    at = airlight_type_17 {{_e178, (s_24.t_min - along_d) / cos_a_2, (s_24.t_max - along_d) / cos_a_2}};
-    float _e187 = scale;
-    if (_e187 > 0.0) {
-        AirlightOuter _e192 = g_22;
-        float _e194 = airlight_to_w(_e192, 0.0);
-        AirlightOuter _e196 = g_22;
-        float _e197 = airlight_to_w(_e196, _e15);
-        local_158 = metal::min(-(_e194), _e197) < 0.5;
+    float _e179 = s_star;
+    at = airlight_type_20 {{_e179, (s_24.t_min - along_d) / cos_a_2, (s_24.t_max - along_d) / cos_a_2}};
+    float _e188 = scale;
+    if (_e188 > 0.0) {
+        AirlightOuter _e193 = g_22;
+        float _e195 = airlight_to_w(_e193, 0.0);
+        AirlightOuter _e197 = g_22;
+        float _e198 = airlight_to_w(_e197, _e15);
+        local_158 = metal::min(-(_e195), _e198) < 0.5;
     } else {
         local_158 = false;
     }
@@ -6502,76 +6519,76 @@ AirlightOuter airlight_outer(
         if (metal::all(loop_bound_31 == uint2(0u))) { break; }
         loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
         if (!loop_init_30) {
-            uint _e252 = i_24;
-            i_24 = _e252 + 1u;
+            uint _e253 = i_24;
+            i_24 = _e253 + 1u;
         }
         loop_init_30 = false;
-        uint _e205 = i_24;
-        if (_e205 < 3u) {
+        uint _e206 = i_24;
+        if (_e206 < 3u) {
         } else {
             break;
         }
         {
-            uint _e208 = i_24;
-            if (_e208 == 0u) {
+            uint _e209 = i_24;
+            if (_e209 == 0u) {
                 local_159 = sliver;
             } else {
                 local_159 = false;
             }
-            bool _e214 = local_159;
-            if (_e214) {
+            bool _e215 = local_159;
+            if (_e215) {
                 continue;
             }
             if (cos_a_2 == 0.0) {
-                uint _e219 = i_24;
-                local_160 = _e219 > 0u;
+                uint _e220 = i_24;
+                local_160 = _e220 > 0u;
             } else {
                 local_160 = false;
             }
-            bool _e223 = local_160;
-            if (_e223) {
+            bool _e224 = local_160;
+            if (_e224) {
                 continue;
             }
-            uint _e224 = i_24;
-            if (_e224 == 2u) {
+            uint _e225 = i_24;
+            if (_e225 == 2u) {
                 local_161 = infinite_4;
             } else {
                 local_161 = false;
             }
-            bool _e230 = local_161;
-            if (_e230) {
+            bool _e231 = local_161;
+            if (_e231) {
                 continue;
             }
-            uint _e231 = i_24;
-            float _e233 = at.inner[metal::min(unsigned(_e231), 2u)];
-            if (_e233 > 0.0) {
-                uint _e238 = i_24;
-                float _e240 = at.inner[metal::min(unsigned(_e238), 2u)];
-                local_162 = _e240 < _e15;
+            uint _e232 = i_24;
+            float _e234 = at.inner[metal::min(unsigned(_e232), 2u)];
+            if (_e234 > 0.0) {
+                uint _e239 = i_24;
+                float _e241 = at.inner[metal::min(unsigned(_e239), 2u)];
+                local_162 = _e241 < _e15;
             } else {
                 local_162 = false;
             }
-            bool _e243 = local_162;
-            if (_e243) {
-                uint _e244 = i_24;
-                AirlightOuter _e246 = g_22;
-                uint _e247 = i_24;
-                float _e249 = at.inner[metal::min(unsigned(_e247), 2u)];
-                float _e250 = airlight_to_w(_e246, _e249);
-                cuts_3.inner[metal::min(unsigned(_e244), 2u)] = _e250;
+            bool _e244 = local_162;
+            if (_e244) {
+                uint _e245 = i_24;
+                AirlightOuter _e247 = g_22;
+                uint _e248 = i_24;
+                float _e250 = at.inner[metal::min(unsigned(_e248), 2u)];
+                float _e251 = airlight_to_w(_e247, _e250);
+                cuts_3.inner[metal::min(unsigned(_e245), 3u)] = _e251;
             }
         }
     }
-    AirlightOuter _e254 = g_22;
-    float _e256 = airlight_to_w(_e254, 0.0);
-    AirlightOuter _e257 = g_22;
-    float _e258 = airlight_to_w(_e257, _e15);
-    airlight_type_17 _e259 = cuts_3;
-    AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_22.edges = _e260.at;
-    g_22.panels = _e260.panels;
-    AirlightOuter _e265 = g_22;
-    return _e265;
+    AirlightOuter _e255 = g_22;
+    float _e257 = airlight_to_w(_e255, 0.0);
+    AirlightOuter _e258 = g_22;
+    float _e259 = airlight_to_w(_e258, _e15);
+    airlight_type_14 _e260 = cuts_3;
+    AirlightEdges _e261 = airlight_edges_between(_e257, _e259, _e260);
+    g_22.edges = _e261.at;
+    g_22.panels = _e261.panels;
+    AirlightOuter _e266 = g_22;
+    return _e266;
 }
 
 AirlightCanonical airlight_no_canonical(
@@ -6805,7 +6822,7 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_1.lo;
             float _e44 = st_1.hi;
-            float c_15 = 0.5 * (_e42 + _e44);
+            float c_17 = 0.5 * (_e42 + _e44);
             float _e49 = st_1.hi;
             float _e51 = st_1.lo;
             float hw_2 = 0.5 * (_e49 - _e51);
@@ -6838,7 +6855,7 @@ AirlightResult airlight_in_scatter(
                         local_171 = false;
                     }
                     bool _e85 = local_171;
-                    float w_8 = _e85 ? (c_15 - (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_15 + (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    float w_8 = _e85 ? (c_17 - (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_17 + (hw_2 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
                     AirlightNode _e87 = airlight_outer_node(s_26, _e12, w_8);
                     f = 0.0;
                     if (_e87.weight != 0.0) {

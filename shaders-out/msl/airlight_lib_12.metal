@@ -147,9 +147,6 @@ struct AirlightEdges {
     airlight_type_3 at;
     uint panels;
 };
-struct airlight_type_17 {
-    float inner[3];
-};
 struct AirlightSplit {
     bool split;
     char _pad1[3];
@@ -197,10 +194,10 @@ struct AirlightOuter {
     uint smooth_edges;
     char _pad21[4];
 };
-struct airlight_type_18 {
+struct airlight_type_17 {
     float inner[11];
 };
-struct airlight_type_19 {
+struct airlight_type_18 {
     float inner[6];
 };
 struct AirlightLobe {
@@ -212,8 +209,11 @@ struct AirlightLobe {
     float sin_delta;
     float exponent;
 };
-struct airlight_type_20 {
+struct airlight_type_19 {
     metal::float2 inner[5];
+};
+struct airlight_type_20 {
+    float inner[3];
 };
 struct AirlightNode {
     AirlightScene scene;
@@ -251,17 +251,17 @@ struct AirlightArea {
     bool isotropic;
     char _pad16[15];
 };
+struct AirlightOutline {
+    airlight_type_8 corners;
+    float radius;
+    char _pad2[4];
+};
 struct AirlightAbove {
     float z;
     char _pad1[4];
     metal::float2 off;
     float rho0_;
     char _pad3[4];
-};
-struct AirlightOutline {
-    airlight_type_8 corners;
-    float radius;
-    char _pad2[4];
 };
 struct AirlightFlatLobe {
     metal::packed_float3 p;
@@ -361,6 +361,7 @@ constant uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 constant float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 constant float AIRLIGHT_LOBE_REACH = 8.0;
 constant float AIRLIGHT_EDGE_REACH = 0.5;
+constant float AIRLIGHT_CROSSING_REACH = 16.0;
 
 airlight_type_2 airlight_zero_terms(
 ) {
@@ -614,8 +615,8 @@ metal::float2 airlight_cos_sin(
 ) {
     float z_15 = x * x;
     float c_8 = 1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (0.000024801588 + (z_15 * (-0.0000002755732 + (z_15 * (0.0000000020876756 + (z_15 * (-0.000000000011470745 + (z_15 * 0.000000000000047794773)))))))))))))));
-    float s_55 = 1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (0.0000027557319 + (z_15 * (-0.000000025052108 + (z_15 * (0.00000000016059044 + (z_15 * (-0.00000000000076471636 + (z_15 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_8, s_55 * x);
+    float s_56 = 1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (0.0000027557319 + (z_15 * (-0.000000025052108 + (z_15 * (0.00000000016059044 + (z_15 * (-0.00000000000076471636 + (z_15 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_8, s_56 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -677,10 +678,10 @@ float airlight_log1p(
     if (_e9) {
         return metal::log(1.0 + x_2);
     }
-    float s_56 = x_2 / (2.0 + x_2);
-    float z_17 = s_56 * s_56;
+    float s_57 = x_2 / (2.0 + x_2);
+    float z_17 = s_57 * s_57;
     float sum_14 = (((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0;
-    return (2.0 * s_56) * sum_14;
+    return (2.0 * s_57) * sum_14;
 }
 
 bool airlight_is_finite(
@@ -767,9 +768,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_29 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_30 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_7 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_29 * x_29) + (y_7 * y_7)) < 1.0;
+    return ((x_30 * x_30) + (y_7 * y_7)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -938,8 +939,8 @@ float airlight_en_scaled_cf(
     float nf_1 = static_cast<float>(n);
     float m_7 = static_cast<float>(_e2);
     float b_17 = (x_4 + nf_1) + (2.0 * (m_7 + 1.0));
-    float a_32 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
-    float disc = 1.0 - ((4.0 * a_32) / (b_17 * b_17));
+    float a_33 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
+    float disc = 1.0 - ((4.0 * a_33) / (b_17 * b_17));
     t_2 = b_17;
     if (disc > 0.0) {
         t_2 = (b_17 * (1.0 + metal::sqrt(disc))) * 0.5;
@@ -1130,8 +1131,8 @@ float airlight_hg_base(
     float op
 ) {
     if (g_2 >= 0.0) {
-        float a_33 = 1.0 - g_2;
-        return (om * (g_2 + g_2)) + (a_33 * a_33);
+        float a_34 = 1.0 - g_2;
+        return (om * (g_2 + g_2)) + (a_34 * a_34);
     }
     float b_18 = 1.0 + g_2;
     return (op * -((g_2 + g_2))) + (b_18 * b_18);
@@ -1254,8 +1255,8 @@ float airlight_light(
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_30 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
-            return (x_30 * x_30) * (3.0 - (2.0 * x_30));
+            float x_31 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
+            return (x_31 * x_31) * (3.0 - (2.0 * x_31));
         }
         default: {
             return 1.0;
@@ -1280,11 +1281,11 @@ float airlight_singular_height(
 float airlight_hg_gap(
     float g_4
 ) {
-    float a_34 = metal::abs(g_4);
-    if (!((a_34 > 0.0))) {
+    float a_35 = metal::abs(g_4);
+    if (!((a_35 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return ((1.0 - a_34) * (1.0 - a_34)) / (a_34 + a_34);
+    return ((1.0 - a_35) * (1.0 - a_35)) / (a_35 + a_35);
 }
 
 metal::float3 airlight_singular_heights(
@@ -1302,8 +1303,8 @@ metal::float3 airlight_singular_heights(
             break;
         }
         case 3u: {
-            float a_35 = metal::abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, (a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX, sigma_1);
+            float a_36 = metal::abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, (a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX, sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1554,10 +1555,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_31 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_31);
+            float x_32 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_32);
             if (_e42) {
-                float _e43 = airlight_log1p(x_31);
+                float _e43 = airlight_log1p(x_32);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1706,8 +1707,8 @@ float airlight_node(
     airlight_type_9 rule,
     uint i_3
 ) {
-    float x_32 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_32) : x_32;
+    float x_33 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_33) : x_33;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1792,8 +1793,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_33 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_33 * x_33;
+            float x_34 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_34 * x_34;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2422,8 +2423,8 @@ float airlight_bernstein_rho(
     float im
 ) {
     float im2_ = im * im;
-    float a_36 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
-    return a_36 + metal::sqrt(metal::max((a_36 * a_36) - 1.0, 0.0));
+    float a_37 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
+    return a_37 + metal::sqrt(metal::max((a_37 * a_37) - 1.0, 0.0));
 }
 
 float airlight_transform_noise(
@@ -2444,8 +2445,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_34 = half_5.big_h * _e13;
-    return (x_34 > 0.0) ? metal::exp(-(x_34)) : 1.0;
+    float x_35 = half_5.big_h * _e13;
+    return (x_35 > 0.0) ? metal::exp(-(x_35)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -3128,13 +3129,13 @@ AirlightPanel airlight_tail_panel(
     float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = _e937 * _e936;
-    float x_35 = metal::abs(alpha) + metal::abs(beta_1);
+    float x_36 = metal::abs(alpha) + metal::abs(beta_1);
     float _e950 = spread;
     float _e951 = l_cur;
     spread = _e950 + (_e951 * metal::abs(_e54.inner[0]));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = (((1.0 * x_35) * _e958) + (0.0 * _e960)) / 1.0;
+    next = (((1.0 * x_36) * _e958) + (0.0 * _e960)) / 1.0;
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -3144,7 +3145,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e968 + (_e969 * metal::abs(_e54.inner[1]));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = (((3.0 * x_35) * _e976) + (1.0 * _e978)) / 2.0;
+    next = (((3.0 * x_36) * _e976) + (1.0 * _e978)) / 2.0;
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -3154,7 +3155,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e986 + (_e987 * metal::abs(_e54.inner[2]));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = (((5.0 * x_35) * _e994) + (2.0 * _e996)) / 3.0;
+    next = (((5.0 * x_36) * _e994) + (2.0 * _e996)) / 3.0;
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -3164,7 +3165,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1004 + (_e1005 * metal::abs(_e54.inner[3]));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = (((7.0 * x_35) * _e1012) + (3.0 * _e1014)) / 4.0;
+    next = (((7.0 * x_36) * _e1012) + (3.0 * _e1014)) / 4.0;
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -3174,7 +3175,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1022 + (_e1023 * metal::abs(_e54.inner[4]));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = (((9.0 * x_35) * _e1030) + (4.0 * _e1032)) / 5.0;
+    next = (((9.0 * x_36) * _e1030) + (4.0 * _e1032)) / 5.0;
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -3184,7 +3185,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1040 + (_e1041 * metal::abs(_e54.inner[5]));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = (((11.0 * x_35) * _e1048) + (5.0 * _e1050)) / 6.0;
+    next = (((11.0 * x_36) * _e1048) + (5.0 * _e1050)) / 6.0;
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -3194,7 +3195,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1058 + (_e1059 * metal::abs(_e54.inner[6]));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = (((13.0 * x_35) * _e1066) + (6.0 * _e1068)) / 7.0;
+    next = (((13.0 * x_36) * _e1066) + (6.0 * _e1068)) / 7.0;
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -3204,7 +3205,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1076 + (_e1077 * metal::abs(_e54.inner[7]));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = (((15.0 * x_35) * _e1084) + (7.0 * _e1086)) / 8.0;
+    next = (((15.0 * x_36) * _e1084) + (7.0 * _e1086)) / 8.0;
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -3214,7 +3215,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1094 + (_e1095 * metal::abs(_e54.inner[8]));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = (((17.0 * x_35) * _e1102) + (8.0 * _e1104)) / 9.0;
+    next = (((17.0 * x_36) * _e1102) + (8.0 * _e1104)) / 9.0;
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -3224,7 +3225,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1112 + (_e1113 * metal::abs(_e54.inner[9]));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = (((19.0 * x_35) * _e1120) + (9.0 * _e1122)) / 10.0;
+    next = (((19.0 * x_36) * _e1120) + (9.0 * _e1122)) / 10.0;
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -3234,7 +3235,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1130 + (_e1131 * metal::abs(_e54.inner[10]));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = (((21.0 * x_35) * _e1138) + (10.0 * _e1140)) / 11.0;
+    next = (((21.0 * x_36) * _e1138) + (10.0 * _e1140)) / 11.0;
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -3244,7 +3245,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1148 + (_e1149 * metal::abs(_e54.inner[11]));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = (((23.0 * x_35) * _e1156) + (11.0 * _e1158)) / 12.0;
+    next = (((23.0 * x_36) * _e1156) + (11.0 * _e1158)) / 12.0;
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -3781,9 +3782,9 @@ metal::float2 airlight_angle_route(
             break;
         }
         case 3u: {
-            float a_37 = metal::abs(p0_4);
+            float a_38 = metal::abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, (a_37 > 0.0) ? ((1.0 - a_37) / a_37) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, (a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3931,9 +3932,9 @@ metal::float2 airlight_crossings(
     float a0_ = k_4 + (sigma_9 * d_el);
     float b0_ = -((d_c + d_c));
     float c0_ = k_4 - (sigma_9 * d_el);
-    float scale_3 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
-    if (!(!((scale_3 > 0.0)))) {
-        bool _e21 = airlight_is_finite(scale_3);
+    float scale_4 = metal::max(metal::abs(a0_), metal::max(metal::abs(b0_), metal::abs(c0_)));
+    if (!(!((scale_4 > 0.0)))) {
+        bool _e21 = airlight_is_finite(scale_4);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3942,10 +3943,10 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_38 = a0_ / scale_3;
-    float b_19 = b0_ / scale_3;
-    float c_10 = c0_ / scale_3;
-    float disc_1 = (b_19 * b_19) - ((4.0 * a_38) * c_10);
+    float a_39 = a0_ / scale_4;
+    float b_19 = b0_ / scale_4;
+    float c_10 = c0_ / scale_4;
+    float disc_1 = (b_19 * b_19) - ((4.0 * a_39) * c_10);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
@@ -3957,8 +3958,8 @@ metal::float2 airlight_crossings(
     if (q_10 != 0.0) {
         r1_ = c_10 / q_10;
     }
-    if (a_38 != 0.0) {
-        r2_2 = q_10 / a_38;
+    if (a_39 != 0.0) {
+        r2_2 = q_10 / a_39;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -4013,15 +4014,15 @@ bool airlight_dark(
     if (_e31) {
         return false;
     }
-    float a_39 = sigma_11 * g_15.d_el;
+    float a_40 = sigma_11 * g_15.d_el;
     float d_3 = g_15.d_c;
     if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_39 * a_39) + (d_3 * d_3));
-    y1_1 = (root_1 - a_39) / d_3;
-    if (a_39 > 0.0) {
-        y1_1 = d_3 / (a_39 + root_1);
+    float root_1 = metal::sqrt((a_40 * a_40) + (d_3 * d_3));
+    y1_1 = (root_1 - a_40) / d_3;
+    if (a_40 > 0.0) {
+        y1_1 = d_3 / (a_40 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -5831,9 +5832,9 @@ AirlightListScan airlight_list_scan(
 AirlightEdges airlight_edges_between(
     float lo_3,
     float hi_3,
-    airlight_type_17 unsorted
+    airlight_type_14 unsorted
 ) {
-    airlight_type_17 cuts_1 = {};
+    airlight_type_14 cuts_1 = {};
     AirlightEdges e_1 = {};
     uint n_1 = 0u;
     uint i_18 = 0u;
@@ -5847,21 +5848,37 @@ AirlightEdges airlight_edges_between(
         cuts_1.inner[0] = _e13;
         cuts_1.inner[1] = c_11;
     }
-    float _e16 = cuts_1.inner[2];
-    float _e18 = cuts_1.inner[1];
+    float _e16 = cuts_1.inner[3];
+    float _e18 = cuts_1.inner[2];
     if (_e16 < _e18) {
-        float c_12 = cuts_1.inner[1];
-        float _e24 = cuts_1.inner[2];
-        cuts_1.inner[1] = _e24;
-        cuts_1.inner[2] = c_12;
+        float c_12 = cuts_1.inner[2];
+        float _e24 = cuts_1.inner[3];
+        cuts_1.inner[2] = _e24;
+        cuts_1.inner[3] = c_12;
     }
-    float _e27 = cuts_1.inner[1];
+    float _e27 = cuts_1.inner[2];
     float _e29 = cuts_1.inner[0];
     if (_e27 < _e29) {
         float c_13 = cuts_1.inner[0];
-        float _e35 = cuts_1.inner[1];
+        float _e35 = cuts_1.inner[2];
         cuts_1.inner[0] = _e35;
-        cuts_1.inner[1] = c_13;
+        cuts_1.inner[2] = c_13;
+    }
+    float _e38 = cuts_1.inner[3];
+    float _e40 = cuts_1.inner[1];
+    if (_e38 < _e40) {
+        float c_14 = cuts_1.inner[1];
+        float _e46 = cuts_1.inner[3];
+        cuts_1.inner[1] = _e46;
+        cuts_1.inner[3] = c_14;
+    }
+    float _e49 = cuts_1.inner[2];
+    float _e51 = cuts_1.inner[1];
+    if (_e49 < _e51) {
+        float c_15 = cuts_1.inner[1];
+        float _e57 = cuts_1.inner[2];
+        cuts_1.inner[1] = _e57;
+        cuts_1.inner[2] = c_15;
     }
     e_1 = AirlightEdges {airlight_type_3 {{lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3}}, 0u};
     uint2 loop_bound_22 = uint2(4294967295u);
@@ -5870,44 +5887,44 @@ AirlightEdges airlight_edges_between(
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_22) {
-            uint _e74 = i_18;
-            i_18 = _e74 + 1u;
+            uint _e96 = i_18;
+            i_18 = _e96 + 1u;
         }
         loop_init_22 = false;
-        uint _e45 = i_18;
-        if (_e45 < 3u) {
+        uint _e67 = i_18;
+        if (_e67 < 4u) {
         } else {
             break;
         }
         {
-            uint _e48 = i_18;
-            float _e50 = cuts_1.inner[metal::min(unsigned(_e48), 2u)];
-            uint _e52 = n_1;
-            float _e54 = e_1.at.inner[metal::min(unsigned(_e52), 12u)];
-            if (_e50 > _e54) {
-                uint _e58 = i_18;
-                float _e60 = cuts_1.inner[metal::min(unsigned(_e58), 2u)];
-                local_130 = _e60 < hi_3;
+            uint _e70 = i_18;
+            float _e72 = cuts_1.inner[metal::min(unsigned(_e70), 3u)];
+            uint _e74 = n_1;
+            float _e76 = e_1.at.inner[metal::min(unsigned(_e74), 12u)];
+            if (_e72 > _e76) {
+                uint _e80 = i_18;
+                float _e82 = cuts_1.inner[metal::min(unsigned(_e80), 3u)];
+                local_130 = _e82 < hi_3;
             } else {
                 local_130 = false;
             }
-            bool _e63 = local_130;
-            if (_e63) {
-                uint _e64 = n_1;
-                n_1 = _e64 + 1u;
-                uint _e68 = n_1;
-                uint _e70 = i_18;
-                float _e72 = cuts_1.inner[metal::min(unsigned(_e70), 2u)];
-                e_1.at.inner[metal::min(unsigned(_e68), 12u)] = _e72;
+            bool _e85 = local_130;
+            if (_e85) {
+                uint _e86 = n_1;
+                n_1 = _e86 + 1u;
+                uint _e90 = n_1;
+                uint _e92 = i_18;
+                float _e94 = cuts_1.inner[metal::min(unsigned(_e92), 3u)];
+                e_1.at.inner[metal::min(unsigned(_e90), 12u)] = _e94;
             }
         }
     }
-    uint _e77 = n_1;
-    e_1.at.inner[metal::min(unsigned(_e77 + 1u), 12u)] = hi_3;
-    uint _e82 = n_1;
-    e_1.panels = _e82 + 1u;
-    AirlightEdges _e85 = e_1;
-    return _e85;
+    uint _e99 = n_1;
+    e_1.at.inner[metal::min(unsigned(_e99 + 1u), 12u)] = hi_3;
+    uint _e104 = n_1;
+    e_1.panels = _e104 + 1u;
+    AirlightEdges _e107 = e_1;
+    return _e107;
 }
 
 AirlightSplit airlight_split_worst(
@@ -6039,10 +6056,10 @@ float airlight_asinh(
     float x_16
 ) {
     float r_4 = {};
-    float a_40 = metal::abs(x_16);
-    r_4 = AIRLIGHT_LN_2_ + metal::log(a_40);
-    if (a_40 <= 4096.0) {
-        float _e17 = airlight_log1p(a_40 + ((a_40 * a_40) / (1.0 + metal::sqrt(1.0 + (a_40 * a_40)))));
+    float a_41 = metal::abs(x_16);
+    r_4 = AIRLIGHT_LN_2_ + metal::log(a_41);
+    if (a_41 <= 4096.0) {
+        float _e17 = airlight_log1p(a_41 + ((a_41 * a_41) / (1.0 + metal::sqrt(1.0 + (a_41 * a_41)))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -6074,8 +6091,8 @@ metal::float2 airlight_cos_sin_half_turn(
 float airlight_acos(
     float x_18
 ) {
-    float a_41 = metal::abs(x_18);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_41) / (1.0 + a_41)));
+    float a_42 = metal::abs(x_18);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_42) / (1.0 + a_42)));
     return (x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
@@ -6093,12 +6110,12 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_42 = cos_a * cos_g;
+    float a_43 = cos_a * cos_g;
     float b_20 = sin_a * sin_g;
-    if (b_20 <= metal::abs(a_42)) {
-        return (a_42 > 0.0) ? AIRLIGHT_PI : 0.0;
+    if (b_20 <= metal::abs(a_43)) {
+        return (a_43 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_42) / b_20, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_43) / b_20, -1.0, 1.0));
     return _e18;
 }
 
@@ -6116,7 +6133,7 @@ AirlightOuter airlight_surface(
     AirlightOuter g_22 = {};
     bool local_134 = {};
     metal::float3 u_1 = {};
-    airlight_type_18 cuts_2 = airlight_type_18 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_17 cuts_2 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     uint i_19 = 1u;
     uint j_4 = {};
     bool local_135 = {};
@@ -6185,22 +6202,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_25.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_36 = metal::dot(_e111, _e112);
+        float x_37 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
         float y_12 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_36 * x_36) + (y_12 * y_12));
+        g_22.sin_r = metal::sqrt((x_37 * x_37) + (y_12 * y_12));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_36, metal::abs(y_12));
+            float _e140 = airlight_angle(x_37, metal::abs(y_12));
             float phi_r = ((y_12 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_36 / _e145, -(y_12) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_37 / _e145, -(y_12) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -6233,7 +6250,7 @@ AirlightOuter airlight_surface(
     float _e216 = cuts_2.inner[3];
     float _e218 = cuts_2.inner[9];
     float _e220 = cuts_2.inner[10];
-    airlight_type_19 kinks = airlight_type_19 {{_e210, _e212, _e214, _e216, _e218, _e220}};
+    airlight_type_18 kinks = airlight_type_18 {{_e210, _e212, _e214, _e216, _e218, _e220}};
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
@@ -6251,7 +6268,7 @@ AirlightOuter airlight_surface(
         }
         {
             uint _e227 = i_19;
-            float c_14 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
+            float c_16 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
             uint _e230 = i_19;
             j_4 = _e230;
             uint2 loop_bound_25 = uint2(4294967295u);
@@ -6262,7 +6279,7 @@ AirlightOuter airlight_surface(
                 if (_e232 > 0u) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2.inner[metal::min(unsigned(_e237 - 1u), 10u)];
-                    local_135 = _e241 > c_14;
+                    local_135 = _e241 > c_16;
                 } else {
                     local_135 = false;
                 }
@@ -6281,7 +6298,7 @@ AirlightOuter airlight_surface(
                 }
             }
             uint _e255 = j_4;
-            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_14;
+            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_16;
         }
     }
     float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1);
@@ -6480,9 +6497,9 @@ float airlight_arc_end(
     return _e24 ? _e15 : 0.0;
 }
 
-airlight_type_20 airlight_lobe_rule(
+airlight_type_19 airlight_lobe_rule(
 ) {
-    return airlight_type_20 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
+    return airlight_type_19 {{metal::float2(0.42556283, 0.14776212), metal::float2(0.2833023, 0.13463336), metal::float2(0.16029522, 0.10954318), metal::float2(0.067468315, 0.07472567), metal::float2(0.013046736, 0.03333567)}};
 }
 
 float airlight_lobe_piece(
@@ -6505,7 +6522,7 @@ float airlight_lobe_piece(
     if (_e19) {
         return 0.0;
     }
-    airlight_type_20 _e21 = airlight_lobe_rule();
+    airlight_type_19 _e21 = airlight_lobe_rule();
     uint2 loop_bound_29 = uint2(4294967295u);
     bool loop_init_28 = true;
     while(true) {
@@ -6545,9 +6562,9 @@ float airlight_lobe_arcs(
     metal::float2 inner = metal::float2(0.0);
     float sum_6 = 0.0;
     uint i_23 = 0u;
-    float c_15 = g_23.cos_r * cs.x;
+    float c_17 = g_23.cos_r * cs.x;
     float d_4 = g_23.sin_r * cs.y;
-    float peak = c_15 + d_4;
+    float peak = c_17 + d_4;
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -6627,8 +6644,8 @@ AirlightOuter airlight_outer(
     bool local_155 = {};
     bool local_156 = {};
     bool local_157 = {};
-    airlight_type_17 cuts_3 = airlight_type_17 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_17 at = {};
+    airlight_type_14 cuts_3 = airlight_type_14 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_20 at = {};
     bool local_158 = {};
     uint i_24 = 0u;
     bool local_159 = {};
@@ -6778,15 +6795,15 @@ AirlightOuter airlight_outer(
     g_24.s_star = _e170;
     float _e172 = scale;
     g_24.scale = _e172;
-    float _e178 = s_star;
-    at = airlight_type_17 {{_e178, (s_26.t_min - along_d) / cos_a_2, (s_26.t_max - along_d) / cos_a_2}};
-    float _e187 = scale;
-    if (_e187 > 0.0) {
-        AirlightOuter _e192 = g_24;
-        float _e194 = airlight_to_w(_e192, 0.0);
-        AirlightOuter _e196 = g_24;
-        float _e197 = airlight_to_w(_e196, _e15);
-        local_158 = metal::min(-(_e194), _e197) < 0.5;
+    float _e179 = s_star;
+    at = airlight_type_20 {{_e179, (s_26.t_min - along_d) / cos_a_2, (s_26.t_max - along_d) / cos_a_2}};
+    float _e188 = scale;
+    if (_e188 > 0.0) {
+        AirlightOuter _e193 = g_24;
+        float _e195 = airlight_to_w(_e193, 0.0);
+        AirlightOuter _e197 = g_24;
+        float _e198 = airlight_to_w(_e197, _e15);
+        local_158 = metal::min(-(_e195), _e198) < 0.5;
     } else {
         local_158 = false;
     }
@@ -6797,76 +6814,76 @@ AirlightOuter airlight_outer(
         if (metal::all(loop_bound_31 == uint2(0u))) { break; }
         loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
         if (!loop_init_30) {
-            uint _e252 = i_24;
-            i_24 = _e252 + 1u;
+            uint _e253 = i_24;
+            i_24 = _e253 + 1u;
         }
         loop_init_30 = false;
-        uint _e205 = i_24;
-        if (_e205 < 3u) {
+        uint _e206 = i_24;
+        if (_e206 < 3u) {
         } else {
             break;
         }
         {
-            uint _e208 = i_24;
-            if (_e208 == 0u) {
+            uint _e209 = i_24;
+            if (_e209 == 0u) {
                 local_159 = sliver;
             } else {
                 local_159 = false;
             }
-            bool _e214 = local_159;
-            if (_e214) {
+            bool _e215 = local_159;
+            if (_e215) {
                 continue;
             }
             if (cos_a_2 == 0.0) {
-                uint _e219 = i_24;
-                local_160 = _e219 > 0u;
+                uint _e220 = i_24;
+                local_160 = _e220 > 0u;
             } else {
                 local_160 = false;
             }
-            bool _e223 = local_160;
-            if (_e223) {
+            bool _e224 = local_160;
+            if (_e224) {
                 continue;
             }
-            uint _e224 = i_24;
-            if (_e224 == 2u) {
+            uint _e225 = i_24;
+            if (_e225 == 2u) {
                 local_161 = infinite_5;
             } else {
                 local_161 = false;
             }
-            bool _e230 = local_161;
-            if (_e230) {
+            bool _e231 = local_161;
+            if (_e231) {
                 continue;
             }
-            uint _e231 = i_24;
-            float _e233 = at.inner[metal::min(unsigned(_e231), 2u)];
-            if (_e233 > 0.0) {
-                uint _e238 = i_24;
-                float _e240 = at.inner[metal::min(unsigned(_e238), 2u)];
-                local_162 = _e240 < _e15;
+            uint _e232 = i_24;
+            float _e234 = at.inner[metal::min(unsigned(_e232), 2u)];
+            if (_e234 > 0.0) {
+                uint _e239 = i_24;
+                float _e241 = at.inner[metal::min(unsigned(_e239), 2u)];
+                local_162 = _e241 < _e15;
             } else {
                 local_162 = false;
             }
-            bool _e243 = local_162;
-            if (_e243) {
-                uint _e244 = i_24;
-                AirlightOuter _e246 = g_24;
-                uint _e247 = i_24;
-                float _e249 = at.inner[metal::min(unsigned(_e247), 2u)];
-                float _e250 = airlight_to_w(_e246, _e249);
-                cuts_3.inner[metal::min(unsigned(_e244), 2u)] = _e250;
+            bool _e244 = local_162;
+            if (_e244) {
+                uint _e245 = i_24;
+                AirlightOuter _e247 = g_24;
+                uint _e248 = i_24;
+                float _e250 = at.inner[metal::min(unsigned(_e248), 2u)];
+                float _e251 = airlight_to_w(_e247, _e250);
+                cuts_3.inner[metal::min(unsigned(_e245), 3u)] = _e251;
             }
         }
     }
-    AirlightOuter _e254 = g_24;
-    float _e256 = airlight_to_w(_e254, 0.0);
-    AirlightOuter _e257 = g_24;
-    float _e258 = airlight_to_w(_e257, _e15);
-    airlight_type_17 _e259 = cuts_3;
-    AirlightEdges _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_24.edges = _e260.at;
-    g_24.panels = _e260.panels;
-    AirlightOuter _e265 = g_24;
-    return _e265;
+    AirlightOuter _e255 = g_24;
+    float _e257 = airlight_to_w(_e255, 0.0);
+    AirlightOuter _e258 = g_24;
+    float _e259 = airlight_to_w(_e258, _e15);
+    airlight_type_14 _e260 = cuts_3;
+    AirlightEdges _e261 = airlight_edges_between(_e257, _e259, _e260);
+    g_24.edges = _e261.at;
+    g_24.panels = _e261.panels;
+    AirlightOuter _e266 = g_24;
+    return _e266;
 }
 
 AirlightCanonical airlight_no_canonical(
@@ -6896,15 +6913,15 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_40 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
-        float t_9 = x_21 - static_cast<float>(i_40);
-        float a_43 = g_25.gamma.inner[metal::min(unsigned(i_40), 12u)];
-        float b_21 = g_25.gamma.inner[metal::min(unsigned(i_40 + 1u), 12u)];
-        float w_8 = b_21 - a_43;
+        uint i_42 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
+        float t_9 = x_21 - static_cast<float>(i_42);
+        float a_44 = g_25.gamma.inner[metal::min(unsigned(i_42), 12u)];
+        float b_21 = g_25.gamma.inner[metal::min(unsigned(i_42 + 1u), 12u)];
+        float w_8 = b_21 - a_44;
         float u_8 = 1.0 - t_9;
-        bool smooth_a = ((g_25.smooth_edges >> i_40) & 1u) != 0u;
-        bool smooth_b = ((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u;
-        gamma_1 = a_43 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
+        bool smooth_a = ((g_25.smooth_edges >> i_42) & 1u) != 0u;
+        bool smooth_b = ((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u;
+        gamma_1 = a_44 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
         jacobian = ((w_8 * 6.0) * t_9) * u_8;
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -6913,7 +6930,7 @@ AirlightNode airlight_outer_node(
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = _e66 ? (a_43 + ((w_8 * t_9) * t_9)) : _e58;
+        gamma_1 = _e66 ? (a_44 + ((w_8 * t_9) * t_9)) : _e58;
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6945,7 +6962,7 @@ AirlightNode airlight_outer_node(
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = _e102 ? (a_43 + (w_8 * t_9)) : _e96;
+        gamma_1 = _e102 ? (a_44 + (w_8 * t_9)) : _e96;
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -7250,8 +7267,8 @@ metal::float4 airlight_phase_lobes(
             break;
         }
         case 3u: {
-            float a_44 = metal::abs(p0_5);
-            metal::float2 _e21 = airlight_lobe(p0_5, (a_44 > 0.0) ? ((1.0 - a_44) / a_44) : AIRLIGHT_FLT_MAX);
+            float a_45 = metal::abs(p0_5);
+            metal::float2 _e21 = airlight_lobe(p0_5, (a_45 > 0.0) ? ((1.0 - a_45) / a_45) : AIRLIGHT_FLT_MAX);
             first = _e21;
             break;
         }
@@ -7309,54 +7326,125 @@ float airlight_area_theta(
     return _e7;
 }
 
-AirlightArea airlight_area(
-    AirlightScene s_35
+metal::float2 airlight_outline_distances(
+    AirlightOutline o
 ) {
-    AirlightArea a_18 = {};
+    metal::float2 nearest = metal::float2(340282350000000000000000000000000000000.0);
+    uint i_27 = 0u;
+    if (o.radius > 0.0) {
+        metal::float2 c_18 = o.corners.inner[0];
+        return metal::float2(metal::abs(metal::sqrt((o.corners.inner[0].x * o.corners.inner[0].x) + (o.corners.inner[0].y * o.corners.inner[0].y)) - o.radius), AIRLIGHT_FLT_MAX);
+    }
+    uint2 loop_bound_32 = uint2(4294967295u);
+    bool loop_init_31 = true;
+    while(true) {
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e78 = i_27;
+            i_27 = _e78 + 1u;
+        }
+        loop_init_31 = false;
+        uint _e24 = i_27;
+        if (_e24 < 4u) {
+        } else {
+            break;
+        }
+        {
+            uint _e28 = i_27;
+            metal::float2 a_46 = o.corners.inner[metal::min(unsigned(_e28), 3u)];
+            uint _e31 = i_27;
+            metal::float2 e_15 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e31 + 1u, 4u)), 3u)] - a_46;
+            metal::float2 p_4 = a_46 + (metal::clamp(-(((o.corners.inner[metal::min(unsigned(_e28), 3u)].x * e_15.x) + (o.corners.inner[metal::min(unsigned(_e28), 3u)].y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0) * e_15);
+            float distance = metal::sqrt((p_4.x * p_4.x) + (p_4.y * p_4.y));
+            float _e68 = nearest.x;
+            if (distance < _e68) {
+                float _e71 = nearest.x;
+                nearest = metal::float2(distance, _e71);
+            } else {
+                float _e74 = nearest.y;
+                if (distance < _e74) {
+                    nearest.y = distance;
+                }
+            }
+        }
+    }
+    metal::float2 _e80 = nearest;
+    return _e80;
+}
+
+AirlightOutline airlight_outline_at(
+    AirlightScene s_35,
+    AirlightArea a_18,
+    metal::float3 x_22
+) {
+    metal::float3 rel = x_22 - a_18.c;
+    metal::float2 foot = metal::float2(metal::dot(rel, a_18.a1_), metal::dot(rel, a_18.a2_));
+    metal::float2 zero = metal::float2(0.0);
+    if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
+        return AirlightOutline {airlight_type_8 {{-(foot), zero, zero, zero}}, a_18.radius};
+    }
+    metal::float2 u2_ = metal::float2(metal::dot(a_18.eu, a_18.a1_), metal::dot(a_18.eu, a_18.a2_));
+    metal::float2 v2_ = metal::float2(metal::dot(a_18.ev, a_18.a1_), metal::dot(a_18.ev, a_18.a2_));
+    return AirlightOutline {airlight_type_8 {{-(foot), u2_ - foot, (u2_ + v2_) - foot, v2_ - foot}}, 0.0};
+}
+
+AirlightArea airlight_area(
+    AirlightScene s_36
+) {
+    AirlightArea a_19 = {};
     bool local_172 = {};
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
+    metal::float2 distances = metal::float2(340282350000000000000000000000000000000.0);
+    float front = 1.0;
     metal::float3 centre = {};
     float size = {};
     float t_end_1 = {};
     bool end_infinite = {};
     bool local_173 = {};
-    airlight_type_17 cuts_4 = {};
-    uint i_27 = 0u;
+    airlight_type_14 cuts_4 = {};
+    float scale_1 = 1.0;
     bool local_174 = {};
     bool local_175 = {};
     bool local_176 = {};
-    metal::float3 zero = metal::float3(0.0);
-    metal::float4 _e21 = airlight_phase_lobes(s_35);
-    a_18 = AirlightArea {zero, s_35.light_position, zero, zero, zero, zero, zero, zero, s_35.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false};
-    bool _e28 = airlight_isotropic_phase(s_35);
-    a_18.isotropic = _e28;
-    if (!((s_35.intensity == 0.0))) {
-        local_172 = s_35.sigma_s == 0.0;
+    bool local_177 = {};
+    uint i_28 = 0u;
+    uint i_29 = 0u;
+    bool local_178 = {};
+    bool local_179 = {};
+    bool local_180 = {};
+    metal::float3 zero_1 = metal::float3(0.0);
+    metal::float4 _e21 = airlight_phase_lobes(s_36);
+    a_19 = AirlightArea {zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false};
+    bool _e28 = airlight_isotropic_phase(s_36);
+    a_19.isotropic = _e28;
+    if (!((s_36.intensity == 0.0))) {
+        local_172 = s_36.sigma_s == 0.0;
     } else {
         local_172 = true;
     }
     bool _e39 = local_172;
     if (_e39) {
-        a_18.outcome = 1u;
-        AirlightArea _e42 = a_18;
+        a_19.outcome = 1u;
+        AirlightArea _e42 = a_19;
         return _e42;
     }
-    metal::float3 o_6 = s_35.origin;
-    metal::float3 _e45 = airlight_normalize(s_35.dir);
-    a_18.d = _e45;
-    bool infinite_6 = (s_35.flags & 1u) != 0u;
-    float t0_2 = s_35.t_min;
-    centre = s_35.light_position;
-    size = s_35.light_param_a;
-    if (s_35.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        metal::float3 _e67 = a_18.c;
-        metal::float3 oc = o_6 - _e67;
+    metal::float3 o_7 = s_36.origin;
+    metal::float3 _e45 = airlight_normalize(s_36.dir);
+    a_19.d = _e45;
+    bool infinite_6 = (s_36.flags & 1u) != 0u;
+    float t0_2 = s_36.t_min;
+    centre = s_36.light_position;
+    size = s_36.light_param_a;
+    if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+        metal::float3 _e72 = a_19.c;
+        metal::float3 oc = o_7 - _e72;
         float b_22 = metal::dot(oc, _e45);
-        float _e72 = a_18.radius;
-        float _e74 = a_18.radius;
-        float k_12 = metal::dot(oc, oc) - (_e72 * _e74);
+        float _e77 = a_19.radius;
+        float _e79 = a_19.radius;
+        float k_12 = metal::dot(oc, oc) - (_e77 * _e79);
         float disc_2 = (b_22 * b_22) - k_12;
         if (disc_2 > 0.0) {
             float root_2 = metal::sqrt(disc_2);
@@ -7366,148 +7454,229 @@ AirlightArea airlight_area(
             cut_count = 2u;
         }
     } else {
-        if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
-            metal::float3 _e98 = airlight_normalize(s_35.light_axis);
-            a_18.n = _e98;
-            metal::float3 _e101 = a_18.n;
-            metal::float3 _e102 = airlight_basis_e1_(_e101);
-            a_18.a1_ = _e102;
+        if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
+            metal::float3 _e103 = airlight_normalize(s_36.light_axis);
+            a_19.n = _e103;
+            metal::float3 _e106 = a_19.n;
+            metal::float3 _e107 = airlight_basis_e1_(_e106);
+            a_19.a1_ = _e107;
         } else {
-            a_18.eu = s_35.light_axis;
-            a_18.ev = s_35.light_end;
-            metal::float3 _e109 = a_18.eu;
-            metal::float3 _e111 = a_18.ev;
-            metal::float3 _e113 = airlight_normalize(metal::cross(_e109, _e111));
-            a_18.n = _e113;
-            metal::float3 _e116 = a_18.eu;
-            metal::float3 _e117 = airlight_normalize(_e116);
-            a_18.a1_ = _e117;
-            metal::float3 _e119 = a_18.eu;
-            metal::float3 _e121 = a_18.ev;
-            metal::float3 diagonal = _e119 + _e121;
-            metal::float3 _e124 = a_18.c;
-            centre = _e124 + (0.5 * diagonal);
-            float _e128 = airlight_safe_length(diagonal);
-            metal::float3 _e130 = a_18.eu;
-            metal::float3 _e132 = a_18.ev;
-            float _e134 = airlight_safe_length(_e130 - _e132);
-            size = 0.5 * metal::max(_e128, _e134);
+            a_19.eu = s_36.light_axis;
+            a_19.ev = s_36.light_end;
+            metal::float3 _e114 = a_19.eu;
+            metal::float3 _e116 = a_19.ev;
+            metal::float3 _e118 = airlight_normalize(metal::cross(_e114, _e116));
+            a_19.n = _e118;
+            metal::float3 _e121 = a_19.eu;
+            metal::float3 _e122 = airlight_normalize(_e121);
+            a_19.a1_ = _e122;
+            metal::float3 _e124 = a_19.eu;
+            metal::float3 _e126 = a_19.ev;
+            metal::float3 diagonal = _e124 + _e126;
+            metal::float3 _e129 = a_19.c;
+            centre = _e129 + (0.5 * diagonal);
+            float _e133 = airlight_safe_length(diagonal);
+            metal::float3 _e135 = a_19.eu;
+            metal::float3 _e137 = a_19.ev;
+            float _e139 = airlight_safe_length(_e135 - _e137);
+            size = 0.5 * metal::max(_e133, _e139);
         }
-        metal::float3 _e140 = a_18.n;
-        metal::float3 _e142 = a_18.a1_;
-        a_18.a2_ = metal::cross(_e140, _e142);
-        metal::float3 _e146 = a_18.a1_;
-        metal::float3 _e149 = a_18.a2_;
-        metal::float3 _e152 = a_18.n;
-        a_18.dirs = metal::float3(metal::dot(_e146, _e45), metal::dot(_e149, _e45), metal::dot(_e152, _e45));
-        metal::float3 _e156 = a_18.c;
-        metal::float3 _e159 = a_18.n;
-        metal::float3 _e162 = a_18.n;
-        cut0_ = metal::dot(_e156 - o_6, _e159) / metal::dot(_e45, _e162);
+        metal::float3 _e145 = a_19.n;
+        metal::float3 _e147 = a_19.a1_;
+        a_19.a2_ = metal::cross(_e145, _e147);
+        metal::float3 _e151 = a_19.a1_;
+        metal::float3 _e154 = a_19.a2_;
+        metal::float3 _e157 = a_19.n;
+        a_19.dirs = metal::float3(metal::dot(_e151, _e45), metal::dot(_e154, _e45), metal::dot(_e157, _e45));
+        metal::float3 _e161 = a_19.c;
+        metal::float3 _e164 = a_19.n;
+        metal::float3 _e167 = a_19.n;
+        cut0_ = metal::dot(_e161 - o_7, _e164) / metal::dot(_e45, _e167);
         cut_count = 1u;
+        AirlightArea _e171 = a_19;
+        float _e172 = cut0_;
+        AirlightOutline _e175 = airlight_outline_at(s_36, _e171, o_7 + (_e172 * _e45));
+        metal::float2 _e176 = airlight_outline_distances(_e175);
+        distances = _e176;
+        metal::float3 _e178 = a_19.n;
+        front = (metal::dot(_e45, _e178) < 0.0) ? -1.0 : 1.0;
     }
-    float _e166 = size;
-    if (!((_e166 > 0.0))) {
-        a_18.outcome = 1u;
-        AirlightArea _e172 = a_18;
-        return _e172;
-    }
-    metal::float3 _e173 = centre;
-    metal::float3 to_centre = _e173 - o_6;
-    a_18.x_h = metal::dot(to_centre, _e45);
-    float _e178 = a_18.x_h;
-    float _e181 = airlight_safe_length(to_centre - (_e178 * _e45));
-    float _e184 = size;
     float _e185 = size;
-    a_18.h_eff = metal::sqrt((_e181 * _e181) + (_e184 * _e185));
-    t_end_1 = s_35.t_max;
+    if (!((_e185 > 0.0))) {
+        a_19.outcome = 1u;
+        AirlightArea _e191 = a_19;
+        return _e191;
+    }
+    metal::float3 _e192 = centre;
+    metal::float3 to_centre = _e192 - o_7;
+    a_19.x_h = metal::dot(to_centre, _e45);
+    float _e197 = a_19.x_h;
+    float _e200 = airlight_safe_length(to_centre - (_e197 * _e45));
+    float _e203 = size;
+    float _e204 = size;
+    a_19.h_eff = metal::sqrt((_e200 * _e200) + (_e203 * _e204));
+    t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
-    if (s_35.sigma_t > 0.0) {
-        metal::float3 _e195 = centre;
-        float _e199 = airlight_safe_length(_e195 - (o_6 + (t0_2 * _e45)));
-        float _e201 = size;
-        float reach_1 = ((t0_2 + _e199) + _e201) - (-15.942385 / s_35.sigma_t);
+    if (s_36.sigma_t > 0.0) {
+        metal::float3 _e214 = centre;
+        float _e218 = airlight_safe_length(_e214 - (o_7 + (t0_2 * _e45)));
+        float _e220 = size;
+        float reach_1 = ((t0_2 + _e218) + _e220) - (-15.942385 / s_36.sigma_t);
         if (!(infinite_6)) {
-            float _e210 = t_end_1;
-            local_173 = reach_1 < _e210;
+            float _e229 = t_end_1;
+            local_173 = reach_1 < _e229;
         } else {
             local_173 = true;
         }
-        bool _e213 = local_173;
-        if (_e213) {
+        bool _e232 = local_173;
+        if (_e232) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e215 = a_18;
-    float _e217 = airlight_area_theta(_e215, t0_2, false);
-    AirlightArea _e218 = a_18;
-    float _e219 = t_end_1;
-    bool _e220 = end_infinite;
-    float _e221 = airlight_area_theta(_e218, _e219, _e220);
-    float _e223 = a_18.x_h;
-    float _e225 = a_18.x_h;
-    float _e226 = cut0_;
-    uint _e227 = cut_count;
-    float _e232 = a_18.x_h;
-    float _e233 = cut1_;
-    uint _e234 = cut_count;
-    cuts_4 = airlight_type_17 {{_e223, (_e227 > 0u) ? _e226 : _e225, (_e234 > 1u) ? _e233 : _e232}};
-    uint2 loop_bound_32 = uint2(4294967295u);
-    bool loop_init_31 = true;
-    while(true) {
-        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
-        if (!loop_init_31) {
-            uint _e274 = i_27;
-            i_27 = _e274 + 1u;
+    AirlightArea _e234 = a_19;
+    float _e236 = airlight_area_theta(_e234, t0_2, false);
+    AirlightArea _e237 = a_19;
+    float _e238 = t_end_1;
+    bool _e239 = end_infinite;
+    float _e240 = airlight_area_theta(_e237, _e238, _e239);
+    float _e242 = a_19.x_h;
+    float _e244 = a_19.x_h;
+    float _e245 = cut0_;
+    uint _e246 = cut_count;
+    float _e251 = a_19.x_h;
+    float _e252 = cut1_;
+    uint _e253 = cut_count;
+    float _e258 = a_19.x_h;
+    cuts_4 = airlight_type_14 {{_e242, (_e246 > 0u) ? _e245 : _e244, (_e253 > 1u) ? _e252 : _e251, _e258}};
+    float _e265 = a_19.lobes.y;
+    if (_e265 > 0.0) {
+        float _e268 = scale_1;
+        float _e271 = a_19.lobes.y;
+        scale_1 = metal::min(_e268, _e271);
+    }
+    float _e275 = a_19.lobes.w;
+    if (_e275 > 0.0) {
+        float _e278 = scale_1;
+        float _e281 = a_19.lobes.w;
+        scale_1 = metal::min(_e278, _e281);
+    }
+    uint _e283 = cut_count;
+    if (_e283 == 1u) {
+        float _e288 = scale_1;
+        local_174 = _e288 < 1.0;
+    } else {
+        local_174 = false;
+    }
+    bool _e292 = local_174;
+    if (_e292) {
+        float _e295 = cut0_;
+        local_175 = _e295 >= t0_2;
+    } else {
+        local_175 = false;
+    }
+    bool _e298 = local_175;
+    if (_e298) {
+        bool _e301 = end_infinite;
+        if (!(_e301)) {
+            float _e305 = cut0_;
+            float _e306 = t_end_1;
+            local_177 = _e305 <= _e306;
+        } else {
+            local_177 = true;
         }
-        loop_init_31 = false;
-        uint _e242 = i_27;
-        if (_e242 < 3u) {
+        bool _e309 = local_177;
+        local_176 = _e309;
+    } else {
+        local_176 = false;
+    }
+    bool _e311 = local_176;
+    if (_e311) {
+        uint2 loop_bound_33 = uint2(4294967295u);
+        bool loop_init_32 = true;
+        while(true) {
+            if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+            loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+            if (!loop_init_32) {
+                uint _e336 = i_28;
+                i_28 = _e336 + 1u;
+            }
+            loop_init_32 = false;
+            uint _e314 = i_28;
+            if (_e314 < 2u) {
+            } else {
+                break;
+            }
+            {
+                uint _e318 = i_28;
+                float _e320 = distances[metal::min(unsigned(_e318), 1u)];
+                float _e322 = scale_1;
+                float reach_2 = (AIRLIGHT_CROSSING_REACH * _e320) / _e322;
+                float _e325 = a_19.h_eff;
+                if (reach_2 < _e325) {
+                    uint _e327 = i_28;
+                    float _e331 = cut0_;
+                    float _e332 = front;
+                    cuts_4.inner[metal::min(unsigned(_e327 + 2u), 3u)] = _e331 + (_e332 * reach_2);
+                }
+            }
+        }
+    }
+    uint2 loop_bound_34 = uint2(4294967295u);
+    bool loop_init_33 = true;
+    while(true) {
+        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+        if (!loop_init_33) {
+            uint _e372 = i_29;
+            i_29 = _e372 + 1u;
+        }
+        loop_init_33 = false;
+        uint _e340 = i_29;
+        if (_e340 < 4u) {
         } else {
             break;
         }
         {
-            uint _e245 = i_27;
-            float t_10 = cuts_4.inner[metal::min(unsigned(_e245), 2u)];
-            uint _e248 = i_27;
-            cuts_4.inner[metal::min(unsigned(_e248), 2u)] = _e217;
-            bool _e250 = airlight_is_finite(t_10);
-            if (_e250) {
-                local_174 = t_10 >= t0_2;
+            uint _e343 = i_29;
+            float t_10 = cuts_4.inner[metal::min(unsigned(_e343), 3u)];
+            uint _e346 = i_29;
+            cuts_4.inner[metal::min(unsigned(_e346), 3u)] = _e236;
+            bool _e348 = airlight_is_finite(t_10);
+            if (_e348) {
+                local_178 = t_10 >= t0_2;
             } else {
-                local_174 = false;
+                local_178 = false;
             }
-            bool _e255 = local_174;
-            if (_e255) {
-                bool _e258 = end_infinite;
-                if (!(_e258)) {
-                    float _e262 = t_end_1;
-                    local_176 = t_10 <= _e262;
+            bool _e353 = local_178;
+            if (_e353) {
+                bool _e356 = end_infinite;
+                if (!(_e356)) {
+                    float _e360 = t_end_1;
+                    local_180 = t_10 <= _e360;
                 } else {
-                    local_176 = true;
+                    local_180 = true;
                 }
-                bool _e265 = local_176;
-                local_175 = _e265;
+                bool _e363 = local_180;
+                local_179 = _e363;
             } else {
-                local_175 = false;
+                local_179 = false;
             }
-            bool _e267 = local_175;
-            if (_e267) {
-                uint _e268 = i_27;
-                AirlightArea _e270 = a_18;
-                float _e272 = airlight_area_theta(_e270, t_10, false);
-                cuts_4.inner[metal::min(unsigned(_e268), 2u)] = _e272;
+            bool _e365 = local_179;
+            if (_e365) {
+                uint _e366 = i_29;
+                AirlightArea _e368 = a_19;
+                float _e370 = airlight_area_theta(_e368, t_10, false);
+                cuts_4.inner[metal::min(unsigned(_e366), 3u)] = _e370;
             }
         }
     }
-    airlight_type_17 _e276 = cuts_4;
-    AirlightEdges _e277 = airlight_edges_between(_e217, _e221, _e276);
-    a_18.edges = _e277.at;
-    a_18.panels = _e277.panels;
-    AirlightArea _e282 = a_18;
-    return _e282;
+    airlight_type_14 _e374 = cuts_4;
+    AirlightEdges _e375 = airlight_edges_between(_e236, _e240, _e374);
+    a_19.edges = _e375.at;
+    a_19.panels = _e375.panels;
+    AirlightArea _e380 = a_19;
+    return _e380;
 }
 
 AirlightAbove airlight_above(
@@ -7518,8 +7687,8 @@ AirlightAbove airlight_above(
 }
 
 float airlight_flat_node(
-    AirlightScene s_36,
-    AirlightArea a_19,
+    AirlightScene s_37,
+    AirlightArea a_20,
     AirlightAbove above_1,
     metal::float2 e_3,
     float graded_1,
@@ -7529,169 +7698,169 @@ float airlight_flat_node(
     metal::float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_13 = (above_1.rho0_ * _e8.y) / _e8.x;
     float dr = above_1.rho0_ / (_e8.x * _e8.x);
-    metal::float2 p_4 = above_1.off + (r_13 * e_3);
+    metal::float2 p_5 = above_1.off + (r_13 * e_3);
     float z_19 = above_1.z;
-    float dist = metal::sqrt(((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y));
+    float dist = metal::sqrt(((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y));
     float inv_5 = 1.0 / dist;
     float cos = z_19 * inv_5;
-    float _e50 = airlight_area_phase(s_36, (((p_4.x * a_19.dirs[0]) + (p_4.y * a_19.dirs[1])) - (z_19 * a_19.dirs[2])) * inv_5);
-    float _e52 = airlight_emitted(s_36, cos);
-    return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_36.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_13) * dr;
+    float _e50 = airlight_area_phase(s_37, (((p_5.x * a_20.dirs[0]) + (p_5.y * a_20.dirs[1])) - (z_19 * a_20.dirs[2])) * inv_5);
+    float _e52 = airlight_emitted(s_37, cos);
+    return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_37.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_13) * dr;
 }
 
 float airlight_flat_radial(
-    AirlightScene s_37,
-    AirlightArea a_20,
+    AirlightScene s_38,
+    AirlightArea a_21,
     AirlightAbove above_2,
     metal::float2 e_4,
     float r_max
 ) {
     float sum_7 = 0.0;
     float _e7 = airlight_atan(r_max / above_2.rho0_);
-    metal::float2 _e8 = airlight_graded_range(s_37, _e7);
+    metal::float2 _e8 = airlight_graded_range(s_38, _e7);
     float graded_6 = _e8.y;
-    float c_16 = 0.5 * _e8.x;
+    float c_19 = 0.5 * _e8.x;
     float hw_2 = 0.5 * _e8.x;
     float _e18 = sum_7;
-    float _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.09501251 * hw_2));
+    float _e24 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.09501251 * hw_2));
     sum_7 = _e18 + ((0.1894506 * hw_2) * _e24);
     float _e27 = sum_7;
-    float _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.09501251 * hw_2));
+    float _e33 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.09501251 * hw_2));
     sum_7 = _e27 + ((0.1894506 * hw_2) * _e33);
     float _e36 = sum_7;
-    float _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.28160354 * hw_2));
+    float _e42 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.28160354 * hw_2));
     sum_7 = _e36 + ((0.18260342 * hw_2) * _e42);
     float _e45 = sum_7;
-    float _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.28160354 * hw_2));
+    float _e51 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.28160354 * hw_2));
     sum_7 = _e45 + ((0.18260342 * hw_2) * _e51);
     float _e54 = sum_7;
-    float _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.45801678 * hw_2));
+    float _e60 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.45801678 * hw_2));
     sum_7 = _e54 + ((0.16915652 * hw_2) * _e60);
     float _e63 = sum_7;
-    float _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.45801678 * hw_2));
+    float _e69 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.45801678 * hw_2));
     sum_7 = _e63 + ((0.16915652 * hw_2) * _e69);
     float _e72 = sum_7;
-    float _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.61787623 * hw_2));
+    float _e78 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.61787623 * hw_2));
     sum_7 = _e72 + ((0.14959599 * hw_2) * _e78);
     float _e81 = sum_7;
-    float _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.61787623 * hw_2));
+    float _e87 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.61787623 * hw_2));
     sum_7 = _e81 + ((0.14959599 * hw_2) * _e87);
     float _e90 = sum_7;
-    float _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.7554044 * hw_2));
+    float _e96 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.7554044 * hw_2));
     sum_7 = _e90 + ((0.12462897 * hw_2) * _e96);
     float _e99 = sum_7;
-    float _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.7554044 * hw_2));
+    float _e105 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.7554044 * hw_2));
     sum_7 = _e99 + ((0.12462897 * hw_2) * _e105);
     float _e108 = sum_7;
-    float _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.8656312 * hw_2));
+    float _e114 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.8656312 * hw_2));
     sum_7 = _e108 + ((0.09515851 * hw_2) * _e114);
     float _e117 = sum_7;
-    float _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.8656312 * hw_2));
+    float _e123 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.8656312 * hw_2));
     sum_7 = _e117 + ((0.09515851 * hw_2) * _e123);
     float _e126 = sum_7;
-    float _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.944575 * hw_2));
+    float _e132 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.944575 * hw_2));
     sum_7 = _e126 + ((0.062253524 * hw_2) * _e132);
     float _e135 = sum_7;
-    float _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.944575 * hw_2));
+    float _e141 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.944575 * hw_2));
     sum_7 = _e135 + ((0.062253524 * hw_2) * _e141);
     float _e144 = sum_7;
-    float _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 - (0.9894009 * hw_2));
+    float _e150 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 - (0.9894009 * hw_2));
     sum_7 = _e144 + ((0.02715246 * hw_2) * _e150);
     float _e153 = sum_7;
-    float _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, c_16 + (0.9894009 * hw_2));
+    float _e159 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, c_19 + (0.9894009 * hw_2));
     sum_7 = _e153 + ((0.02715246 * hw_2) * _e159);
     float _e162 = sum_7;
     return _e162;
 }
 
 metal::float3 airlight_outline_boundary(
-    AirlightOutline o,
+    AirlightOutline o_1,
     metal::float2 q_4
 ) {
     float best = AIRLIGHT_FLT_MAX;
-    metal::float2 nearest = {};
+    metal::float2 nearest_1 = {};
     bool inside = true;
-    uint i_28 = 0u;
-    bool local_177 = {};
-    if (o.radius > 0.0) {
-        metal::float2 qc = q_4 - o.corners.inner[0];
+    uint i_30 = 0u;
+    bool local_181 = {};
+    if (o_1.radius > 0.0) {
+        metal::float2 qc = q_4 - o_1.corners.inner[0];
         float dq = metal::sqrt((qc.x * qc.x) + (qc.y * qc.y));
-        return metal::float3(o.corners.inner[0] + ((qc * o.radius) / metal::float2(dq)), (dq <= o.radius) ? 1.0 : 0.0);
+        return metal::float3(o_1.corners.inner[0] + ((qc * o_1.radius) / metal::float2(dq)), (dq <= o_1.radius) ? 1.0 : 0.0);
     }
-    nearest = q_4;
-    uint2 loop_bound_33 = uint2(4294967295u);
-    bool loop_init_32 = true;
+    nearest_1 = q_4;
+    uint2 loop_bound_35 = uint2(4294967295u);
+    bool loop_init_34 = true;
     while(true) {
-        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
-        if (!loop_init_32) {
-            uint _e110 = i_28;
-            i_28 = _e110 + 1u;
+        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_34) {
+            uint _e110 = i_30;
+            i_30 = _e110 + 1u;
         }
-        loop_init_32 = false;
-        uint _e36 = i_28;
+        loop_init_34 = false;
+        uint _e36 = i_30;
         if (_e36 < 4u) {
         } else {
             break;
         }
         {
-            uint _e40 = i_28;
-            metal::float2 a_45 = o.corners.inner[metal::min(unsigned(_e40), 3u)];
-            uint _e43 = i_28;
-            metal::float2 e_15 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_45;
+            uint _e40 = i_30;
+            metal::float2 a_47 = o_1.corners.inner[metal::min(unsigned(_e40), 3u)];
+            uint _e43 = i_30;
+            metal::float2 e_16 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_47;
             bool _e50 = inside;
             if (_e50) {
-                local_177 = (((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_15.y) - ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_15.x)) <= 0.0;
+                local_181 = (((q_4.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_16.y) - ((q_4.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_16.x)) <= 0.0;
             } else {
-                local_177 = false;
+                local_181 = false;
             }
-            bool _e67 = local_177;
+            bool _e67 = local_181;
             inside = _e67;
-            float t_11 = metal::clamp((((q_4.x - o.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_15.x) + ((q_4.y - o.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0);
-            metal::float2 p_5 = a_45 + (t_11 * e_15);
-            float dd = ((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y));
+            float t_11 = metal::clamp((((q_4.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_16.x) + ((q_4.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y)), 0.0, 1.0);
+            metal::float2 p_6 = a_47 + (t_11 * e_16);
+            float dd = ((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y));
             float _e107 = best;
             if (dd < _e107) {
                 best = dd;
-                nearest = p_5;
+                nearest_1 = p_6;
             }
         }
     }
-    metal::float2 _e112 = nearest;
+    metal::float2 _e112 = nearest_1;
     bool _e113 = inside;
     return metal::float3(_e112, _e113 ? 1.0 : 0.0);
 }
 
 metal::float2 airlight_outline_nearest(
-    AirlightOutline o_1,
+    AirlightOutline o_2,
     metal::float2 q_5
 ) {
-    metal::float3 _e2 = airlight_outline_boundary(o_1, q_5);
+    metal::float3 _e2 = airlight_outline_boundary(o_2, q_5);
     return (_e2.z > 0.0) ? q_5 : _e2.xy;
 }
 
 AirlightFlatLobe airlight_flat_lobe(
-    AirlightArea a_21,
+    AirlightArea a_22,
     float z_11,
-    AirlightOutline o_2,
+    AirlightOutline o_3,
     metal::float2 centre_1,
     float size_1
 ) {
     uint j_5 = 0u;
-    bool local_178 = {};
-    bool local_179 = {};
-    bool local_180 = {};
+    bool local_182 = {};
+    bool local_183 = {};
+    bool local_184 = {};
     float _e10 = airlight_atan(size_1 / metal::sqrt(metal::dot(centre_1, centre_1) + (z_11 * z_11)));
-    uint2 loop_bound_34 = uint2(4294967295u);
-    bool loop_init_33 = true;
+    uint2 loop_bound_36 = uint2(4294967295u);
+    bool loop_init_35 = true;
     while(true) {
-        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-        if (!loop_init_33) {
+        if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (!loop_init_35) {
             uint _e80 = j_5;
             j_5 = _e80 + 1u;
         }
-        loop_init_33 = false;
+        loop_init_35 = false;
         uint _e13 = j_5;
         if (_e13 < 2u) {
         } else {
@@ -7699,36 +7868,36 @@ AirlightFlatLobe airlight_flat_lobe(
         }
         {
             uint _e20 = j_5;
-            metal::float2 lobe_4 = (_e20 == 1u) ? a_21.lobes.zw : a_21.lobes.xy;
-            metal::float3 p_6 = lobe_4.x * a_21.dirs;
+            metal::float2 lobe_4 = (_e20 == 1u) ? a_22.lobes.zw : a_22.lobes.xy;
+            metal::float3 p_7 = lobe_4.x * a_22.dirs;
             if (lobe_4.y > 0.0) {
-                local_178 = p_6.z < 0.0;
+                local_182 = p_7.z < 0.0;
             } else {
-                local_178 = false;
+                local_182 = false;
             }
-            bool _e36 = local_178;
+            bool _e36 = local_182;
             if (_e36) {
-                local_179 = lobe_4.y < (_e10 + _e10);
+                local_183 = lobe_4.y < (_e10 + _e10);
             } else {
-                local_179 = false;
+                local_183 = false;
             }
-            bool _e43 = local_179;
+            bool _e43 = local_183;
             if (_e43) {
-                float l_4 = z_11 / -(p_6.z);
-                metal::float2 q_13 = l_4 * p_6.xy;
-                metal::float2 _e49 = airlight_outline_nearest(o_2, q_13);
+                float l_4 = z_11 / -(p_7.z);
+                metal::float2 q_13 = l_4 * p_7.xy;
+                metal::float2 _e49 = airlight_outline_nearest(o_3, q_13);
                 metal::float3 to_near = metal::float3(_e49, -(z_11));
-                float cos_1 = metal::min(metal::dot(p_6, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
+                float cos_1 = metal::min(metal::dot(p_7, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
                 bool on_emitter = metal::length(_e49 - q_13) <= (0.0000019073486 * ((metal::length(q_13) + size_1) + z_11));
                 if (!(on_emitter)) {
                     float _e69 = airlight_acos(cos_1);
-                    local_180 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
+                    local_184 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
                 } else {
-                    local_180 = true;
+                    local_184 = true;
                 }
-                bool _e75 = local_180;
+                bool _e75 = local_184;
                 if (_e75) {
-                    return AirlightFlatLobe {p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter};
+                    return AirlightFlatLobe {p_7, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter};
                 }
             }
         }
@@ -7737,10 +7906,10 @@ AirlightFlatLobe airlight_flat_lobe(
 }
 
 metal::float2 airlight_radial_rule(
-    uint i_29
+    uint i_31
 ) {
     airlight_type_24 rule_4 = airlight_type_24 {{metal::float2(-0.09501251, 0.1894506), metal::float2(0.09501251, 0.1894506), metal::float2(-0.28160354, 0.18260342), metal::float2(0.28160354, 0.18260342), metal::float2(-0.45801678, 0.16915652), metal::float2(0.45801678, 0.16915652), metal::float2(-0.61787623, 0.14959599), metal::float2(0.61787623, 0.14959599), metal::float2(-0.7554044, 0.12462897), metal::float2(0.7554044, 0.12462897), metal::float2(-0.8656312, 0.09515851), metal::float2(0.8656312, 0.09515851), metal::float2(-0.944575, 0.062253524), metal::float2(0.944575, 0.062253524), metal::float2(-0.9894009, 0.02715246), metal::float2(0.9894009, 0.02715246)}};
-    return rule_4.inner[metal::min(unsigned(i_29), 15u)];
+    return rule_4.inner[metal::min(unsigned(i_31), 15u)];
 }
 
 metal::float4 airlight_edge_at(
@@ -7757,13 +7926,13 @@ metal::float4 airlight_edge_at(
 
 metal::float2 airlight_clip(
     metal::float2 chord,
-    metal::float2 a_22,
+    metal::float2 a_23,
     metal::float2 b_13,
     metal::float2 q_6,
     metal::float2 e_5
 ) {
-    metal::float2 m_13 = metal::float2(b_13.y - a_22.y, a_22.x - b_13.x);
-    float num = ((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y);
+    metal::float2 m_13 = metal::float2(b_13.y - a_23.y, a_23.x - b_13.x);
+    float num = ((q_6.x - a_23.x) * m_13.x) + ((q_6.y - a_23.y) * m_13.y);
     float den = (e_5.x * m_13.x) + (e_5.y * m_13.y);
     if (den > 0.0) {
         return metal::float2(chord.x, metal::min(chord.y, -(num) / den));
@@ -7778,24 +7947,24 @@ metal::float2 airlight_clip(
 }
 
 metal::float2 airlight_outline_chord(
-    AirlightOutline o_3,
+    AirlightOutline o_4,
     metal::float2 q_7,
     metal::float2 e_6
 ) {
     metal::float2 chord_1 = metal::float2(0.0, 340282350000000000000000000000000000000.0);
-    if (o_3.radius > 0.0) {
-        metal::float2 qc_1 = q_7 - o_3.corners.inner[0];
-        float a_46 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
+    if (o_4.radius > 0.0) {
+        metal::float2 qc_1 = q_7 - o_4.corners.inner[0];
+        float a_48 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
         float b_23 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
         float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
-        float k_13 = (dq_1 - o_3.radius) * (dq_1 + o_3.radius);
-        float disc_3 = (b_23 * b_23) - (a_46 * k_13);
+        float k_13 = (dq_1 - o_4.radius) * (dq_1 + o_4.radius);
+        float disc_3 = (b_23 * b_23) - (a_48 * k_13);
         if (!((disc_3 > 0.0))) {
             return metal::float2(0.0);
         }
         float root_3 = metal::sqrt(disc_3);
         float t_12 = -(b_23) - (((as_type<uint>(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3);
-        float r1_2 = t_12 / a_46;
+        float r1_2 = t_12 / a_48;
         float r2_4 = k_13 / t_12;
         float hi_8 = metal::max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
@@ -7804,25 +7973,25 @@ metal::float2 airlight_outline_chord(
         return metal::float2(metal::max(metal::min(r1_2, r2_4), 0.0), hi_8);
     }
     metal::float2 _e70 = chord_1;
-    metal::float2 _e75 = airlight_clip(_e70, o_3.corners.inner[0], o_3.corners.inner[1], q_7, e_6);
+    metal::float2 _e75 = airlight_clip(_e70, o_4.corners.inner[0], o_4.corners.inner[1], q_7, e_6);
     chord_1 = _e75;
     metal::float2 _e76 = chord_1;
-    metal::float2 _e81 = airlight_clip(_e76, o_3.corners.inner[1], o_3.corners.inner[2], q_7, e_6);
+    metal::float2 _e81 = airlight_clip(_e76, o_4.corners.inner[1], o_4.corners.inner[2], q_7, e_6);
     chord_1 = _e81;
     metal::float2 _e82 = chord_1;
-    metal::float2 _e87 = airlight_clip(_e82, o_3.corners.inner[2], o_3.corners.inner[3], q_7, e_6);
+    metal::float2 _e87 = airlight_clip(_e82, o_4.corners.inner[2], o_4.corners.inner[3], q_7, e_6);
     chord_1 = _e87;
     metal::float2 _e88 = chord_1;
-    metal::float2 _e93 = airlight_clip(_e88, o_3.corners.inner[3], o_3.corners.inner[0], q_7, e_6);
+    metal::float2 _e93 = airlight_clip(_e88, o_4.corners.inner[3], o_4.corners.inner[0], q_7, e_6);
     return _e93;
 }
 
 metal::float2 airlight_graded_from(
-    float scale_1,
+    float scale_2,
     float start_1,
     float to
 ) {
-    float graded_7 = metal::max(scale_1, start_1);
+    float graded_7 = metal::max(scale_2, start_1);
     float _e6 = airlight_atan((to - start_1) / graded_7);
     return metal::float2(graded_7, _e6);
 }
@@ -7838,7 +8007,7 @@ metal::float3 airlight_graded_from_node(
 }
 
 float airlight_flat_lobe_node(
-    AirlightScene s_38,
+    AirlightScene s_39,
     float z_12,
     AirlightFlatLobe lobe_1,
     float k_7,
@@ -7847,19 +8016,19 @@ float airlight_flat_lobe_node(
     float g_27
 ) {
     metal::float3 _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
-    float c_17 = -(lobe_1.p[2]) * (_e7.x - (k_7 * _e7.y));
-    if (!((c_17 > 0.0))) {
+    float c_20 = -(lobe_1.p[2]) * (_e7.x - (k_7 * _e7.y));
+    if (!((c_20 > 0.0))) {
         return 0.0;
     }
-    float _e20 = airlight_emitted(s_38, c_17);
-    float _e32 = airlight_area_phase(s_38, lobe_1.sign * _e7.x);
-    return (((_e20 * metal::exp(metal::min((-(s_38.sigma_t) * z_12) / c_17, 0.0))) * _e32) * _e7.y) * _e7.z;
+    float _e20 = airlight_emitted(s_39, c_20);
+    float _e32 = airlight_area_phase(s_39, lobe_1.sign * _e7.x);
+    return (((_e20 * metal::exp(metal::min((-(s_39.sigma_t) * z_12) / c_20, 0.0))) * _e32) * _e7.y) * _e7.z;
 }
 
 float airlight_flat_lobe_along(
-    AirlightScene s_39,
+    AirlightScene s_40,
     float z_13,
-    AirlightOutline o_4,
+    AirlightOutline o_5,
     AirlightFlatLobe lobe_2,
     metal::float3 u_4,
     metal::float3 v_6,
@@ -7868,7 +8037,7 @@ float airlight_flat_lobe_along(
     float sum_8 = 0.0;
     metal::float3 w_9 = (cs_1.x * u_4) + (cs_1.y * v_6);
     float k_14 = w_9.z / -(lobe_2.p[2]);
-    metal::float2 _e23 = airlight_outline_chord(o_4, lobe_2.q, w_9.xy + (k_14 * metal::float3(lobe_2.p).xy));
+    metal::float2 _e23 = airlight_outline_chord(o_5, lobe_2.q, w_9.xy + (k_14 * metal::float3(lobe_2.p).xy));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
@@ -7876,55 +8045,55 @@ float airlight_flat_lobe_along(
     float _e41 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_14 * _e23.y));
     metal::float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
-    float c_18 = 0.5 * _e42.y;
+    float c_21 = 0.5 * _e42.y;
     float hw_3 = 0.5 * _e42.y;
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.09501251 * hw_3));
+    float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.09501251 * hw_3));
     sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.09501251 * hw_3));
+    float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.09501251 * hw_3));
     sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.28160354 * hw_3));
+    float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.28160354 * hw_3));
     sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.28160354 * hw_3));
+    float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.28160354 * hw_3));
     sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.45801678 * hw_3));
+    float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.45801678 * hw_3));
     sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.45801678 * hw_3));
+    float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.45801678 * hw_3));
     sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.61787623 * hw_3));
+    float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.61787623 * hw_3));
     sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.61787623 * hw_3));
+    float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.61787623 * hw_3));
     sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.7554044 * hw_3));
+    float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.7554044 * hw_3));
     sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.7554044 * hw_3));
+    float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.7554044 * hw_3));
     sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.8656312 * hw_3));
+    float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.8656312 * hw_3));
     sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.8656312 * hw_3));
+    float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.8656312 * hw_3));
     sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.944575 * hw_3));
+    float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.944575 * hw_3));
     sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.944575 * hw_3));
+    float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.944575 * hw_3));
     sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 - (0.9894009 * hw_3));
+    float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.9894009 * hw_3));
     sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, c_18 + (0.9894009 * hw_3));
+    float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.9894009 * hw_3));
     sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
     float _e196 = sum_8;
     return _e196;
@@ -7941,32 +8110,32 @@ float airlight_lobe_azimuth(
 }
 
 float airlight_wrap_turn(
-    float x_22
+    float x_23
 ) {
-    return x_22 - (6.2831855 * metal::rint(x_22 / 6.2831855));
+    return x_23 - (6.2831855 * metal::rint(x_23 / 6.2831855));
 }
 
 metal::float2 airlight_cos_sin_turns(
-    float x_23
+    float x_24
 ) {
-    float _e1 = airlight_wrap_turn(x_23);
+    float _e1 = airlight_wrap_turn(x_24);
     metal::float2 _e3 = airlight_cos_sin_half_turn(metal::abs(_e1));
     return metal::float2(_e3.x, (_e1 < 0.0) ? -(_e3.y) : _e3.y);
 }
 
 AirlightEdgeRule airlight_edge_rule(
-    metal::float2 a_23,
+    metal::float2 a_24,
     metal::float2 b_14,
     float width_1
 ) {
-    metal::float2 e_16 = b_14 - a_23;
-    float el = metal::sqrt((e_16.x * e_16.x) + (e_16.y * e_16.y));
-    metal::float2 t_13 = e_16 / metal::float2(el);
-    float h_9 = ((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el;
-    float reach_2 = metal::sqrt((h_9 * h_9) + (width_1 * width_1));
-    float _e27 = airlight_atan2_(metal::dot(a_23, t_13), reach_2);
-    float _e29 = airlight_atan2_(metal::dot(b_14, t_13), reach_2);
-    return AirlightEdgeRule {h_9, {}, t_13, reach_2, _e27, _e29};
+    metal::float2 e_17 = b_14 - a_24;
+    float el = metal::sqrt((e_17.x * e_17.x) + (e_17.y * e_17.y));
+    metal::float2 t_13 = e_17 / metal::float2(el);
+    float h_9 = ((a_24.x * b_14.y) - (a_24.y * b_14.x)) / el;
+    float reach_3 = metal::sqrt((h_9 * h_9) + (width_1 * width_1));
+    float _e27 = airlight_atan2_(metal::dot(a_24, t_13), reach_3);
+    float _e29 = airlight_atan2_(metal::dot(b_14, t_13), reach_3);
+    return AirlightEdgeRule {h_9, {}, t_13, reach_3, _e27, _e29};
 }
 
 metal::float4 airlight_edge_node(
@@ -7980,10 +8149,10 @@ metal::float4 airlight_edge_node(
 }
 
 metal::float4 airlight_sort4_(
-    metal::float4 x_24
+    metal::float4 x_25
 ) {
-    metal::float4 a_47 = metal::float4(metal::min(x_24.x, x_24.y), metal::max(x_24.x, x_24.y), metal::min(x_24.z, x_24.w), metal::max(x_24.z, x_24.w));
-    metal::float4 b_24 = metal::float4(metal::min(a_47.x, a_47.z), metal::min(a_47.y, a_47.w), metal::max(a_47.x, a_47.z), metal::max(a_47.y, a_47.w));
+    metal::float4 a_49 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
+    metal::float4 b_24 = metal::float4(metal::min(a_49.x, a_49.z), metal::min(a_49.y, a_49.w), metal::max(a_49.x, a_49.z), metal::max(a_49.y, a_49.w));
     return metal::float4(b_24.x, metal::min(b_24.y, b_24.z), metal::max(b_24.y, b_24.z), b_24.w);
 }
 
@@ -7991,32 +8160,32 @@ AirlightChordEdges airlight_chord_edges(
     airlight_type_8 y_6,
     metal::float2 e_8
 ) {
-    float nearest_1 = AIRLIGHT_FLT_MAX;
+    float nearest_2 = AIRLIGHT_FLT_MAX;
     float farthest = 0.0;
     AirlightChordEdges edges_1 = AirlightChordEdges {metal::float2(0.0), metal::float2(0.0), 0.0};
-    uint i_30 = 0u;
-    bool local_181 = {};
-    bool local_182 = {};
-    uint2 loop_bound_35 = uint2(4294967295u);
-    bool loop_init_34 = true;
+    uint i_32 = 0u;
+    bool local_185 = {};
+    bool local_186 = {};
+    uint2 loop_bound_37 = uint2(4294967295u);
+    bool loop_init_36 = true;
     while(true) {
-        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-        if (!loop_init_34) {
-            uint _e88 = i_30;
-            i_30 = _e88 + 1u;
+        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+        if (!loop_init_36) {
+            uint _e88 = i_32;
+            i_32 = _e88 + 1u;
         }
-        loop_init_34 = false;
-        uint _e15 = i_30;
+        loop_init_36 = false;
+        uint _e15 = i_32;
         if (_e15 < 4u) {
         } else {
             break;
         }
         {
-            uint _e18 = i_30;
-            metal::float2 a_48 = y_6.inner[metal::min(unsigned(_e18), 3u)];
-            uint _e20 = i_30;
-            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_48;
+            uint _e18 = i_32;
+            metal::float2 a_50 = y_6.inner[metal::min(unsigned(_e18), 3u)];
+            uint _e20 = i_32;
+            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_50;
             float den_1 = (e_8.x * d_5.y) - (e_8.y * d_5.x);
             if (den_1 == 0.0) {
                 continue;
@@ -8024,24 +8193,24 @@ AirlightChordEdges airlight_chord_edges(
             float r_15 = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * d_5.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * d_5.x)) / den_1;
             float along = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * e_8.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * e_8.x)) / den_1;
             if (r_15 > 0.0) {
-                local_181 = along >= 0.0;
+                local_185 = along >= 0.0;
             } else {
-                local_181 = false;
+                local_185 = false;
             }
-            bool _e59 = local_181;
+            bool _e59 = local_185;
             if (_e59) {
-                local_182 = along <= 1.0;
+                local_186 = along <= 1.0;
             } else {
-                local_182 = false;
+                local_186 = false;
             }
-            bool _e65 = local_182;
+            bool _e65 = local_186;
             if (_e65) {
                 metal::float2 n_7 = metal::float2(d_5.y, -(d_5.x)) / metal::float2(metal::sqrt(metal::dot(d_5, d_5)));
-                float h_10 = metal::dot(n_7, a_48);
+                float h_10 = metal::dot(n_7, a_50);
                 metal::float2 outward = (h_10 < 0.0) ? -(n_7) : n_7;
-                float _e79 = nearest_1;
+                float _e79 = nearest_2;
                 if (r_15 < _e79) {
-                    nearest_1 = r_15;
+                    nearest_2 = r_15;
                     edges_1.entry = outward;
                 }
                 float _e82 = farthest;
@@ -8075,29 +8244,29 @@ float airlight_mercator(
 }
 
 float airlight_flat_about_lobe(
-    AirlightScene s_40,
+    AirlightScene s_41,
     float z_14,
-    AirlightOutline o_5,
+    AirlightOutline o_6,
     AirlightFlatLobe lobe_3
 ) {
     float sum_9 = 0.0;
     metal::float2 m_4 = metal::float2(1.0, 0.0);
     metal::float2 t_4 = {};
     uint j_7 = 0u;
-    uint i_31 = 0u;
-    uint i_32 = 0u;
-    metal::float4 area = metal::float4(0.0);
     uint i_33 = 0u;
     uint i_34 = 0u;
+    metal::float4 area = metal::float4(0.0);
+    uint i_35 = 0u;
+    uint i_36 = 0u;
     metal::float2 ya = {};
     metal::float2 yb = {};
     uint j_8 = {};
-    uint i_35 = 0u;
+    uint i_37 = 0u;
     uint j_9 = {};
     float merc_first = {};
     float merc_last = {};
-    bool local_183 = {};
-    float a_24 = {};
+    bool local_187 = {};
+    float a_25 = {};
     float b_15 = {};
     uint j_10 = {};
     uint k_9 = {};
@@ -8105,15 +8274,15 @@ float airlight_flat_about_lobe(
     metal::float3 _e5 = airlight_basis_e1_(lobe_3.p);
     metal::float3 v_9 = metal::cross(lobe_3.p, _e5);
     metal::float2 q_14 = lobe_3.q;
-    if (o_5.radius > 0.0) {
+    if (o_6.radius > 0.0) {
         if (lobe_3.on_emitter) {
-            metal::float2 dq_2 = q_14 - o_5.corners.inner[0];
+            metal::float2 dq_2 = q_14 - o_6.corners.inner[0];
             float d_6 = metal::sqrt(metal::dot(dq_2, dq_2));
             if (d_6 > 0.0) {
                 m_4 = dq_2 / metal::float2(d_6);
             }
             metal::float2 _e31 = m_4;
-            metal::float2 rim_e = (o_5.corners.inner[0] + (o_5.radius * _e31)) - q_14;
+            metal::float2 rim_e = (o_6.corners.inner[0] + (o_6.radius * _e31)) - q_14;
             metal::float2 rim = metal::float2(metal::dot(rim_e, _e5.xy), metal::dot(rim_e, v_9.xy));
             float _e41 = m_4.y;
             float _e46 = m_4.x;
@@ -8134,20 +8303,20 @@ float airlight_flat_about_lobe(
             float _e87 = t_4.y;
             float _e91 = t_4.x;
             float h_11 = (_e87 * rim.x) - (_e91 * rim.y);
-            float half_chord = tl * metal::sqrt(metal::max((o_5.radius - d_6) * (o_5.radius + d_6), 0.0));
+            float half_chord = tl * metal::sqrt(metal::max((o_6.radius - d_6) * (o_6.radius + d_6), 0.0));
             float width_5 = metal::min(lobe_3.l * lobe_3.scale, half_chord);
             metal::float2 _e108 = t_4;
             AirlightEdgeRule rule_5 = AirlightEdgeRule {h_11, {}, _e108, metal::sqrt((h_11 * h_11) + (width_5 * width_5)), -1.5707964, 1.5707964};
-            uint2 loop_bound_36 = uint2(4294967295u);
-            bool loop_init_35 = true;
+            uint2 loop_bound_38 = uint2(4294967295u);
+            bool loop_init_37 = true;
             while(true) {
-                if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-                loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                if (!loop_init_37) {
                     uint _e143 = j_7;
                     j_7 = _e143 + 1u;
                 }
-                loop_init_35 = false;
+                loop_init_37 = false;
                 uint _e118 = j_7;
                 if (_e118 < 16u) {
                 } else {
@@ -8161,44 +8330,44 @@ float airlight_flat_about_lobe(
                     metal::float2 _e125 = airlight_radial_rule(_e124);
                     metal::float4 _e129 = airlight_edge_at(rule_5, 1.5707964 * _e125.x);
                     float _e130 = sum_9;
-                    float _e139 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e129.xy);
+                    float _e139 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e129.xy);
                     sum_9 = _e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139);
                 }
             }
             float _e146 = t_4.y;
             float _e148 = t_4.x;
             metal::float2 n_8 = metal::float2(_e146, -(_e148));
-            uint2 loop_bound_37 = uint2(4294967295u);
-            bool loop_init_36 = true;
+            uint2 loop_bound_39 = uint2(4294967295u);
+            bool loop_init_38 = true;
             while(true) {
-                if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-                if (!loop_init_36) {
-                    uint _e172 = i_31;
-                    i_31 = _e172 + 1u;
+                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (!loop_init_38) {
+                    uint _e172 = i_33;
+                    i_33 = _e172 + 1u;
                 }
-                loop_init_36 = false;
-                uint _e153 = i_31;
+                loop_init_38 = false;
+                uint _e153 = i_33;
                 if (_e153 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = i_31;
+                    uint _e157 = i_33;
                     metal::float3 _e158 = airlight_azimuths(false, _e157);
                     float _e159 = sum_9;
                     metal::float2 _e163 = t_4;
-                    float _e168 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
+                    float _e168 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
                     sum_9 = _e159 + (_e158.z * _e168);
                 }
             }
             float _e174 = sum_9;
             return _e174;
         }
-        metal::float2 d_7 = o_5.corners.inner[0] - q_14;
+        metal::float2 d_7 = o_6.corners.inner[0] - q_14;
         float dq_3 = metal::sqrt((d_7.x * d_7.x) + (d_7.y * d_7.y));
-        float sb_1 = o_5.radius / dq_3;
-        float cb = metal::sqrt((dq_3 - o_5.radius) * (dq_3 + o_5.radius)) / dq_3;
+        float sb_1 = o_6.radius / dq_3;
+        float cb = metal::sqrt((dq_3 - o_6.radius) * (dq_3 + o_6.radius)) / dq_3;
         float _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
         float _e207 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_7.x * cb) - (d_7.y * sb_1), (d_7.y * cb) + (d_7.x * sb_1)));
         float _e209 = airlight_wrap_turn(_e207 - _e195);
@@ -8206,56 +8375,56 @@ float airlight_flat_about_lobe(
         float _e223 = airlight_wrap_turn(_e221 - _e195);
         float centre_2 = _e195 + ((_e209 + _e223) * 0.5);
         float half_19 = metal::abs(_e209 - _e223) * 0.5;
-        uint2 loop_bound_38 = uint2(4294967295u);
-        bool loop_init_37 = true;
+        uint2 loop_bound_40 = uint2(4294967295u);
+        bool loop_init_39 = true;
         while(true) {
-            if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-            loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-            if (!loop_init_37) {
-                uint _e253 = i_32;
-                i_32 = _e253 + 1u;
+            if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+            loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+            if (!loop_init_39) {
+                uint _e253 = i_34;
+                i_34 = _e253 + 1u;
             }
-            loop_init_37 = false;
-            uint _e234 = i_32;
+            loop_init_39 = false;
+            uint _e234 = i_34;
             if (_e234 < 32u) {
             } else {
                 break;
             }
             {
-                uint _e238 = i_32;
+                uint _e238 = i_34;
                 metal::float3 _e239 = airlight_azimuths(false, _e238);
                 float _e240 = sum_9;
                 metal::float2 _e248 = airlight_cos_sin_turns(centre_2 + (half_19 * _e239.y));
-                float _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e248);
+                float _e249 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e248);
                 sum_9 = _e240 + (((_e239.z * half_19) * _e239.x) * _e249);
             }
         }
         float _e255 = sum_9;
         return _e255;
     }
-    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_5.corners.inner[0] - q_14, _e5.xy), metal::dot(o_5.corners.inner[0] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[1] - q_14, _e5.xy), metal::dot(o_5.corners.inner[1] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[2] - q_14, _e5.xy), metal::dot(o_5.corners.inner[2] - q_14, v_9.xy)), metal::float2(metal::dot(o_5.corners.inner[3] - q_14, _e5.xy), metal::dot(o_5.corners.inner[3] - q_14, v_9.xy))}};
+    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_6.corners.inner[0] - q_14, _e5.xy), metal::dot(o_6.corners.inner[0] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[1] - q_14, _e5.xy), metal::dot(o_6.corners.inner[1] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[2] - q_14, _e5.xy), metal::dot(o_6.corners.inner[2] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[3] - q_14, _e5.xy), metal::dot(o_6.corners.inner[3] - q_14, v_9.xy))}};
     if (lobe_3.on_emitter) {
-        uint2 loop_bound_39 = uint2(4294967295u);
-        bool loop_init_38 = true;
+        uint2 loop_bound_41 = uint2(4294967295u);
+        bool loop_init_40 = true;
         while(true) {
-            if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-            loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-            if (!loop_init_38) {
-                uint _e330 = i_33;
-                i_33 = _e330 + 1u;
+            if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+            loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+            if (!loop_init_40) {
+                uint _e330 = i_35;
+                i_35 = _e330 + 1u;
             }
-            loop_init_38 = false;
-            uint _e307 = i_33;
+            loop_init_40 = false;
+            uint _e307 = i_35;
             if (_e307 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e310 = i_33;
+                uint _e310 = i_35;
                 metal::float2 b_25 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
-                uint _e316 = i_33;
-                uint _e318 = i_33;
-                uint _e323 = i_33;
+                uint _e316 = i_35;
+                uint _e318 = i_35;
+                uint _e323 = i_35;
                 area[metal::min(unsigned(_e316), 3u)] = (y_14.inner[metal::min(unsigned(_e318), 3u)].x * y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)].y) - (y_14.inner[metal::min(unsigned(_e323), 3u)].y * y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)].x);
             }
         }
@@ -8264,51 +8433,51 @@ float airlight_flat_about_lobe(
         float _e338 = area.z;
         float _e341 = area.w;
         float turn = ((_e333 + _e335) + _e338) + _e341;
-        uint2 loop_bound_40 = uint2(4294967295u);
-        bool loop_init_39 = true;
+        uint2 loop_bound_42 = uint2(4294967295u);
+        bool loop_init_41 = true;
         while(true) {
-            if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-            loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-            if (!loop_init_39) {
-                uint _e398 = i_34;
-                i_34 = _e398 + 1u;
+            if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+            loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+            if (!loop_init_41) {
+                uint _e398 = i_36;
+                i_36 = _e398 + 1u;
             }
-            loop_init_39 = false;
-            uint _e345 = i_34;
+            loop_init_41 = false;
+            uint _e345 = i_36;
             if (_e345 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e348 = i_34;
+                uint _e348 = i_36;
                 float _e350 = area[metal::min(unsigned(_e348), 3u)];
                 if (!(((_e350 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e355 = i_34;
+                uint _e355 = i_36;
                 ya = y_14.inner[metal::min(unsigned(_e355), 3u)];
-                uint _e358 = i_34;
+                uint _e358 = i_36;
                 yb = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e358 + 1u, 4u)), 3u)];
                 if (turn < 0.0) {
-                    uint _e367 = i_34;
+                    uint _e367 = i_36;
                     ya = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e367 + 1u, 4u)), 3u)];
-                    uint _e373 = i_34;
+                    uint _e373 = i_36;
                     yb = y_14.inner[metal::min(unsigned(_e373), 3u)];
                 }
                 metal::float2 _e375 = ya;
                 metal::float2 _e376 = yb;
                 AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, lobe_3.l * lobe_3.scale);
                 j_8 = 0u;
-                uint2 loop_bound_41 = uint2(4294967295u);
-                bool loop_init_40 = true;
+                uint2 loop_bound_43 = uint2(4294967295u);
+                bool loop_init_42 = true;
                 while(true) {
-                    if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-                    loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                    if (!loop_init_40) {
+                    if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+                    loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                    if (!loop_init_42) {
                         uint _e395 = j_8;
                         j_8 = _e395 + 1u;
                     }
-                    loop_init_40 = false;
+                    loop_init_42 = false;
                     uint _e383 = j_8;
                     if (_e383 < 12u) {
                     } else {
@@ -8318,7 +8487,7 @@ float airlight_flat_about_lobe(
                         uint _e386 = j_8;
                         metal::float4 _e387 = airlight_edge_node(_e380, _e386);
                         float _e388 = sum_9;
-                        float _e391 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e387.xy);
+                        float _e391 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e387.xy);
                         sum_9 = _e388 + (_e387.w * _e391);
                     }
                 }
@@ -8327,53 +8496,53 @@ float airlight_flat_about_lobe(
         float _e400 = sum_9;
         return _e400;
     }
-    float _e409 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_5.corners.inner[0] + o_5.corners.inner[2])) - q_14);
-    float _e413 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[0] - q_14);
+    float _e409 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_6.corners.inner[0] + o_6.corners.inner[2])) - q_14);
+    float _e413 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[0] - q_14);
     float _e415 = airlight_wrap_turn(_e413 - _e409);
-    float _e419 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[1] - q_14);
+    float _e419 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[1] - q_14);
     float _e421 = airlight_wrap_turn(_e419 - _e409);
-    float _e425 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[2] - q_14);
+    float _e425 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[2] - q_14);
     float _e427 = airlight_wrap_turn(_e425 - _e409);
-    float _e431 = airlight_lobe_azimuth(_e5, v_9, o_5.corners.inner[3] - q_14);
+    float _e431 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[3] - q_14);
     float _e433 = airlight_wrap_turn(_e431 - _e409);
     metal::float4 _e435 = airlight_sort4_(metal::float4(_e415, _e421, _e427, _e433));
-    uint2 loop_bound_42 = uint2(4294967295u);
-    bool loop_init_41 = true;
+    uint2 loop_bound_44 = uint2(4294967295u);
+    bool loop_init_43 = true;
     while(true) {
-        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_41) {
-            uint _e639 = i_35;
-            i_35 = _e639 + 1u;
+        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_43) {
+            uint _e639 = i_37;
+            i_37 = _e639 + 1u;
         }
-        loop_init_41 = false;
-        uint _e438 = i_35;
+        loop_init_43 = false;
+        uint _e438 = i_37;
         if (_e438 < 3u) {
         } else {
             break;
         }
         {
-            uint _e441 = i_35;
+            uint _e441 = i_37;
             float first_2 = _e409 + _e435[metal::min(unsigned(_e441), 3u)];
-            uint _e444 = i_35;
+            uint _e444 = i_37;
             float last_1 = _e409 + _e435[metal::min(unsigned(_e444 + 1u), 3u)];
             metal::float2 _e452 = airlight_cos_sin_turns(0.5 * (first_2 + last_1));
             AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
             metal::float2 n_9 = _e453.entry;
             if (metal::all(n_9 == metal::float2(0.0))) {
-                float c_19 = (first_2 + last_1) * 0.5;
+                float c_22 = (first_2 + last_1) * 0.5;
                 float hw_5 = (last_1 - first_2) * 0.5;
                 j_9 = 0u;
-                uint2 loop_bound_43 = uint2(4294967295u);
-                bool loop_init_42 = true;
+                uint2 loop_bound_45 = uint2(4294967295u);
+                bool loop_init_44 = true;
                 while(true) {
-                    if (metal::all(loop_bound_43 == uint2(0u))) { break; }
-                    loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                    if (!loop_init_42) {
+                    if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+                    loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                    if (!loop_init_44) {
                         uint _e483 = j_9;
                         j_9 = _e483 + 1u;
                     }
-                    loop_init_42 = false;
+                    loop_init_44 = false;
                     uint _e467 = j_9;
                     if (_e467 < 12u) {
                     } else {
@@ -8383,8 +8552,8 @@ float airlight_flat_about_lobe(
                         uint _e470 = j_9;
                         metal::float2 _e471 = airlight_triangle_rule(_e470);
                         float _e472 = sum_9;
-                        metal::float2 _e478 = airlight_cos_sin_turns(c_19 + (hw_5 * _e471.x));
-                        float _e479 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e478);
+                        metal::float2 _e478 = airlight_cos_sin_turns(c_22 + (hw_5 * _e471.x));
+                        float _e479 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e478);
                         sum_9 = _e472 + ((_e471.y * hw_5) * _e479);
                     }
                 }
@@ -8394,44 +8563,44 @@ float airlight_flat_about_lobe(
             merc_last = last_1;
             float exit_h = _e453.exit_h;
             if (exit_h > 0.0) {
-                local_183 = exit_h < (lobe_3.l * lobe_3.scale);
+                local_187 = exit_h < (lobe_3.l * lobe_3.scale);
             } else {
-                local_183 = false;
+                local_187 = false;
             }
-            bool _e497 = local_183;
+            bool _e497 = local_187;
             if (_e497) {
                 float half_20 = 0.5 * (first_2 + last_1);
-                a_24 = first_2;
+                a_25 = first_2;
                 b_15 = half_20;
                 metal::float2 _e503 = airlight_cos_sin_turns(first_2);
                 metal::float2 _e506 = airlight_cos_sin_turns(last_1);
                 if (metal::dot(_e503, _e453.exit) < metal::dot(_e506, _e453.exit)) {
                     merc_first = half_20;
                 } else {
-                    a_24 = half_20;
+                    a_25 = half_20;
                     b_15 = last_1;
                     merc_last = half_20;
                 }
                 metal::float2 t2_ = metal::float2(-(_e453.exit.y), _e453.exit.x);
-                float reach_3 = metal::sqrt((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale));
-                float _e526 = a_24;
+                float reach_4 = metal::sqrt((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale));
+                float _e526 = a_25;
                 metal::float2 _e527 = airlight_cos_sin_turns(_e526);
                 float _e528 = b_15;
                 metal::float2 _e529 = airlight_cos_sin_turns(_e528);
-                float _e537 = airlight_atan2_(metal::dot(_e527, t2_) * exit_h, metal::max(metal::dot(_e527, _e453.exit), 0.0) * reach_3);
-                float _e545 = airlight_atan2_(metal::dot(_e529, t2_) * exit_h, metal::max(metal::dot(_e529, _e453.exit), 0.0) * reach_3);
-                AirlightEdgeRule rule_6 = AirlightEdgeRule {exit_h, {}, t2_, reach_3, _e537, _e545};
+                float _e537 = airlight_atan2_(metal::dot(_e527, t2_) * exit_h, metal::max(metal::dot(_e527, _e453.exit), 0.0) * reach_4);
+                float _e545 = airlight_atan2_(metal::dot(_e529, t2_) * exit_h, metal::max(metal::dot(_e529, _e453.exit), 0.0) * reach_4);
+                AirlightEdgeRule rule_6 = AirlightEdgeRule {exit_h, {}, t2_, reach_4, _e537, _e545};
                 j_10 = 0u;
-                uint2 loop_bound_44 = uint2(4294967295u);
-                bool loop_init_43 = true;
+                uint2 loop_bound_46 = uint2(4294967295u);
+                bool loop_init_45 = true;
                 while(true) {
-                    if (metal::all(loop_bound_44 == uint2(0u))) { break; }
-                    loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-                    if (!loop_init_43) {
+                    if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+                    loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                    if (!loop_init_45) {
                         uint _e561 = j_10;
                         j_10 = _e561 + 1u;
                     }
-                    loop_init_43 = false;
+                    loop_init_45 = false;
                     uint _e549 = j_10;
                     if (_e549 < 12u) {
                     } else {
@@ -8441,7 +8610,7 @@ float airlight_flat_about_lobe(
                         uint _e552 = j_10;
                         metal::float4 _e553 = airlight_edge_node(rule_6, _e552);
                         float _e554 = sum_9;
-                        float _e557 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e553.xy);
+                        float _e557 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e553.xy);
                         sum_9 = _e554 + (_e553.w * _e557);
                     }
                 }
@@ -8454,16 +8623,16 @@ float airlight_flat_about_lobe(
             metal::float2 _e571 = airlight_cos_sin_turns(_e570);
             float _e572 = airlight_mercator(n_9, _e571);
             k_9 = 0u;
-            uint2 loop_bound_45 = uint2(4294967295u);
-            bool loop_init_44 = true;
+            uint2 loop_bound_47 = uint2(4294967295u);
+            bool loop_init_46 = true;
             while(true) {
-                if (metal::all(loop_bound_45 == uint2(0u))) { break; }
-                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_44) {
+                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_46) {
                     uint _e636 = k_9;
                     k_9 = _e636 + 1u;
                 }
-                loop_init_44 = false;
+                loop_init_46 = false;
                 uint _e575 = k_9;
                 if (_e575 < 7u) {
                 } else {
@@ -8479,19 +8648,19 @@ float airlight_flat_about_lobe(
                     if (!((lo_8 < hi_9))) {
                         continue;
                     }
-                    float c_20 = (lo_8 + hi_9) * 0.5;
+                    float c_23 = (lo_8 + hi_9) * 0.5;
                     float hw_6 = (hi_9 - lo_8) * 0.5;
                     j_11 = 0u;
-                    uint2 loop_bound_46 = uint2(4294967295u);
-                    bool loop_init_45 = true;
+                    uint2 loop_bound_48 = uint2(4294967295u);
+                    bool loop_init_47 = true;
                     while(true) {
-                        if (metal::all(loop_bound_46 == uint2(0u))) { break; }
-                        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                        if (!loop_init_45) {
+                        if (metal::all(loop_bound_48 == uint2(0u))) { break; }
+                        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                        if (!loop_init_47) {
                             uint _e633 = j_11;
                             j_11 = _e633 + 1u;
                         }
-                        loop_init_45 = false;
+                        loop_init_47 = false;
                         uint _e596 = j_11;
                         if (_e596 < 12u) {
                         } else {
@@ -8500,12 +8669,12 @@ float airlight_flat_about_lobe(
                         {
                             uint _e599 = j_11;
                             metal::float2 _e600 = airlight_triangle_rule(_e599);
-                            float x_37 = c_20 + (hw_6 * _e600.x);
-                            float e_17 = metal::exp(-(metal::abs(x_37)));
-                            float sech = (2.0 * e_17) / (1.0 + (e_17 * e_17));
-                            float th = (metal::sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17));
+                            float x_38 = c_23 + (hw_6 * _e600.x);
+                            float e_18 = metal::exp(-(metal::abs(x_38)));
+                            float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
+                            float th = (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18));
                             float _e622 = sum_9;
-                            float _e629 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, (n_9 * sech) + (t_14 * th));
+                            float _e629 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, (n_9 * sech) + (t_14 * th));
                             sum_9 = _e622 + (((_e600.y * hw_6) * sech) * _e629);
                         }
                     }
@@ -8518,47 +8687,47 @@ float airlight_flat_about_lobe(
 }
 
 float airlight_disc(
-    AirlightScene s_41,
-    AirlightArea a_25,
-    metal::float3 x_25
+    AirlightScene s_42,
+    AirlightArea a_26,
+    metal::float3 x_26
 ) {
-    bool local_184 = {};
-    bool local_185 = {};
+    bool local_188 = {};
+    bool local_189 = {};
     metal::float2 u_6 = metal::float2(0.0);
     AirlightAbove above_3 = {};
     float sum_10 = 0.0;
-    uint i_36 = 0u;
+    uint i_38 = 0u;
     metal::float2 e_9 = {};
     float r_max_1 = {};
-    metal::float3 rel = x_25 - a_25.c;
-    float z_20 = metal::dot(rel, a_25.n);
+    metal::float3 rel_1 = x_26 - a_26.c;
+    float z_20 = metal::dot(rel_1, a_26.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
     }
-    float fx = metal::dot(rel, a_25.a1_);
-    float fy_1 = metal::dot(rel, a_25.a2_);
+    float fx = metal::dot(rel_1, a_26.a1_);
+    float fy_1 = metal::dot(rel_1, a_26.a2_);
     float rf = metal::sqrt((fx * fx) + (fy_1 * fy_1));
-    float radius_2 = a_25.radius;
-    metal::float2 zero_1 = metal::float2(0.0);
-    AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_1, zero_1, zero_1}}, radius_2};
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_25, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
+    float radius_2 = a_26.radius;
+    metal::float2 zero_2 = metal::float2(0.0);
+    AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2}}, radius_2};
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0.0) {
-        float _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_42, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_41, radius_2 - rf, z_20);
-            local_185 = _e44;
+            bool _e44 = airlight_far_from_edge(s_42, radius_2 - rf, z_20);
+            local_189 = _e44;
         } else {
-            local_185 = true;
+            local_189 = true;
         }
-        bool _e46 = local_185;
-        local_184 = _e46;
+        bool _e46 = local_189;
+        local_188 = _e46;
     } else {
-        local_184 = false;
+        local_188 = false;
     }
-    bool inside_2 = local_184;
+    bool inside_2 = local_188;
     AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
@@ -8568,23 +8737,23 @@ float airlight_disc(
         above_3 = _e65;
     }
     float k_15 = (rf - radius_2) * (rf + radius_2);
-    uint2 loop_bound_47 = uint2(4294967295u);
-    bool loop_init_46 = true;
+    uint2 loop_bound_49 = uint2(4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (metal::all(loop_bound_47 == uint2(0u))) { break; }
-        loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-        if (!loop_init_46) {
-            uint _e127 = i_36;
-            i_36 = _e127 + 1u;
+        if (metal::all(loop_bound_49 == uint2(0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
+            uint _e127 = i_38;
+            i_38 = _e127 + 1u;
         }
-        loop_init_46 = false;
-        uint _e73 = i_36;
+        loop_init_48 = false;
+        uint _e73 = i_38;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            uint _e76 = i_36;
+            uint _e76 = i_38;
             metal::float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_6.x;
             float _e84 = u_6.y;
@@ -8602,7 +8771,7 @@ float airlight_disc(
             AirlightAbove _e120 = above_3;
             metal::float2 _e121 = e_9;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_41, a_25, _e120, _e121, _e122);
+            float _e123 = airlight_flat_radial(s_42, a_26, _e120, _e121, _e122);
             sum_10 = _e118 + (_e77.z * _e123);
         }
     }
@@ -8611,68 +8780,68 @@ float airlight_disc(
 }
 
 float airlight_parallelogram(
-    AirlightScene s_42,
-    AirlightArea a_26,
-    metal::float3 x_26
+    AirlightScene s_43,
+    AirlightArea a_27,
+    metal::float3 x_27
 ) {
     metal::float2 q_8 = {};
-    bool local_186 = {};
+    bool local_190 = {};
     float sum_11 = 0.0;
-    uint i_37 = 0u;
+    uint i_39 = 0u;
     uint j_12 = {};
-    metal::float3 rel_1 = x_26 - a_26.c;
-    float z_21 = metal::dot(rel_1, a_26.n);
+    metal::float3 rel_2 = x_27 - a_27.c;
+    float z_21 = metal::dot(rel_2, a_27.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    metal::float2 foot = metal::float2(metal::dot(rel_1, a_26.a1_), metal::dot(rel_1, a_26.a2_));
-    metal::float2 u2_ = metal::float2(metal::dot(a_26.eu, a_26.a1_), metal::dot(a_26.eu, a_26.a2_));
-    metal::float2 v2_ = metal::float2(metal::dot(a_26.ev, a_26.a1_), metal::dot(a_26.ev, a_26.a2_));
-    airlight_type_20 corners = airlight_type_20 {{metal::float2(0.0), u2_, u2_ + v2_, v2_, metal::float2(0.0)}};
-    float det = (u2_.x * v2_.y) - (u2_.y * v2_.x);
-    AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot, corners.inner[1] - foot, corners.inner[2] - foot, corners.inner[3] - foot}}, 0.0};
-    float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_ + v2_, u2_ + v2_)), metal::sqrt(metal::dot(u2_ - v2_, u2_ - v2_)));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_26, z_21, about_foot, (0.5 * corners.inner[2]) - foot, size_2);
+    metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_27.a1_), metal::dot(rel_2, a_27.a2_));
+    metal::float2 u2_1 = metal::float2(metal::dot(a_27.eu, a_27.a1_), metal::dot(a_27.eu, a_27.a2_));
+    metal::float2 v2_1 = metal::float2(metal::dot(a_27.ev, a_27.a1_), metal::dot(a_27.ev, a_27.a2_));
+    airlight_type_19 corners = airlight_type_19 {{metal::float2(0.0), u2_1, u2_1 + v2_1, v2_1, metal::float2(0.0)}};
+    float det = (u2_1.x * v2_1.y) - (u2_1.y * v2_1.x);
+    AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot_1, corners.inner[1] - foot_1, corners.inner[2] - foot_1, corners.inner[3] - foot_1}}, 0.0};
+    float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_1 + v2_1, u2_1 + v2_1)), metal::sqrt(metal::dot(u2_1 - v2_1, u2_1 - v2_1)));
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
     if (_e69.scale > 0.0) {
-        float _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_43, z_21, about_foot, _e69);
         return _e73;
     }
     metal::float3 _e76 = airlight_outline_boundary(about_foot, metal::float2(0.0));
-    q_8 = _e76.xy + foot;
+    q_8 = _e76.xy + foot_1;
     if (_e76.z > 0.0) {
-        bool _e89 = airlight_far_from_edge(s_42, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
-        local_186 = _e89;
+        bool _e89 = airlight_far_from_edge(s_43, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
+        local_190 = _e89;
     } else {
-        local_186 = false;
+        local_190 = false;
     }
-    bool _e91 = local_186;
+    bool _e91 = local_190;
     if (_e91) {
-        q_8 = foot;
+        q_8 = foot_1;
     }
     metal::float2 _e92 = q_8;
-    AirlightAbove _e94 = airlight_above(z_21, _e92 - foot);
+    AirlightAbove _e94 = airlight_above(z_21, _e92 - foot_1);
     float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
-    float _e99 = airlight_narrowed(s_42, _e94.rho0_);
-    uint2 loop_bound_48 = uint2(4294967295u);
-    bool loop_init_47 = true;
+    float _e99 = airlight_narrowed(s_43, _e94.rho0_);
+    uint2 loop_bound_50 = uint2(4294967295u);
+    bool loop_init_49 = true;
     while(true) {
-        if (metal::all(loop_bound_48 == uint2(0u))) { break; }
-        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-        if (!loop_init_47) {
-            uint _e145 = i_37;
-            i_37 = _e145 + 1u;
+        if (metal::all(loop_bound_50 == uint2(0u))) { break; }
+        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+        if (!loop_init_49) {
+            uint _e145 = i_39;
+            i_39 = _e145 + 1u;
         }
-        loop_init_47 = false;
-        uint _e104 = i_37;
+        loop_init_49 = false;
+        uint _e104 = i_39;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            uint _e107 = i_37;
+            uint _e107 = i_39;
             metal::float2 _e109 = q_8;
             metal::float2 ca = corners.inner[metal::min(unsigned(_e107), 4u)] - _e109;
-            uint _e111 = i_37;
+            uint _e111 = i_39;
             metal::float2 _e115 = q_8;
             metal::float2 cb_1 = corners.inner[metal::min(unsigned(_e111 + 1u), 4u)] - _e115;
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
@@ -8680,16 +8849,16 @@ float airlight_parallelogram(
             }
             AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
             j_12 = 0u;
-            uint2 loop_bound_49 = uint2(4294967295u);
-            bool loop_init_48 = true;
+            uint2 loop_bound_51 = uint2(4294967295u);
+            bool loop_init_50 = true;
             while(true) {
-                if (metal::all(loop_bound_49 == uint2(0u))) { break; }
-                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_48) {
+                if (metal::all(loop_bound_51 == uint2(0u))) { break; }
+                loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+                if (!loop_init_50) {
                     uint _e142 = j_12;
                     j_12 = _e142 + 1u;
                 }
-                loop_init_48 = false;
+                loop_init_50 = false;
                 uint _e129 = j_12;
                 if (_e129 < 12u) {
                 } else {
@@ -8699,7 +8868,7 @@ float airlight_parallelogram(
                     uint _e132 = j_12;
                     metal::float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_11;
-                    float _e138 = airlight_flat_radial(s_42, a_26, _e94, _e133.xy, _e133.z);
+                    float _e138 = airlight_flat_radial(s_43, a_27, _e94, _e133.xy, _e133.z);
                     sum_11 = _e134 + (_e133.w * _e138);
                 }
             }
@@ -8710,7 +8879,7 @@ float airlight_parallelogram(
 }
 
 metal::float3 airlight_cap_row(
-    AirlightScene s_43,
+    AirlightScene s_44,
     AirlightCap cap,
     float graded_4,
     float node_2,
@@ -8722,63 +8891,63 @@ metal::float3 airlight_cap_row(
     float sb_2 = cap.sin_a * _e9.y;
     float cb_2 = metal::sqrt((1.0 - sb_2) * (1.0 + sb_2));
     float dist_1 = metal::max((cap.dc * cb_2) - (cap.radius * _e9.x), 0.0);
-    float _e28 = airlight_emitted(s_43, _e9.x);
-    float factor = ((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * metal::exp(metal::min(-(s_43.sigma_t) * dist_1, 0.0));
+    float _e28 = airlight_emitted(s_44, _e9.x);
+    float factor = ((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * metal::exp(metal::min(-(s_44.sigma_t) * dist_1, 0.0));
     return metal::float3(factor, cb_2, sb_2);
 }
 
 float airlight_sphere_cap(
-    AirlightScene s_44,
-    AirlightArea a_27,
+    AirlightScene s_45,
+    AirlightArea a_28,
     AirlightCap cap_1
 ) {
     airlight_type_25 rows = airlight_type_25 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
     float sum_12 = 0.0;
-    uint i_38 = 0u;
+    uint i_40 = 0u;
     float at_2 = {};
     metal::float3 _e4 = airlight_basis_e1_(cap_1.a);
     metal::float3 e2_2 = metal::cross(cap_1.a, _e4);
-    float ad = metal::dot(cap_1.a, a_27.d);
-    float e1d = metal::dot(_e4, a_27.d);
-    float e2d = metal::dot(e2_2, a_27.d);
-    metal::float2 _e15 = airlight_graded_range(s_44, 1.5707964);
+    float ad = metal::dot(cap_1.a, a_28.d);
+    float e1d = metal::dot(_e4, a_28.d);
+    float e2d = metal::dot(e2_2, a_28.d);
+    metal::float2 _e15 = airlight_graded_range(s_45, 1.5707964);
     float graded_9 = _e15.y;
-    float c_21 = 0.5 * _e15.x;
+    float c_24 = 0.5 * _e15.x;
     float hw_7 = 0.5 * _e15.x;
-    metal::float3 _e63 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e63 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[0] = _e63;
-    metal::float3 _e70 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e70 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[1] = _e70;
-    metal::float3 _e77 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e77 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[2] = _e77;
-    metal::float3 _e84 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e84 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[3] = _e84;
-    metal::float3 _e91 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e91 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[4] = _e91;
-    metal::float3 _e98 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e98 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[5] = _e98;
-    metal::float3 _e105 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e105 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[6] = _e105;
-    metal::float3 _e112 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e112 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[7] = _e112;
-    metal::float3 _e119 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e119 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[8] = _e119;
-    metal::float3 _e126 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e126 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[9] = _e126;
-    metal::float3 _e133 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e133 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[10] = _e133;
-    metal::float3 _e140 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e140 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[11] = _e140;
-    metal::float3 _e147 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e147 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[12] = _e147;
-    metal::float3 _e154 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e154 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[13] = _e154;
-    metal::float3 _e161 = airlight_cap_row(s_44, cap_1, graded_9, c_21 - (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e161 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[14] = _e161;
-    metal::float3 _e168 = airlight_cap_row(s_44, cap_1, graded_9, c_21 + (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e168 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[15] = _e168;
-    if (a_27.isotropic) {
-        float _e174 = airlight_area_phase(s_44, 0.0);
+    if (a_28.isotropic) {
+        float _e174 = airlight_area_phase(s_45, 0.0);
         float around_1 = 6.2831855 * _e174;
         float _e176 = sum_12;
         float _e179 = rows.inner[0].x;
@@ -8831,23 +9000,23 @@ float airlight_sphere_cap(
         float _e272 = sum_12;
         return _e272;
     }
-    uint2 loop_bound_50 = uint2(4294967295u);
-    bool loop_init_49 = true;
+    uint2 loop_bound_52 = uint2(4294967295u);
+    bool loop_init_51 = true;
     while(true) {
-        if (metal::all(loop_bound_50 == uint2(0u))) { break; }
-        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-        if (!loop_init_49) {
-            uint _e550 = i_38;
-            i_38 = _e550 + 1u;
+        if (metal::all(loop_bound_52 == uint2(0u))) { break; }
+        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+        if (!loop_init_51) {
+            uint _e550 = i_40;
+            i_40 = _e550 + 1u;
         }
-        loop_init_49 = false;
-        uint _e275 = i_38;
+        loop_init_51 = false;
+        uint _e275 = i_40;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            uint _e279 = i_38;
+            uint _e279 = i_40;
             metal::float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = (_e280.x * e1d) + (_e280.y * e2d);
             at_2 = 0.0;
@@ -8855,97 +9024,97 @@ float airlight_sphere_cap(
             float _e291 = rows.inner[0].x;
             float _e294 = rows.inner[0].y;
             float _e298 = rows.inner[0].z;
-            float _e301 = airlight_area_phase(s_44, (_e294 * ad) + (_e298 * across_1));
+            float _e301 = airlight_area_phase(s_45, (_e294 * ad) + (_e298 * across_1));
             at_2 = _e288 + (_e291 * _e301);
             float _e304 = at_2;
             float _e307 = rows.inner[1].x;
             float _e310 = rows.inner[1].y;
             float _e314 = rows.inner[1].z;
-            float _e317 = airlight_area_phase(s_44, (_e310 * ad) + (_e314 * across_1));
+            float _e317 = airlight_area_phase(s_45, (_e310 * ad) + (_e314 * across_1));
             at_2 = _e304 + (_e307 * _e317);
             float _e320 = at_2;
             float _e323 = rows.inner[2].x;
             float _e326 = rows.inner[2].y;
             float _e330 = rows.inner[2].z;
-            float _e333 = airlight_area_phase(s_44, (_e326 * ad) + (_e330 * across_1));
+            float _e333 = airlight_area_phase(s_45, (_e326 * ad) + (_e330 * across_1));
             at_2 = _e320 + (_e323 * _e333);
             float _e336 = at_2;
             float _e339 = rows.inner[3].x;
             float _e342 = rows.inner[3].y;
             float _e346 = rows.inner[3].z;
-            float _e349 = airlight_area_phase(s_44, (_e342 * ad) + (_e346 * across_1));
+            float _e349 = airlight_area_phase(s_45, (_e342 * ad) + (_e346 * across_1));
             at_2 = _e336 + (_e339 * _e349);
             float _e352 = at_2;
             float _e355 = rows.inner[4].x;
             float _e358 = rows.inner[4].y;
             float _e362 = rows.inner[4].z;
-            float _e365 = airlight_area_phase(s_44, (_e358 * ad) + (_e362 * across_1));
+            float _e365 = airlight_area_phase(s_45, (_e358 * ad) + (_e362 * across_1));
             at_2 = _e352 + (_e355 * _e365);
             float _e368 = at_2;
             float _e371 = rows.inner[5].x;
             float _e374 = rows.inner[5].y;
             float _e378 = rows.inner[5].z;
-            float _e381 = airlight_area_phase(s_44, (_e374 * ad) + (_e378 * across_1));
+            float _e381 = airlight_area_phase(s_45, (_e374 * ad) + (_e378 * across_1));
             at_2 = _e368 + (_e371 * _e381);
             float _e384 = at_2;
             float _e387 = rows.inner[6].x;
             float _e390 = rows.inner[6].y;
             float _e394 = rows.inner[6].z;
-            float _e397 = airlight_area_phase(s_44, (_e390 * ad) + (_e394 * across_1));
+            float _e397 = airlight_area_phase(s_45, (_e390 * ad) + (_e394 * across_1));
             at_2 = _e384 + (_e387 * _e397);
             float _e400 = at_2;
             float _e403 = rows.inner[7].x;
             float _e406 = rows.inner[7].y;
             float _e410 = rows.inner[7].z;
-            float _e413 = airlight_area_phase(s_44, (_e406 * ad) + (_e410 * across_1));
+            float _e413 = airlight_area_phase(s_45, (_e406 * ad) + (_e410 * across_1));
             at_2 = _e400 + (_e403 * _e413);
             float _e416 = at_2;
             float _e419 = rows.inner[8].x;
             float _e422 = rows.inner[8].y;
             float _e426 = rows.inner[8].z;
-            float _e429 = airlight_area_phase(s_44, (_e422 * ad) + (_e426 * across_1));
+            float _e429 = airlight_area_phase(s_45, (_e422 * ad) + (_e426 * across_1));
             at_2 = _e416 + (_e419 * _e429);
             float _e432 = at_2;
             float _e435 = rows.inner[9].x;
             float _e438 = rows.inner[9].y;
             float _e442 = rows.inner[9].z;
-            float _e445 = airlight_area_phase(s_44, (_e438 * ad) + (_e442 * across_1));
+            float _e445 = airlight_area_phase(s_45, (_e438 * ad) + (_e442 * across_1));
             at_2 = _e432 + (_e435 * _e445);
             float _e448 = at_2;
             float _e451 = rows.inner[10].x;
             float _e454 = rows.inner[10].y;
             float _e458 = rows.inner[10].z;
-            float _e461 = airlight_area_phase(s_44, (_e454 * ad) + (_e458 * across_1));
+            float _e461 = airlight_area_phase(s_45, (_e454 * ad) + (_e458 * across_1));
             at_2 = _e448 + (_e451 * _e461);
             float _e464 = at_2;
             float _e467 = rows.inner[11].x;
             float _e470 = rows.inner[11].y;
             float _e474 = rows.inner[11].z;
-            float _e477 = airlight_area_phase(s_44, (_e470 * ad) + (_e474 * across_1));
+            float _e477 = airlight_area_phase(s_45, (_e470 * ad) + (_e474 * across_1));
             at_2 = _e464 + (_e467 * _e477);
             float _e480 = at_2;
             float _e483 = rows.inner[12].x;
             float _e486 = rows.inner[12].y;
             float _e490 = rows.inner[12].z;
-            float _e493 = airlight_area_phase(s_44, (_e486 * ad) + (_e490 * across_1));
+            float _e493 = airlight_area_phase(s_45, (_e486 * ad) + (_e490 * across_1));
             at_2 = _e480 + (_e483 * _e493);
             float _e496 = at_2;
             float _e499 = rows.inner[13].x;
             float _e502 = rows.inner[13].y;
             float _e506 = rows.inner[13].z;
-            float _e509 = airlight_area_phase(s_44, (_e502 * ad) + (_e506 * across_1));
+            float _e509 = airlight_area_phase(s_45, (_e502 * ad) + (_e506 * across_1));
             at_2 = _e496 + (_e499 * _e509);
             float _e512 = at_2;
             float _e515 = rows.inner[14].x;
             float _e518 = rows.inner[14].y;
             float _e522 = rows.inner[14].z;
-            float _e525 = airlight_area_phase(s_44, (_e518 * ad) + (_e522 * across_1));
+            float _e525 = airlight_area_phase(s_45, (_e518 * ad) + (_e522 * across_1));
             at_2 = _e512 + (_e515 * _e525);
             float _e528 = at_2;
             float _e531 = rows.inner[15].x;
             float _e534 = rows.inner[15].y;
             float _e538 = rows.inner[15].z;
-            float _e541 = airlight_area_phase(s_44, (_e534 * ad) + (_e538 * across_1));
+            float _e541 = airlight_area_phase(s_45, (_e534 * ad) + (_e538 * across_1));
             at_2 = _e528 + (_e531 * _e541);
             float _e544 = sum_12;
             float _e546 = at_2;
@@ -8957,7 +9126,7 @@ float airlight_sphere_cap(
 }
 
 float airlight_sphere_lobe_node(
-    AirlightScene s_45,
+    AirlightScene s_46,
     AirlightCap cap_2,
     float sign_1,
     float cos_p,
@@ -8970,30 +9139,30 @@ float airlight_sphere_lobe_node(
     float toward_a = (_e8.x * cos_p) + (_e8.y * big_b);
     float root_5 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
     float dist_2 = metal::max((cap_2.dc * toward_a) - root_5, 0.0);
-    float _e37 = airlight_emitted(s_45, root_5 / cap_2.radius);
-    float _e47 = airlight_area_phase(s_45, sign_1 * _e8.x);
-    return (((_e37 * metal::exp(metal::min(-(s_45.sigma_t) * dist_2, 0.0))) * _e47) * _e8.y) * _e8.z;
+    float _e37 = airlight_emitted(s_46, root_5 / cap_2.radius);
+    float _e47 = airlight_area_phase(s_46, sign_1 * _e8.x);
+    return (((_e37 * metal::exp(metal::min(-(s_46.sigma_t) * dist_2, 0.0))) * _e47) * _e8.y) * _e8.z;
 }
 
 float airlight_sphere_about_lobe(
-    AirlightScene s_46,
-    AirlightArea a_28,
+    AirlightScene s_47,
+    AirlightArea a_29,
     AirlightCap cap_3,
     float sign_2,
     float cos_p_1,
-    float scale_2
+    float scale_3
 ) {
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
     float sum_13 = 0.0;
-    uint i_39 = 0u;
+    uint i_41 = 0u;
     float big_b_1 = {};
     float wpsi = {};
     float start_5 = {};
     float around = {};
-    metal::float3 p_7 = sign_2 * a_28.d;
-    metal::float3 _e8 = airlight_basis_e1_(p_7);
-    metal::float3 v_10 = metal::cross(p_7, _e8);
+    metal::float3 p_8 = sign_2 * a_29.d;
+    metal::float3 _e8 = airlight_basis_e1_(p_8);
+    metal::float3 v_10 = metal::cross(p_8, _e8);
     float au = metal::dot(cap_3.a, _e8);
     float av = metal::dot(cap_3.a, v_10);
     bool inside_3 = cos_p_1 > cap_3.cos_a;
@@ -9003,23 +9172,23 @@ float airlight_sphere_about_lobe(
         float _e42 = airlight_acos(metal::min(metal::sqrt(metal::max((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1), 0.0)) / sin_p, 1.0));
         half_15 = _e42;
     }
-    uint2 loop_bound_51 = uint2(4294967295u);
-    bool loop_init_50 = true;
+    uint2 loop_bound_53 = uint2(4294967295u);
+    bool loop_init_52 = true;
     while(true) {
-        if (metal::all(loop_bound_51 == uint2(0u))) { break; }
-        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
-        if (!loop_init_50) {
-            uint _e290 = i_39;
-            i_39 = _e290 + 1u;
+        if (metal::all(loop_bound_53 == uint2(0u))) { break; }
+        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+        if (!loop_init_52) {
+            uint _e290 = i_41;
+            i_41 = _e290 + 1u;
         }
-        loop_init_50 = false;
-        uint _e47 = i_39;
+        loop_init_52 = false;
+        uint _e47 = i_41;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            uint _e50 = i_39;
+            uint _e50 = i_41;
             metal::float3 _e51 = airlight_azimuths(inside_3, _e50);
             float _e54 = axis_2.x;
             float _e58 = axis_2.y;
@@ -9042,90 +9211,90 @@ float airlight_sphere_about_lobe(
                 start_5 = metal::max(_e78 - _e89, 0.0);
             }
             float _e96 = start_5;
-            metal::float2 _e98 = airlight_graded_from(scale_2, _e96, _e78 + _e89);
+            metal::float2 _e98 = airlight_graded_from(scale_3, _e96, _e78 + _e89);
             float graded_10 = _e98.x;
-            float c_22 = 0.5 * _e98.y;
+            float c_25 = 0.5 * _e98.y;
             float hw_8 = 0.5 * _e98.y;
             around = 0.0;
             float _e108 = around;
             float _e111 = big_b_1;
             float _e112 = start_5;
-            float _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_22 - (0.09501251 * hw_8));
+            float _e116 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_25 - (0.09501251 * hw_8));
             around = _e108 + ((0.1894506 * hw_8) * _e116);
             float _e119 = around;
             float _e122 = big_b_1;
             float _e123 = start_5;
-            float _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_22 + (0.09501251 * hw_8));
+            float _e127 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_25 + (0.09501251 * hw_8));
             around = _e119 + ((0.1894506 * hw_8) * _e127);
             float _e130 = around;
             float _e133 = big_b_1;
             float _e134 = start_5;
-            float _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_22 - (0.28160354 * hw_8));
+            float _e138 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_25 - (0.28160354 * hw_8));
             around = _e130 + ((0.18260342 * hw_8) * _e138);
             float _e141 = around;
             float _e144 = big_b_1;
             float _e145 = start_5;
-            float _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_22 + (0.28160354 * hw_8));
+            float _e149 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_25 + (0.28160354 * hw_8));
             around = _e141 + ((0.18260342 * hw_8) * _e149);
             float _e152 = around;
             float _e155 = big_b_1;
             float _e156 = start_5;
-            float _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_22 - (0.45801678 * hw_8));
+            float _e160 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_25 - (0.45801678 * hw_8));
             around = _e152 + ((0.16915652 * hw_8) * _e160);
             float _e163 = around;
             float _e166 = big_b_1;
             float _e167 = start_5;
-            float _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_22 + (0.45801678 * hw_8));
+            float _e171 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_25 + (0.45801678 * hw_8));
             around = _e163 + ((0.16915652 * hw_8) * _e171);
             float _e174 = around;
             float _e177 = big_b_1;
             float _e178 = start_5;
-            float _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_22 - (0.61787623 * hw_8));
+            float _e182 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_25 - (0.61787623 * hw_8));
             around = _e174 + ((0.14959599 * hw_8) * _e182);
             float _e185 = around;
             float _e188 = big_b_1;
             float _e189 = start_5;
-            float _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_22 + (0.61787623 * hw_8));
+            float _e193 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_25 + (0.61787623 * hw_8));
             around = _e185 + ((0.14959599 * hw_8) * _e193);
             float _e196 = around;
             float _e199 = big_b_1;
             float _e200 = start_5;
-            float _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_22 - (0.7554044 * hw_8));
+            float _e204 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_25 - (0.7554044 * hw_8));
             around = _e196 + ((0.12462897 * hw_8) * _e204);
             float _e207 = around;
             float _e210 = big_b_1;
             float _e211 = start_5;
-            float _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_22 + (0.7554044 * hw_8));
+            float _e215 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_25 + (0.7554044 * hw_8));
             around = _e207 + ((0.12462897 * hw_8) * _e215);
             float _e218 = around;
             float _e221 = big_b_1;
             float _e222 = start_5;
-            float _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_22 - (0.8656312 * hw_8));
+            float _e226 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_25 - (0.8656312 * hw_8));
             around = _e218 + ((0.09515851 * hw_8) * _e226);
             float _e229 = around;
             float _e232 = big_b_1;
             float _e233 = start_5;
-            float _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_22 + (0.8656312 * hw_8));
+            float _e237 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_25 + (0.8656312 * hw_8));
             around = _e229 + ((0.09515851 * hw_8) * _e237);
             float _e240 = around;
             float _e243 = big_b_1;
             float _e244 = start_5;
-            float _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_22 - (0.944575 * hw_8));
+            float _e248 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_25 - (0.944575 * hw_8));
             around = _e240 + ((0.062253524 * hw_8) * _e248);
             float _e251 = around;
             float _e254 = big_b_1;
             float _e255 = start_5;
-            float _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_22 + (0.944575 * hw_8));
+            float _e259 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_25 + (0.944575 * hw_8));
             around = _e251 + ((0.062253524 * hw_8) * _e259);
             float _e262 = around;
             float _e265 = big_b_1;
             float _e266 = start_5;
-            float _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_22 - (0.9894009 * hw_8));
+            float _e270 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_25 - (0.9894009 * hw_8));
             around = _e262 + ((0.02715246 * hw_8) * _e270);
             float _e273 = around;
             float _e276 = big_b_1;
             float _e277 = start_5;
-            float _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_22 + (0.9894009 * hw_8));
+            float _e281 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_25 + (0.9894009 * hw_8));
             around = _e273 + ((0.02715246 * hw_8) * _e281);
             float _e284 = sum_13;
             float _e285 = wpsi;
@@ -9138,37 +9307,37 @@ float airlight_sphere_about_lobe(
 }
 
 float airlight_sphere(
-    AirlightScene s_47,
-    AirlightArea a_29,
-    metal::float3 x_27
+    AirlightScene s_48,
+    AirlightArea a_30,
+    metal::float3 x_28
 ) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_187 = {};
-    bool local_188 = {};
-    bool local_189 = {};
-    bool local_190 = {};
     bool local_191 = {};
-    metal::float3 v_11 = a_29.c - x_27;
+    bool local_192 = {};
+    bool local_193 = {};
+    bool local_194 = {};
+    bool local_195 = {};
+    metal::float3 v_11 = a_30.c - x_28;
     float _e5 = airlight_safe_length(v_11);
-    if (!((_e5 > a_29.radius))) {
+    if (!((_e5 > a_30.radius))) {
         return 0.0;
     }
-    float sin_a_2 = a_29.radius / _e5;
-    AirlightCap cap_4 = AirlightCap {v_11 / metal::float3(_e5), _e5, a_29.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
+    float sin_a_2 = a_30.radius / _e5;
+    AirlightCap cap_4 = AirlightCap {v_11 / metal::float3(_e5), _e5, a_30.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_52 = uint2(4294967295u);
-    bool loop_init_51 = true;
+    uint2 loop_bound_54 = uint2(4294967295u);
+    bool loop_init_53 = true;
     while(true) {
-        if (metal::all(loop_bound_52 == uint2(0u))) { break; }
-        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
-        if (!loop_init_51) {
+        if (metal::all(loop_bound_54 == uint2(0u))) { break; }
+        loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+        if (!loop_init_53) {
             uint _e92 = j_13;
             j_13 = _e92 + 1u;
         }
-        loop_init_51 = false;
+        loop_init_53 = false;
         uint _e32 = j_13;
         if (_e32 < 2u) {
         } else {
@@ -9176,44 +9345,44 @@ float airlight_sphere(
         }
         {
             uint _e39 = j_13;
-            metal::float2 lobe_5 = (_e39 == 1u) ? a_29.lobes.zw : a_29.lobes.xy;
-            float c_23 = metal::dot(cap_4.a, lobe_5.x * a_29.d);
+            metal::float2 lobe_5 = (_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
+            float c_26 = metal::dot(cap_4.a, lobe_5.x * a_30.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_187 = lobe_5.y > 0.0;
+                local_191 = lobe_5.y > 0.0;
             } else {
-                local_187 = false;
+                local_191 = false;
             }
-            bool _e57 = local_187;
+            bool _e57 = local_191;
             if (_e57) {
-                local_188 = lobe_5.y < (_e23 + _e23);
+                local_192 = lobe_5.y < (_e23 + _e23);
             } else {
-                local_188 = false;
+                local_192 = false;
             }
-            bool _e64 = local_188;
+            bool _e64 = local_192;
             if (_e64) {
-                if (!((c_23 > cap_4.cos_a))) {
-                    if (c_23 > -(cap_4.cos_a)) {
-                        float _e77 = airlight_acos(c_23);
-                        local_191 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
+                if (!((c_26 > cap_4.cos_a))) {
+                    if (c_26 > -(cap_4.cos_a)) {
+                        float _e77 = airlight_acos(c_26);
+                        local_195 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
                     } else {
-                        local_191 = false;
+                        local_195 = false;
                     }
-                    bool _e84 = local_191;
-                    local_190 = _e84;
+                    bool _e84 = local_195;
+                    local_194 = _e84;
                 } else {
-                    local_190 = true;
+                    local_194 = true;
                 }
-                bool _e86 = local_190;
-                local_189 = _e86;
+                bool _e86 = local_194;
+                local_193 = _e86;
             } else {
-                local_189 = false;
+                local_193 = false;
             }
-            bool _e88 = local_189;
+            bool _e88 = local_193;
             if (_e88) {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_23;
+                cos_p_2 = c_26;
             }
         }
     }
@@ -9222,57 +9391,57 @@ float airlight_sphere(
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_47, a_29, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_48, a_30, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_47, a_29, cap_4);
+    float _e101 = airlight_sphere_cap(s_48, a_30, cap_4);
     return _e101;
 }
 
 float airlight_emitter_radiance(
-    AirlightScene s_48,
-    AirlightArea a_30,
-    metal::float3 x_28
+    AirlightScene s_49,
+    AirlightArea a_31,
+    metal::float3 x_29
 ) {
-    switch(s_48.light_shape) {
+    switch(s_49.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_48, a_30, x_28);
+            float _e4 = airlight_disc(s_49, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_48, a_30, x_28);
+            float _e5 = airlight_parallelogram(s_49, a_31, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_48, a_30, x_28);
+            float _e6 = airlight_sphere(s_49, a_31, x_29);
             return _e6;
         }
     }
 }
 
 float airlight_area_node(
-    AirlightScene s_49,
-    AirlightArea a_31,
+    AirlightScene s_50,
+    AirlightArea a_32,
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
-    float along_1 = (a_31.h_eff * _e3.y) / _e3.x;
-    float t_15 = a_31.x_h + along_1;
-    float fade = metal::exp(metal::min(-(s_49.sigma_t) * metal::max((a_31.x_h - s_49.t_min) + along_1, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_49, a_31, s_49.origin + (t_15 * a_31.d));
-    return ((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
+    float along_1 = (a_32.h_eff * _e3.y) / _e3.x;
+    float t_15 = a_32.x_h + along_1;
+    float fade = metal::exp(metal::min(-(s_50.sigma_t) * metal::max((a_32.x_h - s_50.t_min) + along_1, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_50, a_32, s_50.origin + (t_15 * a_32.d));
+    return ((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
 AirlightResult airlight_area_light(
-    AirlightScene s_50
+    AirlightScene s_51
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
     float k_10 = {};
     float gauss_1 = {};
     uint j_14 = {};
-    bool local_192 = {};
-    AirlightArea _e1 = airlight_area(s_50);
+    bool local_196 = {};
+    AirlightArea _e1 = airlight_area(s_51);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -9281,16 +9450,16 @@ AirlightResult airlight_area_light(
     st_1 = _e13;
     uint max_panels_3 = metal::max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = (2u * max_panels_3) - 1u;
-    uint2 loop_bound_53 = uint2(4294967295u);
-    bool loop_init_52 = true;
+    uint2 loop_bound_55 = uint2(4294967295u);
+    bool loop_init_54 = true;
     while(true) {
-        if (metal::all(loop_bound_53 == uint2(0u))) { break; }
-        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
-        if (!loop_init_52) {
+        if (metal::all(loop_bound_55 == uint2(0u))) { break; }
+        loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
+        if (!loop_init_54) {
             uint _e97 = step_2;
             step_2 = _e97 + 1u;
         }
-        loop_init_52 = false;
+        loop_init_54 = false;
         uint _e24 = step_2;
         if (_e24 < evaluations) {
         } else {
@@ -9299,23 +9468,23 @@ AirlightResult airlight_area_light(
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_24 = 0.5 * (_e27 + _e29);
+            float c_27 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
             float hw_9 = 0.5 * (_e34 - _e36);
             k_10 = 0.0;
             gauss_1 = 0.0;
             j_14 = 0u;
-            uint2 loop_bound_54 = uint2(4294967295u);
-            bool loop_init_53 = true;
+            uint2 loop_bound_56 = uint2(4294967295u);
+            bool loop_init_55 = true;
             while(true) {
-                if (metal::all(loop_bound_54 == uint2(0u))) { break; }
-                loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
-                if (!loop_init_53) {
+                if (metal::all(loop_bound_56 == uint2(0u))) { break; }
+                loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
+                if (!loop_init_55) {
                     uint _e82 = j_14;
                     j_14 = _e82 + 1u;
                 }
-                loop_init_53 = false;
+                loop_init_55 = false;
                 uint _e46 = j_14;
                 if (_e46 < 15u) {
                 } else {
@@ -9327,13 +9496,13 @@ AirlightResult airlight_area_light(
                     uint _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         uint _e66 = j_14;
-                        local_192 = _e66 < 14u;
+                        local_196 = _e66 < 14u;
                     } else {
-                        local_192 = false;
+                        local_196 = false;
                     }
-                    bool _e70 = local_192;
-                    float x_38 = _e70 ? (c_24 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_24 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_50, _e1, x_38);
+                    bool _e70 = local_196;
+                    float x_39 = _e70 ? (c_27 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_51, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -9359,45 +9528,45 @@ AirlightResult airlight_area_light(
     if (!(_e105)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    return AirlightResult {s_50.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
+    return AirlightResult {s_51.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
 }
 
 AirlightResult airlight_in_scatter_area(
-    AirlightScene s_51
+    AirlightScene s_52
 ) {
-    bool local_193 = {};
-    bool local_194 = {};
-    bool _e1 = airlight_valid(s_51);
+    bool local_197 = {};
+    bool local_198 = {};
+    bool _e1 = airlight_valid(s_52);
     if (!(!(_e1))) {
-        local_193 = s_51.light_shape < AIRLIGHT_SHAPE_DISC;
+        local_197 = s_52.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
-        local_193 = true;
+        local_197 = true;
     }
-    bool _e10 = local_193;
+    bool _e10 = local_197;
     if (!(_e10)) {
-        local_194 = s_51.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_198 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_194 = true;
+        local_198 = true;
     }
-    bool _e18 = local_194;
+    bool _e18 = local_198;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_area_light(s_51);
+    AirlightResult _e22 = airlight_area_light(s_52);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_195 = {};
+    bool local_199 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_195 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_199 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_195 = true;
+        local_199 = true;
     }
-    bool _e11 = local_195;
+    bool _e11 = local_199;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9408,26 +9577,26 @@ AirlightResult airlight_node_integral(
     AirlightNode n_4
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_196 = {};
+    bool local_200 = {};
     AirlightCanonical g_29 = {};
-    AirlightScene p_8 = n_4.scene;
+    AirlightScene p_9 = n_4.scene;
     bool _e7 = airlight_vec_finite(n_4.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_4.scene.dir);
-        local_196 = _e11;
+        local_200 = _e11;
     } else {
-        local_196 = false;
+        local_200 = false;
     }
-    bool _e13 = local_196;
+    bool _e13 = local_200;
     if (_e13) {
         g_29 = n_4.canonical;
         if (!(n_4.exact)) {
-            AirlightCanonical _e18 = airlight_canonical(p_8);
-            AirlightCanonical _e19 = airlight_refined(p_8, _e18);
+            AirlightCanonical _e18 = airlight_canonical(p_9);
+            AirlightCanonical _e19 = airlight_refined(p_9, _e18);
             g_29 = _e19;
         }
         AirlightCanonical _e20 = g_29;
-        AirlightResult _e21 = airlight_in_scatter_canonical(p_8, _e20);
+        AirlightResult _e21 = airlight_in_scatter_canonical(p_9, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -9444,61 +9613,61 @@ AirlightResult airlight_point_integral(
 }
 
 AirlightResult airlight_in_scatter_point(
-    AirlightScene s_52
+    AirlightScene s_53
 ) {
-    bool local_197 = {};
-    bool local_198 = {};
-    bool _e1 = airlight_valid(s_52);
+    bool local_201 = {};
+    bool local_202 = {};
+    bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_197 = s_52.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_201 = s_53.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_197 = true;
+        local_201 = true;
     }
-    bool _e10 = local_197;
+    bool _e10 = local_201;
     if (!(_e10)) {
-        local_198 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_202 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_198 = true;
+        local_202 = true;
     }
-    bool _e18 = local_198;
+    bool _e18 = local_202;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_point_integral(s_52);
+    AirlightResult _e22 = airlight_point_integral(s_53);
     return _e22;
 }
 
 AirlightResult airlight_in_scatter_route(
-    AirlightScene s_53
+    AirlightScene s_54
 ) {
-    bool local_199 = {};
-    bool local_200 = {};
-    bool _e1 = airlight_valid(s_53);
+    bool local_203 = {};
+    bool local_204 = {};
+    bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_199 = s_53.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_203 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_199 = true;
+        local_203 = true;
     }
-    bool _e10 = local_199;
+    bool _e10 = local_203;
     if (!(_e10)) {
-        local_200 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_204 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_200 = true;
+        local_204 = true;
     }
-    bool _e18 = local_200;
+    bool _e18 = local_204;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e22 = airlight_canonical(s_53);
-    AirlightCanonical _e23 = airlight_refined(s_53, _e22);
-    AirlightResult _e24 = airlight_limits(s_53, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_54);
+    AirlightCanonical _e23 = airlight_refined(s_54, _e22);
+    AirlightResult _e24 = airlight_limits(s_54, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_53);
+    bool _e29 = airlight_isotropic_scene(s_54);
     if (!(_e29)) {
-        metal::float2 _e31 = airlight_angle_route(s_53, _e23);
+        metal::float2 _e31 = airlight_angle_route(s_54, _e23);
         if (_e31.x > 0.5) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult {metal::max(_e31.y, 0.0), AIRLIGHT_STATUS_OK});
             return _e40;
@@ -9508,24 +9677,24 @@ AirlightResult airlight_in_scatter_route(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_54
+    AirlightScene s_55
 ) {
     AirlightAdaptive st_2 = {};
     uint step_3 = 0u;
     float k_11 = {};
     float gauss_2 = {};
     uint j_15 = {};
-    bool local_201 = {};
+    bool local_205 = {};
     float f = {};
-    bool local_202 = {};
-    bool _e1 = airlight_valid(s_54);
+    bool local_206 = {};
+    bool _e1 = airlight_valid(s_55);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    if (s_54.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_55.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e12 = airlight_outer(s_54);
+    AirlightOuter _e12 = airlight_outer(s_55);
     if (_e12.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -9536,16 +9705,16 @@ AirlightResult airlight_in_scatter(
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges.inner[0], _e12.edges.inner[1]);
     st_2 = _e30;
     uint evaluations_1 = (2u * _e12.max_panels) - 1u;
-    uint2 loop_bound_55 = uint2(4294967295u);
-    bool loop_init_54 = true;
+    uint2 loop_bound_57 = uint2(4294967295u);
+    bool loop_init_56 = true;
     while(true) {
-        if (metal::all(loop_bound_55 == uint2(0u))) { break; }
-        loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
-        if (!loop_init_54) {
+        if (metal::all(loop_bound_57 == uint2(0u))) { break; }
+        loop_bound_57 -= uint2(loop_bound_57.y == 0u, 1u);
+        if (!loop_init_56) {
             uint _e137 = step_3;
             step_3 = _e137 + 1u;
         }
-        loop_init_54 = false;
+        loop_init_56 = false;
         uint _e39 = step_3;
         if (_e39 < evaluations_1) {
         } else {
@@ -9554,23 +9723,23 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_25 = 0.5 * (_e42 + _e44);
+            float c_28 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
             float hw_10 = 0.5 * (_e49 - _e51);
             k_11 = 0.0;
             gauss_2 = 0.0;
             j_15 = 0u;
-            uint2 loop_bound_56 = uint2(4294967295u);
-            bool loop_init_55 = true;
+            uint2 loop_bound_58 = uint2(4294967295u);
+            bool loop_init_57 = true;
             while(true) {
-                if (metal::all(loop_bound_56 == uint2(0u))) { break; }
-                loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
-                if (!loop_init_55) {
+                if (metal::all(loop_bound_58 == uint2(0u))) { break; }
+                loop_bound_58 -= uint2(loop_bound_58.y == 0u, 1u);
+                if (!loop_init_57) {
                     uint _e121 = j_15;
                     j_15 = _e121 + 1u;
                 }
-                loop_init_55 = false;
+                loop_init_57 = false;
                 uint _e61 = j_15;
                 if (_e61 < 7u) {
                 } else {
@@ -9582,25 +9751,25 @@ AirlightResult airlight_in_scatter(
                     uint _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_15;
-                        local_201 = _e81 < 6u;
+                        local_205 = _e81 < 6u;
                     } else {
-                        local_201 = false;
+                        local_205 = false;
                     }
-                    bool _e85 = local_201;
-                    float w_11 = _e85 ? (c_25 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_25 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
-                    AirlightNode _e87 = airlight_outer_node(s_54, _e12, w_11);
+                    bool _e85 = local_205;
+                    float w_11 = _e85 ? (c_28 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    AirlightNode _e87 = airlight_outer_node(s_55, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_202 = s_54.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_55.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_206 = s_55.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_202 = false;
+                            local_206 = false;
                         }
-                        bool _e106 = local_202;
+                        bool _e106 = local_206;
                         if (_e106) {
                             return _e93;
                         }

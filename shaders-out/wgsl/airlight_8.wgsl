@@ -209,6 +209,7 @@ const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
 const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
+const AIRLIGHT_CROSSING_REACH: f32 = 16f;
 
 @group(0) @binding(0) 
 var<storage> airlight_records: array<AirlightScene>;
@@ -4623,8 +4624,8 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
-fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> AirlightEdges {
-    var cuts_1: array<f32, 3>;
+fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> AirlightEdges {
+    var cuts_1: array<f32, 4>;
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
@@ -4639,62 +4640,78 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
         cuts_1[0] = _e13;
         cuts_1[1] = c_10;
     }
-    let _e16 = cuts_1[2];
-    let _e18 = cuts_1[1];
+    let _e16 = cuts_1[3];
+    let _e18 = cuts_1[2];
     if (_e16 < _e18) {
-        let c_11 = cuts_1[1];
-        let _e24 = cuts_1[2];
-        cuts_1[1] = _e24;
-        cuts_1[2] = c_11;
+        let c_11 = cuts_1[2];
+        let _e24 = cuts_1[3];
+        cuts_1[2] = _e24;
+        cuts_1[3] = c_11;
     }
-    let _e27 = cuts_1[1];
+    let _e27 = cuts_1[2];
     let _e29 = cuts_1[0];
     if (_e27 < _e29) {
         let c_12 = cuts_1[0];
-        let _e35 = cuts_1[1];
+        let _e35 = cuts_1[2];
         cuts_1[0] = _e35;
-        cuts_1[1] = c_12;
+        cuts_1[2] = c_12;
+    }
+    let _e38 = cuts_1[3];
+    let _e40 = cuts_1[1];
+    if (_e38 < _e40) {
+        let c_13 = cuts_1[1];
+        let _e46 = cuts_1[3];
+        cuts_1[1] = _e46;
+        cuts_1[3] = c_13;
+    }
+    let _e49 = cuts_1[2];
+    let _e51 = cuts_1[1];
+    if (_e49 < _e51) {
+        let c_14 = cuts_1[1];
+        let _e57 = cuts_1[2];
+        cuts_1[1] = _e57;
+        cuts_1[2] = c_14;
     }
     e_1 = AirlightEdges(array<f32, 13>(lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     loop {
-        let _e45 = i_18;
-        if (_e45 < 3u) {
+        let _e67 = i_18;
+        if (_e67 < 4u) {
         } else {
             break;
         }
         {
-            let _e48 = i_18;
-            let _e50 = cuts_1[_e48];
-            let _e52 = n_1;
-            let _e54 = e_1.at[_e52];
-            if (_e50 > _e54) {
-                let _e58 = i_18;
-                let _e60 = cuts_1[_e58];
-                local_130 = (_e60 < hi_3);
+            let _e70 = i_18;
+            let _e72 = cuts_1[_e70];
+            let _e74 = n_1;
+            let _e76 = e_1.at[_e74];
+            if (_e72 > _e76) {
+                let _e80 = i_18;
+                let _e82 = cuts_1[_e80];
+                local_130 = (_e82 < hi_3);
             } else {
                 local_130 = false;
             }
-            let _e63 = local_130;
-            if _e63 {
-                let _e64 = n_1;
-                n_1 = (_e64 + 1u);
-                let _e68 = n_1;
-                let _e70 = i_18;
-                let _e72 = cuts_1[_e70];
-                e_1.at[_e68] = _e72;
+            let _e85 = local_130;
+            if _e85 {
+                let _e86 = n_1;
+                n_1 = (_e86 + 1u);
+                let _e90 = n_1;
+                let _e92 = i_18;
+                let _e94 = cuts_1[_e92];
+                e_1.at[_e90] = _e94;
             }
         }
         continuing {
-            let _e74 = i_18;
-            i_18 = (_e74 + 1u);
+            let _e96 = i_18;
+            i_18 = (_e96 + 1u);
         }
     }
-    let _e77 = n_1;
-    e_1.at[(_e77 + 1u)] = hi_3;
-    let _e82 = n_1;
-    e_1.panels = (_e82 + 1u);
-    let _e85 = e_1;
-    return _e85;
+    let _e99 = n_1;
+    e_1.at[(_e99 + 1u)] = hi_3;
+    let _e104 = n_1;
+    e_1.panels = (_e104 + 1u);
+    let _e107 = e_1;
+    return _e107;
 }
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
@@ -4990,7 +5007,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
         }
         {
             let _e227 = i_19;
-            let c_13 = cuts_2[_e227];
+            let c_15 = cuts_2[_e227];
             let _e230 = i_19;
             j_4 = _e230;
             loop {
@@ -4998,7 +5015,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_135 = (_e241 > c_13);
+                    local_135 = (_e241 > c_15);
                 } else {
                     local_135 = false;
                 }
@@ -5017,7 +5034,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
                 }
             }
             let _e255 = j_4;
-            cuts_2[_e255] = c_13;
+            cuts_2[_e255] = c_15;
         }
         continuing {
             let _e258 = i_19;
@@ -5245,9 +5262,9 @@ fn airlight_lobe_arcs(g_21: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var sum_6: f32 = 0f;
     var i_23: u32 = 0u;
 
-    let c_14 = (g_21.cos_r * cs.x);
+    let c_16 = (g_21.cos_r * cs.x);
     let d_4 = (g_21.sin_r * cs.y);
-    let peak = (c_14 + d_4);
+    let peak = (c_16 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
@@ -5320,7 +5337,7 @@ fn airlight_outer(s_24: AirlightScene) -> AirlightOuter {
     var local_155: bool;
     var local_156: bool;
     var local_157: bool;
-    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var cuts_3: array<f32, 4> = array<f32, 4>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
     var local_158: bool;
     var i_24: u32 = 0u;
@@ -5472,90 +5489,90 @@ fn airlight_outer(s_24: AirlightScene) -> AirlightOuter {
     g_22.s_star = _e170;
     let _e172 = scale;
     g_22.scale = _e172;
-    let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
-    let _e187 = scale;
-    if (_e187 > 0f) {
-        let _e192 = g_22;
-        let _e194 = airlight_to_w(_e192, 0f);
-        let _e196 = g_22;
-        let _e197 = airlight_to_w(_e196, _e15);
-        local_158 = (min(-(_e194), _e197) < 0.5f);
+    let _e179 = s_star;
+    at = array<f32, 3>(_e179, ((s_24.t_min - along_d) / cos_a_2), ((s_24.t_max - along_d) / cos_a_2));
+    let _e188 = scale;
+    if (_e188 > 0f) {
+        let _e193 = g_22;
+        let _e195 = airlight_to_w(_e193, 0f);
+        let _e197 = g_22;
+        let _e198 = airlight_to_w(_e197, _e15);
+        local_158 = (min(-(_e195), _e198) < 0.5f);
     } else {
         local_158 = false;
     }
     let sliver = local_158;
     loop {
-        let _e205 = i_24;
-        if (_e205 < 3u) {
+        let _e206 = i_24;
+        if (_e206 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_24;
-            if (_e208 == 0u) {
+            let _e209 = i_24;
+            if (_e209 == 0u) {
                 local_159 = sliver;
             } else {
                 local_159 = false;
             }
-            let _e214 = local_159;
-            if _e214 {
+            let _e215 = local_159;
+            if _e215 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_24;
-                local_160 = (_e219 > 0u);
+                let _e220 = i_24;
+                local_160 = (_e220 > 0u);
             } else {
                 local_160 = false;
             }
-            let _e223 = local_160;
-            if _e223 {
+            let _e224 = local_160;
+            if _e224 {
                 continue;
             }
-            let _e224 = i_24;
-            if (_e224 == 2u) {
+            let _e225 = i_24;
+            if (_e225 == 2u) {
                 local_161 = infinite_4;
             } else {
                 local_161 = false;
             }
-            let _e230 = local_161;
-            if _e230 {
+            let _e231 = local_161;
+            if _e231 {
                 continue;
             }
-            let _e231 = i_24;
-            let _e233 = at[_e231];
-            if (_e233 > 0f) {
-                let _e238 = i_24;
-                let _e240 = at[_e238];
-                local_162 = (_e240 < _e15);
+            let _e232 = i_24;
+            let _e234 = at[_e232];
+            if (_e234 > 0f) {
+                let _e239 = i_24;
+                let _e241 = at[_e239];
+                local_162 = (_e241 < _e15);
             } else {
                 local_162 = false;
             }
-            let _e243 = local_162;
-            if _e243 {
-                let _e244 = i_24;
-                let _e246 = g_22;
-                let _e247 = i_24;
-                let _e249 = at[_e247];
-                let _e250 = airlight_to_w(_e246, _e249);
-                cuts_3[_e244] = _e250;
+            let _e244 = local_162;
+            if _e244 {
+                let _e245 = i_24;
+                let _e247 = g_22;
+                let _e248 = i_24;
+                let _e250 = at[_e248];
+                let _e251 = airlight_to_w(_e247, _e250);
+                cuts_3[_e245] = _e251;
             }
         }
         continuing {
-            let _e252 = i_24;
-            i_24 = (_e252 + 1u);
+            let _e253 = i_24;
+            i_24 = (_e253 + 1u);
         }
     }
-    let _e254 = g_22;
-    let _e256 = airlight_to_w(_e254, 0f);
-    let _e257 = g_22;
-    let _e258 = airlight_to_w(_e257, _e15);
-    let _e259 = cuts_3;
-    let _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_22.edges = _e260.at;
-    g_22.panels = _e260.panels;
-    let _e265 = g_22;
-    return _e265;
+    let _e255 = g_22;
+    let _e257 = airlight_to_w(_e255, 0f);
+    let _e258 = g_22;
+    let _e259 = airlight_to_w(_e258, _e15);
+    let _e260 = cuts_3;
+    let _e261 = airlight_edges_between(_e257, _e259, _e260);
+    g_22.edges = _e261.at;
+    g_22.panels = _e261.panels;
+    let _e266 = g_22;
+    return _e266;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -5773,7 +5790,7 @@ fn airlight_in_scatter(s_26: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_1.lo;
             let _e44 = st_1.hi;
-            let c_15 = (0.5f * (_e42 + _e44));
+            let c_17 = (0.5f * (_e42 + _e44));
             let _e49 = st_1.hi;
             let _e51 = st_1.lo;
             let hw_2 = (0.5f * (_e49 - _e51));
@@ -5797,7 +5814,7 @@ fn airlight_in_scatter(s_26: AirlightScene) -> AirlightResult {
                         local_171 = false;
                     }
                     let _e85 = local_171;
-                    let w_8 = select((c_15 + (hw_2 * node_1.x)), (c_15 - (hw_2 * node_1.x)), _e85);
+                    let w_8 = select((c_17 + (hw_2 * node_1.x)), (c_17 - (hw_2 * node_1.x)), _e85);
                     let _e87 = airlight_outer_node(s_26, _e12, w_8);
                     f = 0f;
                     if (_e87.weight != 0f) {

@@ -201,15 +201,15 @@ struct AirlightArea {
     isotropic: bool,
 }
 
+struct AirlightOutline {
+    corners: array<vec2<f32>, 4>,
+    radius: f32,
+}
+
 struct AirlightAbove {
     z: f32,
     off: vec2<f32>,
     rho0_: f32,
-}
-
-struct AirlightOutline {
-    corners: array<vec2<f32>, 4>,
-    radius: f32,
 }
 
 struct AirlightFlatLobe {
@@ -303,6 +303,7 @@ const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
 const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
+const AIRLIGHT_CROSSING_REACH: f32 = 16f;
 
 fn airlight_zero_terms() -> array<f32, 12> {
     return array<f32, 12>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f);
@@ -468,8 +469,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_15 = (x * x);
     let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
-    let s_55 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_55 * x));
+    let s_56 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_56 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -526,10 +527,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_56 = (x_2 / (2f + x_2));
-    let z_17 = (s_56 * s_56);
+    let s_57 = (x_2 / (2f + x_2));
+    let z_17 = (s_57 * s_57);
     let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
-    return ((2f * s_56) * sum_14);
+    return ((2f * s_57) * sum_14);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -599,9 +600,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_29 * x_29) + (y_7 * y_7)) < 1f);
+    return (((x_30 * x_30) + (y_7 * y_7)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -754,8 +755,8 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let nf_1 = f32(n);
     let m_7 = f32(_e2);
     let b_17 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
-    let a_32 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
-    let disc = (1f - ((4f * a_32) / (b_17 * b_17)));
+    let a_33 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
+    let disc = (1f - ((4f * a_33) / (b_17 * b_17)));
     t_2 = b_17;
     if (disc > 0f) {
         t_2 = ((b_17 * (1f + sqrt(disc))) * 0.5f);
@@ -932,8 +933,8 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 14> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_33 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_33 * a_33));
+        let a_34 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_34 * a_34));
     }
     let b_18 = (1f + g_2);
     return ((op * -((g_2 + g_2))) + (b_18 * b_18));
@@ -1030,8 +1031,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_2 * 0.5f))));
             }
-            let x_30 = clamp(((c - p1_2) / width_2), 0f, 1f);
-            return ((x_30 * x_30) * (3f - (2f * x_30)));
+            let x_31 = clamp(((c - p1_2) / width_2), 0f, 1f);
+            return ((x_31 * x_31) * (3f - (2f * x_31)));
         }
         default: {
             return 1f;
@@ -1050,11 +1051,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_34 = abs(g_4);
-    if !((a_34 > 0f)) {
+    let a_35 = abs(g_4);
+    if !((a_35 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_34) * (1f - a_34)) / (a_34 + a_34));
+    return (((1f - a_35) * (1f - a_35)) / (a_35 + a_35));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1068,8 +1069,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_35 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_35) / a_35), (a_35 > 0f)), sigma_1);
+            let a_36 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_36) / a_36), (a_36 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1287,10 +1288,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_31 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_31);
+            let x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_32);
             if _e42 {
-                let _e43 = airlight_log1p(x_31);
+                let _e43 = airlight_log1p(x_32);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1423,8 +1424,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_32 = rule[(i_3 / 2u)].x;
-    return select(x_32, -(x_32), ((i_3 % 2u) == 0u));
+    let x_33 = rule[(i_3 / 2u)].x;
+    return select(x_33, -(x_33), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 12>) -> array<f32, 12> {
@@ -1505,8 +1506,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_33 = (lambda / f32((2u * k0_)));
-            let per_step = (x_33 * x_33);
+            let x_34 = (lambda / f32((2u * k0_)));
+            let per_step = (x_34 * x_34);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -2112,8 +2113,8 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_36 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_36 + sqrt(max(((a_36 * a_36) - 1f), 0f)));
+    let a_37 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_37 + sqrt(max(((a_37 * a_37) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2128,8 +2129,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_34 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_34)), (x_34 > 0f));
+    let x_35 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_35)), (x_35 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2763,13 +2764,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_35 = (abs(alpha) + abs(beta_1));
+    let x_36 = (abs(alpha) + abs(beta_1));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_35) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_36) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2779,7 +2780,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_35) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_36) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2789,7 +2790,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_35) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_36) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2799,7 +2800,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_35) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_36) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2809,7 +2810,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_35) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_36) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2819,7 +2820,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_35) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_36) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2829,7 +2830,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_35) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_36) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2839,7 +2840,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_35) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_36) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2849,7 +2850,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_35) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_36) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2859,7 +2860,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_35) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_36) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2869,7 +2870,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_35) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_36) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2879,7 +2880,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_35) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_36) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -3345,9 +3346,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_37 = abs(p0_4);
+            let a_38 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_37) / a_37), (a_37 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_38) / a_38), (a_38 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -3483,9 +3484,9 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     let a0_ = (k_4 + (sigma_9 * d_el));
     let b0_ = -((d_c + d_c));
     let c0_ = (k_4 - (sigma_9 * d_el));
-    let scale_3 = max(abs(a0_), max(abs(b0_), abs(c0_)));
-    if !(!((scale_3 > 0f))) {
-        let _e21 = airlight_is_finite(scale_3);
+    let scale_4 = max(abs(a0_), max(abs(b0_), abs(c0_)));
+    if !(!((scale_4 > 0f))) {
+        let _e21 = airlight_is_finite(scale_4);
         local_29 = !(_e21);
     } else {
         local_29 = true;
@@ -3494,10 +3495,10 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_38 = (a0_ / scale_3);
-    let b_19 = (b0_ / scale_3);
-    let c_10 = (c0_ / scale_3);
-    let disc_1 = ((b_19 * b_19) - ((4f * a_38) * c_10));
+    let a_39 = (a0_ / scale_4);
+    let b_19 = (b0_ / scale_4);
+    let c_10 = (c0_ / scale_4);
+    let disc_1 = ((b_19 * b_19) - ((4f * a_39) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
@@ -3509,8 +3510,8 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if (q_10 != 0f) {
         r1_ = (c_10 / q_10);
     }
-    if (a_38 != 0f) {
-        r2_2 = (q_10 / a_38);
+    if (a_39 != 0f) {
+        r2_2 = (q_10 / a_39);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3555,15 +3556,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_39 = (sigma_11 * g_15.d_el);
+    let a_40 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_39) / d_3);
-    if (a_39 > 0f) {
-        y1_1 = (d_3 / (a_39 + root_1));
+    let root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_40) / d_3);
+    if (a_40 > 0f) {
+        y1_1 = (d_3 / (a_40 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -5278,8 +5279,8 @@ fn airlight_list_scan(l_2: AirlightPanelList, count_1: u32) -> AirlightListScan 
     return _e329;
 }
 
-fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> AirlightEdges {
-    var cuts_1: array<f32, 3>;
+fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> AirlightEdges {
+    var cuts_1: array<f32, 4>;
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
@@ -5294,62 +5295,78 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 3>) -> Airl
         cuts_1[0] = _e13;
         cuts_1[1] = c_11;
     }
-    let _e16 = cuts_1[2];
-    let _e18 = cuts_1[1];
+    let _e16 = cuts_1[3];
+    let _e18 = cuts_1[2];
     if (_e16 < _e18) {
-        let c_12 = cuts_1[1];
-        let _e24 = cuts_1[2];
-        cuts_1[1] = _e24;
-        cuts_1[2] = c_12;
+        let c_12 = cuts_1[2];
+        let _e24 = cuts_1[3];
+        cuts_1[2] = _e24;
+        cuts_1[3] = c_12;
     }
-    let _e27 = cuts_1[1];
+    let _e27 = cuts_1[2];
     let _e29 = cuts_1[0];
     if (_e27 < _e29) {
         let c_13 = cuts_1[0];
-        let _e35 = cuts_1[1];
+        let _e35 = cuts_1[2];
         cuts_1[0] = _e35;
-        cuts_1[1] = c_13;
+        cuts_1[2] = c_13;
+    }
+    let _e38 = cuts_1[3];
+    let _e40 = cuts_1[1];
+    if (_e38 < _e40) {
+        let c_14 = cuts_1[1];
+        let _e46 = cuts_1[3];
+        cuts_1[1] = _e46;
+        cuts_1[3] = c_14;
+    }
+    let _e49 = cuts_1[2];
+    let _e51 = cuts_1[1];
+    if (_e49 < _e51) {
+        let c_15 = cuts_1[1];
+        let _e57 = cuts_1[2];
+        cuts_1[1] = _e57;
+        cuts_1[2] = c_15;
     }
     e_1 = AirlightEdges(array<f32, 13>(lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     loop {
-        let _e45 = i_18;
-        if (_e45 < 3u) {
+        let _e67 = i_18;
+        if (_e67 < 4u) {
         } else {
             break;
         }
         {
-            let _e48 = i_18;
-            let _e50 = cuts_1[_e48];
-            let _e52 = n_1;
-            let _e54 = e_1.at[_e52];
-            if (_e50 > _e54) {
-                let _e58 = i_18;
-                let _e60 = cuts_1[_e58];
-                local_130 = (_e60 < hi_3);
+            let _e70 = i_18;
+            let _e72 = cuts_1[_e70];
+            let _e74 = n_1;
+            let _e76 = e_1.at[_e74];
+            if (_e72 > _e76) {
+                let _e80 = i_18;
+                let _e82 = cuts_1[_e80];
+                local_130 = (_e82 < hi_3);
             } else {
                 local_130 = false;
             }
-            let _e63 = local_130;
-            if _e63 {
-                let _e64 = n_1;
-                n_1 = (_e64 + 1u);
-                let _e68 = n_1;
-                let _e70 = i_18;
-                let _e72 = cuts_1[_e70];
-                e_1.at[_e68] = _e72;
+            let _e85 = local_130;
+            if _e85 {
+                let _e86 = n_1;
+                n_1 = (_e86 + 1u);
+                let _e90 = n_1;
+                let _e92 = i_18;
+                let _e94 = cuts_1[_e92];
+                e_1.at[_e90] = _e94;
             }
         }
         continuing {
-            let _e74 = i_18;
-            i_18 = (_e74 + 1u);
+            let _e96 = i_18;
+            i_18 = (_e96 + 1u);
         }
     }
-    let _e77 = n_1;
-    e_1.at[(_e77 + 1u)] = hi_3;
-    let _e82 = n_1;
-    e_1.panels = (_e82 + 1u);
-    let _e85 = e_1;
-    return _e85;
+    let _e99 = n_1;
+    e_1.at[(_e99 + 1u)] = hi_3;
+    let _e104 = n_1;
+    e_1.panels = (_e104 + 1u);
+    let _e107 = e_1;
+    return _e107;
 }
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
@@ -5461,10 +5478,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_40 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
-    if (a_40 <= 4096f) {
-        let _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1f + sqrt((1f + (a_40 * a_40)))))));
+    let a_41 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
+    if (a_41 <= 4096f) {
+        let _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1f + sqrt((1f + (a_41 * a_41)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5489,8 +5506,8 @@ fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_18: f32) -> f32 {
-    let a_41 = abs(x_18);
-    let _e8 = airlight_atan(sqrt(((1f - a_41) / (1f + a_41))));
+    let a_42 = abs(x_18);
+    let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
@@ -5500,12 +5517,12 @@ fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_42 = (cos_a * cos_g);
+    let a_43 = (cos_a * cos_g);
     let b_20 = (sin_a * sin_g);
-    if (b_20 <= abs(a_42)) {
-        return select(0f, AIRLIGHT_PI, (a_42 > 0f));
+    if (b_20 <= abs(a_43)) {
+        return select(0f, AIRLIGHT_PI, (a_43 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_42) / b_20), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_43) / b_20), -1f, 1f));
     return _e18;
 }
 
@@ -5588,22 +5605,22 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_36 = dot(_e111, _e112);
+        let x_37 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_36 * x_36) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_36, abs(y_12));
+            let _e140 = airlight_angle(x_37, abs(y_12));
             let phi_r = (select(1f, -1f, (y_12 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_36 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5645,7 +5662,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         }
         {
             let _e227 = i_19;
-            let c_14 = cuts_2[_e227];
+            let c_16 = cuts_2[_e227];
             let _e230 = i_19;
             j_4 = _e230;
             loop {
@@ -5653,7 +5670,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_135 = (_e241 > c_14);
+                    local_135 = (_e241 > c_16);
                 } else {
                     local_135 = false;
                 }
@@ -5672,7 +5689,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 }
             }
             let _e255 = j_4;
-            cuts_2[_e255] = c_14;
+            cuts_2[_e255] = c_16;
         }
         continuing {
             let _e258 = i_19;
@@ -5900,9 +5917,9 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var sum_6: f32 = 0f;
     var i_23: u32 = 0u;
 
-    let c_15 = (g_23.cos_r * cs.x);
+    let c_17 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
-    let peak = (c_15 + d_4);
+    let peak = (c_17 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
@@ -5975,7 +5992,7 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     var local_155: bool;
     var local_156: bool;
     var local_157: bool;
-    var cuts_3: array<f32, 3> = array<f32, 3>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var cuts_3: array<f32, 4> = array<f32, 4>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
     var local_158: bool;
     var i_24: u32 = 0u;
@@ -6127,90 +6144,90 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     g_24.s_star = _e170;
     let _e172 = scale;
     g_24.scale = _e172;
-    let _e178 = s_star;
-    at = array<f32, 3>(_e178, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
-    let _e187 = scale;
-    if (_e187 > 0f) {
-        let _e192 = g_24;
-        let _e194 = airlight_to_w(_e192, 0f);
-        let _e196 = g_24;
-        let _e197 = airlight_to_w(_e196, _e15);
-        local_158 = (min(-(_e194), _e197) < 0.5f);
+    let _e179 = s_star;
+    at = array<f32, 3>(_e179, ((s_26.t_min - along_d) / cos_a_2), ((s_26.t_max - along_d) / cos_a_2));
+    let _e188 = scale;
+    if (_e188 > 0f) {
+        let _e193 = g_24;
+        let _e195 = airlight_to_w(_e193, 0f);
+        let _e197 = g_24;
+        let _e198 = airlight_to_w(_e197, _e15);
+        local_158 = (min(-(_e195), _e198) < 0.5f);
     } else {
         local_158 = false;
     }
     let sliver = local_158;
     loop {
-        let _e205 = i_24;
-        if (_e205 < 3u) {
+        let _e206 = i_24;
+        if (_e206 < 3u) {
         } else {
             break;
         }
         {
-            let _e208 = i_24;
-            if (_e208 == 0u) {
+            let _e209 = i_24;
+            if (_e209 == 0u) {
                 local_159 = sliver;
             } else {
                 local_159 = false;
             }
-            let _e214 = local_159;
-            if _e214 {
+            let _e215 = local_159;
+            if _e215 {
                 continue;
             }
             if (cos_a_2 == 0f) {
-                let _e219 = i_24;
-                local_160 = (_e219 > 0u);
+                let _e220 = i_24;
+                local_160 = (_e220 > 0u);
             } else {
                 local_160 = false;
             }
-            let _e223 = local_160;
-            if _e223 {
+            let _e224 = local_160;
+            if _e224 {
                 continue;
             }
-            let _e224 = i_24;
-            if (_e224 == 2u) {
+            let _e225 = i_24;
+            if (_e225 == 2u) {
                 local_161 = infinite_5;
             } else {
                 local_161 = false;
             }
-            let _e230 = local_161;
-            if _e230 {
+            let _e231 = local_161;
+            if _e231 {
                 continue;
             }
-            let _e231 = i_24;
-            let _e233 = at[_e231];
-            if (_e233 > 0f) {
-                let _e238 = i_24;
-                let _e240 = at[_e238];
-                local_162 = (_e240 < _e15);
+            let _e232 = i_24;
+            let _e234 = at[_e232];
+            if (_e234 > 0f) {
+                let _e239 = i_24;
+                let _e241 = at[_e239];
+                local_162 = (_e241 < _e15);
             } else {
                 local_162 = false;
             }
-            let _e243 = local_162;
-            if _e243 {
-                let _e244 = i_24;
-                let _e246 = g_24;
-                let _e247 = i_24;
-                let _e249 = at[_e247];
-                let _e250 = airlight_to_w(_e246, _e249);
-                cuts_3[_e244] = _e250;
+            let _e244 = local_162;
+            if _e244 {
+                let _e245 = i_24;
+                let _e247 = g_24;
+                let _e248 = i_24;
+                let _e250 = at[_e248];
+                let _e251 = airlight_to_w(_e247, _e250);
+                cuts_3[_e245] = _e251;
             }
         }
         continuing {
-            let _e252 = i_24;
-            i_24 = (_e252 + 1u);
+            let _e253 = i_24;
+            i_24 = (_e253 + 1u);
         }
     }
-    let _e254 = g_24;
-    let _e256 = airlight_to_w(_e254, 0f);
-    let _e257 = g_24;
-    let _e258 = airlight_to_w(_e257, _e15);
-    let _e259 = cuts_3;
-    let _e260 = airlight_edges_between(_e256, _e258, _e259);
-    g_24.edges = _e260.at;
-    g_24.panels = _e260.panels;
-    let _e265 = g_24;
-    return _e265;
+    let _e255 = g_24;
+    let _e257 = airlight_to_w(_e255, 0f);
+    let _e258 = g_24;
+    let _e259 = airlight_to_w(_e258, _e15);
+    let _e260 = cuts_3;
+    let _e261 = airlight_edges_between(_e257, _e259, _e260);
+    g_24.edges = _e261.at;
+    g_24.panels = _e261.panels;
+    let _e266 = g_24;
+    return _e266;
 }
 
 fn airlight_no_canonical() -> AirlightCanonical {
@@ -6236,15 +6253,15 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_40 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_9 = (x_21 - f32(i_40));
-        let a_43 = g_25.gamma[i_40];
-        let b_21 = g_25.gamma[(i_40 + 1u)];
-        let w_8 = (b_21 - a_43);
+        let i_42 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_9 = (x_21 - f32(i_42));
+        let a_44 = g_25.gamma[i_42];
+        let b_21 = g_25.gamma[(i_42 + 1u)];
+        let w_8 = (b_21 - a_44);
         let u_8 = (1f - t_9);
-        let smooth_a = (((g_25.smooth_edges >> i_40) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_40 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        let smooth_a = (((g_25.smooth_edges >> i_42) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
         jacobian = (((w_8 * 6f) * t_9) * u_8);
         let _e58 = gamma_1;
         if smooth_b {
@@ -6253,7 +6270,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_43 + ((w_8 * t_9) * t_9)), _e66);
+        gamma_1 = select(_e58, (a_44 + ((w_8 * t_9) * t_9)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -6285,7 +6302,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_43 + (w_8 * t_9)), _e102);
+        gamma_1 = select(_e96, (a_44 + (w_8 * t_9)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -6560,8 +6577,8 @@ fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_44 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_44) / a_44), (a_44 > 0f)));
+            let a_45 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_45) / a_45), (a_45 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6611,53 +6628,114 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     return _e7;
 }
 
-fn airlight_area(s_35: AirlightScene) -> AirlightArea {
-    var a_18: AirlightArea;
+fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
+    var nearest: vec2<f32> = vec2(340282350000000000000000000000000000000f);
+    var i_27: u32 = 0u;
+
+    if (o.radius > 0f) {
+        let c_18 = o.corners[0];
+        return vec2<f32>(abs((sqrt(((c_18.x * c_18.x) + (c_18.y * c_18.y))) - o.radius)), AIRLIGHT_FLT_MAX);
+    }
+    loop {
+        let _e24 = i_27;
+        if (_e24 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e28 = i_27;
+            let a_46 = o.corners[_e28];
+            let _e31 = i_27;
+            let e_15 = (o.corners[((_e31 + 1u) % 4u)] - a_46);
+            let p_4 = (a_46 + (clamp((-(((a_46.x * e_15.x) + (a_46.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
+            let distance_ = sqrt(((p_4.x * p_4.x) + (p_4.y * p_4.y)));
+            let _e68 = nearest.x;
+            if (distance_ < _e68) {
+                let _e71 = nearest.x;
+                nearest = vec2<f32>(distance_, _e71);
+            } else {
+                let _e74 = nearest.y;
+                if (distance_ < _e74) {
+                    nearest.y = distance_;
+                }
+            }
+        }
+        continuing {
+            let _e78 = i_27;
+            i_27 = (_e78 + 1u);
+        }
+    }
+    let _e80 = nearest;
+    return _e80;
+}
+
+fn airlight_outline_at(s_35: AirlightScene, a_18: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
+    let rel = (x_22 - a_18.c);
+    let foot = vec2<f32>(dot(rel, a_18.a1_), dot(rel, a_18.a2_));
+    let zero = vec2(0f);
+    if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
+        return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_18.radius);
+    }
+    let u2_ = vec2<f32>(dot(a_18.eu, a_18.a1_), dot(a_18.eu, a_18.a2_));
+    let v2_ = vec2<f32>(dot(a_18.ev, a_18.a1_), dot(a_18.ev, a_18.a2_));
+    return AirlightOutline(array<vec2<f32>, 4>(-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0f);
+}
+
+fn airlight_area(s_36: AirlightScene) -> AirlightArea {
+    var a_19: AirlightArea;
     var local_172: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
     var cut1_: f32 = 0f;
+    var distances: vec2<f32> = vec2(340282350000000000000000000000000000000f);
+    var front: f32 = 1f;
     var centre: vec3<f32>;
     var size: f32;
     var t_end_1: f32;
     var end_infinite: bool;
     var local_173: bool;
-    var cuts_4: array<f32, 3>;
-    var i_27: u32 = 0u;
+    var cuts_4: array<f32, 4>;
+    var scale_1: f32 = 1f;
     var local_174: bool;
     var local_175: bool;
     var local_176: bool;
+    var local_177: bool;
+    var i_28: u32 = 0u;
+    var i_29: u32 = 0u;
+    var local_178: bool;
+    var local_179: bool;
+    var local_180: bool;
 
-    let zero = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_35);
-    a_18 = AirlightArea(zero, s_35.light_position, zero, zero, zero, zero, zero, zero, s_35.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    let _e28 = airlight_isotropic_phase(s_35);
-    a_18.isotropic = _e28;
-    if !((s_35.intensity == 0f)) {
-        local_172 = (s_35.sigma_s == 0f);
+    let zero_1 = vec3(0f);
+    let _e21 = airlight_phase_lobes(s_36);
+    a_19 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    let _e28 = airlight_isotropic_phase(s_36);
+    a_19.isotropic = _e28;
+    if !((s_36.intensity == 0f)) {
+        local_172 = (s_36.sigma_s == 0f);
     } else {
         local_172 = true;
     }
     let _e39 = local_172;
     if _e39 {
-        a_18.outcome = 1u;
-        let _e42 = a_18;
+        a_19.outcome = 1u;
+        let _e42 = a_19;
         return _e42;
     }
-    let o_6 = s_35.origin;
-    let _e45 = airlight_normalize(s_35.dir);
-    a_18.d = _e45;
-    let infinite_6 = ((s_35.flags & 1u) != 0u);
-    let t0_2 = s_35.t_min;
-    centre = s_35.light_position;
-    size = s_35.light_param_a;
-    if (s_35.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        let _e67 = a_18.c;
-        let oc = (o_6 - _e67);
+    let o_7 = s_36.origin;
+    let _e45 = airlight_normalize(s_36.dir);
+    a_19.d = _e45;
+    let infinite_6 = ((s_36.flags & 1u) != 0u);
+    let t0_2 = s_36.t_min;
+    centre = s_36.light_position;
+    size = s_36.light_param_a;
+    if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+        let _e72 = a_19.c;
+        let oc = (o_7 - _e72);
         let b_22 = dot(oc, _e45);
-        let _e72 = a_18.radius;
-        let _e74 = a_18.radius;
-        let k_12 = (dot(oc, oc) - (_e72 * _e74));
+        let _e77 = a_19.radius;
+        let _e79 = a_19.radius;
+        let k_12 = (dot(oc, oc) - (_e77 * _e79));
         let disc_2 = ((b_22 * b_22) - k_12);
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
@@ -6667,285 +6745,361 @@ fn airlight_area(s_35: AirlightScene) -> AirlightArea {
             cut_count = 2u;
         }
     } else {
-        if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e98 = airlight_normalize(s_35.light_axis);
-            a_18.n = _e98;
-            let _e101 = a_18.n;
-            let _e102 = airlight_basis_e1_(_e101);
-            a_18.a1_ = _e102;
+        if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e103 = airlight_normalize(s_36.light_axis);
+            a_19.n = _e103;
+            let _e106 = a_19.n;
+            let _e107 = airlight_basis_e1_(_e106);
+            a_19.a1_ = _e107;
         } else {
-            a_18.eu = s_35.light_axis;
-            a_18.ev = s_35.light_end;
-            let _e109 = a_18.eu;
-            let _e111 = a_18.ev;
-            let _e113 = airlight_normalize(cross(_e109, _e111));
-            a_18.n = _e113;
-            let _e116 = a_18.eu;
-            let _e117 = airlight_normalize(_e116);
-            a_18.a1_ = _e117;
-            let _e119 = a_18.eu;
-            let _e121 = a_18.ev;
-            let diagonal = (_e119 + _e121);
-            let _e124 = a_18.c;
-            centre = (_e124 + (0.5f * diagonal));
-            let _e128 = airlight_safe_length(diagonal);
-            let _e130 = a_18.eu;
-            let _e132 = a_18.ev;
-            let _e134 = airlight_safe_length((_e130 - _e132));
-            size = (0.5f * max(_e128, _e134));
+            a_19.eu = s_36.light_axis;
+            a_19.ev = s_36.light_end;
+            let _e114 = a_19.eu;
+            let _e116 = a_19.ev;
+            let _e118 = airlight_normalize(cross(_e114, _e116));
+            a_19.n = _e118;
+            let _e121 = a_19.eu;
+            let _e122 = airlight_normalize(_e121);
+            a_19.a1_ = _e122;
+            let _e124 = a_19.eu;
+            let _e126 = a_19.ev;
+            let diagonal = (_e124 + _e126);
+            let _e129 = a_19.c;
+            centre = (_e129 + (0.5f * diagonal));
+            let _e133 = airlight_safe_length(diagonal);
+            let _e135 = a_19.eu;
+            let _e137 = a_19.ev;
+            let _e139 = airlight_safe_length((_e135 - _e137));
+            size = (0.5f * max(_e133, _e139));
         }
-        let _e140 = a_18.n;
-        let _e142 = a_18.a1_;
-        a_18.a2_ = cross(_e140, _e142);
-        let _e146 = a_18.a1_;
-        let _e149 = a_18.a2_;
-        let _e152 = a_18.n;
-        a_18.dirs = vec3<f32>(dot(_e146, _e45), dot(_e149, _e45), dot(_e152, _e45));
-        let _e156 = a_18.c;
-        let _e159 = a_18.n;
-        let _e162 = a_18.n;
-        cut0_ = (dot((_e156 - o_6), _e159) / dot(_e45, _e162));
+        let _e145 = a_19.n;
+        let _e147 = a_19.a1_;
+        a_19.a2_ = cross(_e145, _e147);
+        let _e151 = a_19.a1_;
+        let _e154 = a_19.a2_;
+        let _e157 = a_19.n;
+        a_19.dirs = vec3<f32>(dot(_e151, _e45), dot(_e154, _e45), dot(_e157, _e45));
+        let _e161 = a_19.c;
+        let _e164 = a_19.n;
+        let _e167 = a_19.n;
+        cut0_ = (dot((_e161 - o_7), _e164) / dot(_e45, _e167));
         cut_count = 1u;
+        let _e171 = a_19;
+        let _e172 = cut0_;
+        let _e175 = airlight_outline_at(s_36, _e171, (o_7 + (_e172 * _e45)));
+        let _e176 = airlight_outline_distances(_e175);
+        distances = _e176;
+        let _e178 = a_19.n;
+        front = select(1f, -1f, (dot(_e45, _e178) < 0f));
     }
-    let _e166 = size;
-    if !((_e166 > 0f)) {
-        a_18.outcome = 1u;
-        let _e172 = a_18;
-        return _e172;
-    }
-    let _e173 = centre;
-    let to_centre = (_e173 - o_6);
-    a_18.x_h = dot(to_centre, _e45);
-    let _e178 = a_18.x_h;
-    let _e181 = airlight_safe_length((to_centre - (_e178 * _e45)));
-    let _e184 = size;
     let _e185 = size;
-    a_18.h_eff = sqrt(((_e181 * _e181) + (_e184 * _e185)));
-    t_end_1 = s_35.t_max;
+    if !((_e185 > 0f)) {
+        a_19.outcome = 1u;
+        let _e191 = a_19;
+        return _e191;
+    }
+    let _e192 = centre;
+    let to_centre = (_e192 - o_7);
+    a_19.x_h = dot(to_centre, _e45);
+    let _e197 = a_19.x_h;
+    let _e200 = airlight_safe_length((to_centre - (_e197 * _e45)));
+    let _e203 = size;
+    let _e204 = size;
+    a_19.h_eff = sqrt(((_e200 * _e200) + (_e203 * _e204)));
+    t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
-    if (s_35.sigma_t > 0f) {
-        let _e195 = centre;
-        let _e199 = airlight_safe_length((_e195 - (o_6 + (t0_2 * _e45))));
-        let _e201 = size;
-        let reach_1 = (((t0_2 + _e199) + _e201) - (-15.942385f / s_35.sigma_t));
+    if (s_36.sigma_t > 0f) {
+        let _e214 = centre;
+        let _e218 = airlight_safe_length((_e214 - (o_7 + (t0_2 * _e45))));
+        let _e220 = size;
+        let reach_1 = (((t0_2 + _e218) + _e220) - (-15.942385f / s_36.sigma_t));
         if !(infinite_6) {
-            let _e210 = t_end_1;
-            local_173 = (reach_1 < _e210);
+            let _e229 = t_end_1;
+            local_173 = (reach_1 < _e229);
         } else {
             local_173 = true;
         }
-        let _e213 = local_173;
-        if _e213 {
+        let _e232 = local_173;
+        if _e232 {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    let _e215 = a_18;
-    let _e217 = airlight_area_theta(_e215, t0_2, false);
-    let _e218 = a_18;
-    let _e219 = t_end_1;
-    let _e220 = end_infinite;
-    let _e221 = airlight_area_theta(_e218, _e219, _e220);
-    let _e223 = a_18.x_h;
-    let _e225 = a_18.x_h;
-    let _e226 = cut0_;
-    let _e227 = cut_count;
-    let _e232 = a_18.x_h;
-    let _e233 = cut1_;
-    let _e234 = cut_count;
-    cuts_4 = array<f32, 3>(_e223, select(_e225, _e226, (_e227 > 0u)), select(_e232, _e233, (_e234 > 1u)));
+    let _e234 = a_19;
+    let _e236 = airlight_area_theta(_e234, t0_2, false);
+    let _e237 = a_19;
+    let _e238 = t_end_1;
+    let _e239 = end_infinite;
+    let _e240 = airlight_area_theta(_e237, _e238, _e239);
+    let _e242 = a_19.x_h;
+    let _e244 = a_19.x_h;
+    let _e245 = cut0_;
+    let _e246 = cut_count;
+    let _e251 = a_19.x_h;
+    let _e252 = cut1_;
+    let _e253 = cut_count;
+    let _e258 = a_19.x_h;
+    cuts_4 = array<f32, 4>(_e242, select(_e244, _e245, (_e246 > 0u)), select(_e251, _e252, (_e253 > 1u)), _e258);
+    let _e265 = a_19.lobes.y;
+    if (_e265 > 0f) {
+        let _e268 = scale_1;
+        let _e271 = a_19.lobes.y;
+        scale_1 = min(_e268, _e271);
+    }
+    let _e275 = a_19.lobes.w;
+    if (_e275 > 0f) {
+        let _e278 = scale_1;
+        let _e281 = a_19.lobes.w;
+        scale_1 = min(_e278, _e281);
+    }
+    let _e283 = cut_count;
+    if (_e283 == 1u) {
+        let _e288 = scale_1;
+        local_174 = (_e288 < 1f);
+    } else {
+        local_174 = false;
+    }
+    let _e292 = local_174;
+    if _e292 {
+        let _e295 = cut0_;
+        local_175 = (_e295 >= t0_2);
+    } else {
+        local_175 = false;
+    }
+    let _e298 = local_175;
+    if _e298 {
+        let _e301 = end_infinite;
+        if !(_e301) {
+            let _e305 = cut0_;
+            let _e306 = t_end_1;
+            local_177 = (_e305 <= _e306);
+        } else {
+            local_177 = true;
+        }
+        let _e309 = local_177;
+        local_176 = _e309;
+    } else {
+        local_176 = false;
+    }
+    let _e311 = local_176;
+    if _e311 {
+        loop {
+            let _e314 = i_28;
+            if (_e314 < 2u) {
+            } else {
+                break;
+            }
+            {
+                let _e318 = i_28;
+                let _e320 = distances[_e318];
+                let _e322 = scale_1;
+                let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e320) / _e322);
+                let _e325 = a_19.h_eff;
+                if (reach_2 < _e325) {
+                    let _e327 = i_28;
+                    let _e331 = cut0_;
+                    let _e332 = front;
+                    cuts_4[(_e327 + 2u)] = (_e331 + (_e332 * reach_2));
+                }
+            }
+            continuing {
+                let _e336 = i_28;
+                i_28 = (_e336 + 1u);
+            }
+        }
+    }
     loop {
-        let _e242 = i_27;
-        if (_e242 < 3u) {
+        let _e340 = i_29;
+        if (_e340 < 4u) {
         } else {
             break;
         }
         {
-            let _e245 = i_27;
-            let t_10 = cuts_4[_e245];
-            let _e248 = i_27;
-            cuts_4[_e248] = _e217;
-            let _e250 = airlight_is_finite(t_10);
-            if _e250 {
-                local_174 = (t_10 >= t0_2);
+            let _e343 = i_29;
+            let t_10 = cuts_4[_e343];
+            let _e346 = i_29;
+            cuts_4[_e346] = _e236;
+            let _e348 = airlight_is_finite(t_10);
+            if _e348 {
+                local_178 = (t_10 >= t0_2);
             } else {
-                local_174 = false;
+                local_178 = false;
             }
-            let _e255 = local_174;
-            if _e255 {
-                let _e258 = end_infinite;
-                if !(_e258) {
-                    let _e262 = t_end_1;
-                    local_176 = (t_10 <= _e262);
+            let _e353 = local_178;
+            if _e353 {
+                let _e356 = end_infinite;
+                if !(_e356) {
+                    let _e360 = t_end_1;
+                    local_180 = (t_10 <= _e360);
                 } else {
-                    local_176 = true;
+                    local_180 = true;
                 }
-                let _e265 = local_176;
-                local_175 = _e265;
+                let _e363 = local_180;
+                local_179 = _e363;
             } else {
-                local_175 = false;
+                local_179 = false;
             }
-            let _e267 = local_175;
-            if _e267 {
-                let _e268 = i_27;
-                let _e270 = a_18;
-                let _e272 = airlight_area_theta(_e270, t_10, false);
-                cuts_4[_e268] = _e272;
+            let _e365 = local_179;
+            if _e365 {
+                let _e366 = i_29;
+                let _e368 = a_19;
+                let _e370 = airlight_area_theta(_e368, t_10, false);
+                cuts_4[_e366] = _e370;
             }
         }
         continuing {
-            let _e274 = i_27;
-            i_27 = (_e274 + 1u);
+            let _e372 = i_29;
+            i_29 = (_e372 + 1u);
         }
     }
-    let _e276 = cuts_4;
-    let _e277 = airlight_edges_between(_e217, _e221, _e276);
-    a_18.edges = _e277.at;
-    a_18.panels = _e277.panels;
-    let _e282 = a_18;
-    return _e282;
+    let _e374 = cuts_4;
+    let _e375 = airlight_edges_between(_e236, _e240, _e374);
+    a_19.edges = _e375.at;
+    a_19.panels = _e375.panels;
+    let _e380 = a_19;
+    return _e380;
 }
 
 fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_36: AirlightScene, a_19: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+fn airlight_flat_node(s_37: AirlightScene, a_20: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     let dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    let p_4 = (above_1.off + (r_13 * e_3));
+    let p_5 = (above_1.off + (r_13 * e_3));
     let z_19 = above_1.z;
-    let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    let dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_36, ((((p_4.x * a_19.dirs.x) + (p_4.y * a_19.dirs.y)) - (z_19 * a_19.dirs.z)) * inv_5));
-    let _e52 = airlight_emitted(s_36, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_36.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    let _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_19 * a_20.dirs.z)) * inv_5));
+    let _e52 = airlight_emitted(s_37, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_37: AirlightScene, a_20: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_38: AirlightScene, a_21: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    let _e8 = airlight_graded_range(s_37, _e7);
+    let _e8 = airlight_graded_range(s_38, _e7);
     let graded_6 = _e8.y;
-    let c_16 = (0.5f * _e8.x);
+    let c_19 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_37, a_20, above_2, e_4, graded_6, (c_16 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
 }
 
-fn airlight_outline_boundary(o: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
+fn airlight_outline_boundary(o_1: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
     var best: f32 = AIRLIGHT_FLT_MAX;
-    var nearest: vec2<f32>;
+    var nearest_1: vec2<f32>;
     var inside: bool = true;
-    var i_28: u32 = 0u;
-    var local_177: bool;
+    var i_30: u32 = 0u;
+    var local_181: bool;
 
-    if (o.radius > 0f) {
-        let qc = (q_4 - o.corners[0]);
+    if (o_1.radius > 0f) {
+        let qc = (q_4 - o_1.corners[0]);
         let dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
-        return vec3<f32>((o.corners[0] + ((qc * o.radius) / vec2(dq))), select(0f, 1f, (dq <= o.radius)));
+        return vec3<f32>((o_1.corners[0] + ((qc * o_1.radius) / vec2(dq))), select(0f, 1f, (dq <= o_1.radius)));
     }
-    nearest = q_4;
+    nearest_1 = q_4;
     loop {
-        let _e36 = i_28;
+        let _e36 = i_30;
         if (_e36 < 4u) {
         } else {
             break;
         }
         {
-            let _e40 = i_28;
-            let a_45 = o.corners[_e40];
-            let _e43 = i_28;
-            let e_15 = (o.corners[((_e43 + 1u) % 4u)] - a_45);
+            let _e40 = i_30;
+            let a_47 = o_1.corners[_e40];
+            let _e43 = i_30;
+            let e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_47);
             let _e50 = inside;
             if _e50 {
-                local_177 = ((((q_4.x - a_45.x) * e_15.y) - ((q_4.y - a_45.y) * e_15.x)) <= 0f);
+                local_181 = ((((q_4.x - a_47.x) * e_16.y) - ((q_4.y - a_47.y) * e_16.x)) <= 0f);
             } else {
-                local_177 = false;
+                local_181 = false;
             }
-            let _e67 = local_177;
+            let _e67 = local_181;
             inside = _e67;
-            let t_11 = clamp(((((q_4.x - a_45.x) * e_15.x) + ((q_4.y - a_45.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f);
-            let p_5 = (a_45 + (t_11 * e_15));
-            let dd = (((p_5.x - q_4.x) * (p_5.x - q_4.x)) + ((p_5.y - q_4.y) * (p_5.y - q_4.y)));
+            let t_11 = clamp(((((q_4.x - a_47.x) * e_16.x) + ((q_4.y - a_47.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0f, 1f);
+            let p_6 = (a_47 + (t_11 * e_16));
+            let dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
                 best = dd;
-                nearest = p_5;
+                nearest_1 = p_6;
             }
         }
         continuing {
-            let _e110 = i_28;
-            i_28 = (_e110 + 1u);
+            let _e110 = i_30;
+            i_30 = (_e110 + 1u);
         }
     }
-    let _e112 = nearest;
+    let _e112 = nearest_1;
     let _e113 = inside;
     return vec3<f32>(_e112, select(0f, 1f, _e113));
 }
 
-fn airlight_outline_nearest(o_1: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
-    let _e2 = airlight_outline_boundary(o_1, q_5);
+fn airlight_outline_nearest(o_2: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
+    let _e2 = airlight_outline_boundary(o_2, q_5);
     return select(_e2.xy, q_5, (_e2.z > 0f));
 }
 
-fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
+fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_5: u32 = 0u;
-    var local_178: bool;
-    var local_179: bool;
-    var local_180: bool;
+    var local_182: bool;
+    var local_183: bool;
+    var local_184: bool;
 
     let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
@@ -6956,36 +7110,36 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
         }
         {
             let _e20 = j_5;
-            let lobe_4 = select(a_21.lobes.xy, a_21.lobes.zw, (_e20 == 1u));
-            let p_6 = (lobe_4.x * a_21.dirs);
+            let lobe_4 = select(a_22.lobes.xy, a_22.lobes.zw, (_e20 == 1u));
+            let p_7 = (lobe_4.x * a_22.dirs);
             if (lobe_4.y > 0f) {
-                local_178 = (p_6.z < 0f);
+                local_182 = (p_7.z < 0f);
             } else {
-                local_178 = false;
+                local_182 = false;
             }
-            let _e36 = local_178;
+            let _e36 = local_182;
             if _e36 {
-                local_179 = (lobe_4.y < (_e10 + _e10));
+                local_183 = (lobe_4.y < (_e10 + _e10));
             } else {
-                local_179 = false;
+                local_183 = false;
             }
-            let _e43 = local_179;
+            let _e43 = local_183;
             if _e43 {
-                let l_4 = (z_11 / -(p_6.z));
-                let q_13 = (l_4 * p_6.xy);
-                let _e49 = airlight_outline_nearest(o_2, q_13);
+                let l_4 = (z_11 / -(p_7.z));
+                let q_13 = (l_4 * p_7.xy);
+                let _e49 = airlight_outline_nearest(o_3, q_13);
                 let to_near = vec3<f32>(_e49, -(z_11));
-                let cos_1 = min((dot(p_6, to_near) / sqrt(dot(to_near, to_near))), 1f);
+                let cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1f);
                 let on_emitter = (length((_e49 - q_13)) <= (0.0000019073486f * ((length(q_13) + size_1) + z_11)));
                 if !(on_emitter) {
                     let _e69 = airlight_acos(cos_1);
-                    local_180 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
                 } else {
-                    local_180 = true;
+                    local_184 = true;
                 }
-                let _e75 = local_180;
+                let _e75 = local_184;
                 if _e75 {
-                    return AirlightFlatLobe(p_6, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
+                    return AirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
                 }
             }
         }
@@ -6997,9 +7151,9 @@ fn airlight_flat_lobe(a_21: AirlightArea, z_11: f32, o_2: AirlightOutline, centr
     return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f), false);
 }
 
-fn airlight_radial_rule(i_29: u32) -> vec2<f32> {
+fn airlight_radial_rule(i_31: u32) -> vec2<f32> {
     let rule_4 = array<vec2<f32>, 16>(vec2<f32>(-0.09501251f, 0.1894506f), vec2<f32>(0.09501251f, 0.1894506f), vec2<f32>(-0.28160354f, 0.18260342f), vec2<f32>(0.28160354f, 0.18260342f), vec2<f32>(-0.45801678f, 0.16915652f), vec2<f32>(0.45801678f, 0.16915652f), vec2<f32>(-0.61787623f, 0.14959599f), vec2<f32>(0.61787623f, 0.14959599f), vec2<f32>(-0.7554044f, 0.12462897f), vec2<f32>(0.7554044f, 0.12462897f), vec2<f32>(-0.8656312f, 0.09515851f), vec2<f32>(0.8656312f, 0.09515851f), vec2<f32>(-0.944575f, 0.062253524f), vec2<f32>(0.944575f, 0.062253524f), vec2<f32>(-0.9894009f, 0.02715246f), vec2<f32>(0.9894009f, 0.02715246f));
-    return rule_4[i_29];
+    return rule_4[i_31];
 }
 
 fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
@@ -7011,9 +7165,9 @@ fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
     return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
-fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
-    let m_13 = vec2<f32>((b_13.y - a_22.y), (a_22.x - b_13.x));
-    let num = (((q_6.x - a_22.x) * m_13.x) + ((q_6.y - a_22.y) * m_13.y));
+fn airlight_clip(chord: vec2<f32>, a_23: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
+    let m_13 = vec2<f32>((b_13.y - a_23.y), (a_23.x - b_13.x));
+    let num = (((q_6.x - a_23.x) * m_13.x) + ((q_6.y - a_23.y) * m_13.y));
     let den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if (den > 0f) {
         return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
@@ -7027,22 +7181,22 @@ fn airlight_clip(chord: vec2<f32>, a_22: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f
     return chord;
 }
 
-fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
+fn airlight_outline_chord(o_4: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
     var chord_1: vec2<f32> = vec2<f32>(0f, 340282350000000000000000000000000000000f);
 
-    if (o_3.radius > 0f) {
-        let qc_1 = (q_7 - o_3.corners[0]);
-        let a_46 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+    if (o_4.radius > 0f) {
+        let qc_1 = (q_7 - o_4.corners[0]);
+        let a_48 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_13 = ((dq_1 - o_3.radius) * (dq_1 + o_3.radius));
-        let disc_3 = ((b_23 * b_23) - (a_46 * k_13));
+        let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        let disc_3 = ((b_23 * b_23) - (a_48 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
         let t_12 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
-        let r1_2 = (t_12 / a_46);
+        let r1_2 = (t_12 / a_48);
         let r2_4 = (k_13 / t_12);
         let hi_8 = max(r1_2, r2_4);
         if !((hi_8 > 0f)) {
@@ -7051,21 +7205,21 @@ fn airlight_outline_chord(o_3: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
         return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_8);
     }
     let _e70 = chord_1;
-    let _e75 = airlight_clip(_e70, o_3.corners[0], o_3.corners[1], q_7, e_6);
+    let _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_7, e_6);
     chord_1 = _e75;
     let _e76 = chord_1;
-    let _e81 = airlight_clip(_e76, o_3.corners[1], o_3.corners[2], q_7, e_6);
+    let _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_7, e_6);
     chord_1 = _e81;
     let _e82 = chord_1;
-    let _e87 = airlight_clip(_e82, o_3.corners[2], o_3.corners[3], q_7, e_6);
+    let _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_7, e_6);
     chord_1 = _e87;
     let _e88 = chord_1;
-    let _e93 = airlight_clip(_e88, o_3.corners[3], o_3.corners[0], q_7, e_6);
+    let _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_7, e_6);
     return _e93;
 }
 
-fn airlight_graded_from(scale_1: f32, start_1: f32, to: f32) -> vec2<f32> {
-    let graded_7 = max(scale_1, start_1);
+fn airlight_graded_from(scale_2: f32, start_1: f32, to: f32) -> vec2<f32> {
+    let graded_7 = max(scale_2, start_1);
     let _e6 = airlight_atan(((to - start_1) / graded_7));
     return vec2<f32>(graded_7, _e6);
 }
@@ -7076,23 +7230,23 @@ fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32
     return vec3<f32>(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
-fn airlight_flat_lobe_node(s_38: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
+fn airlight_flat_lobe_node(s_39: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
     let _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
-    let c_17 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
-    if !((c_17 > 0f)) {
+    let c_20 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
+    if !((c_20 > 0f)) {
         return 0f;
     }
-    let _e20 = airlight_emitted(s_38, c_17);
-    let _e32 = airlight_area_phase(s_38, (lobe_1.sign * _e7.x));
-    return ((((_e20 * exp(min(((-(s_38.sigma_t) * z_12) / c_17), 0f))) * _e32) * _e7.y) * _e7.z);
+    let _e20 = airlight_emitted(s_39, c_20);
+    let _e32 = airlight_area_phase(s_39, (lobe_1.sign * _e7.x));
+    return ((((_e20 * exp(min(((-(s_39.sigma_t) * z_12) / c_20), 0f))) * _e32) * _e7.y) * _e7.z);
 }
 
-fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_40: AirlightScene, z_13: f32, o_5: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
     let k_14 = (w_9.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_4, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
+    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
@@ -7100,55 +7254,55 @@ fn airlight_flat_lobe_along(s_39: AirlightScene, z_13: f32, o_4: AirlightOutline
     let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     let graded_8 = _e42.x;
-    let c_18 = (0.5f * _e42.y);
+    let c_21 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_39, z_13, lobe_2, k_14, _e34, graded_8, (c_18 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -7160,25 +7314,25 @@ fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 
     return _e17;
 }
 
-fn airlight_wrap_turn(x_22: f32) -> f32 {
-    return (x_22 - (6.2831855f * round((x_22 / 6.2831855f))));
+fn airlight_wrap_turn(x_23: f32) -> f32 {
+    return (x_23 - (6.2831855f * round((x_23 / 6.2831855f))));
 }
 
-fn airlight_cos_sin_turns(x_23: f32) -> vec2<f32> {
-    let _e1 = airlight_wrap_turn(x_23);
+fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
+    let _e1 = airlight_wrap_turn(x_24);
     let _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
 
-fn airlight_edge_rule(a_23: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
-    let e_16 = (b_14 - a_23);
-    let el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
-    let t_13 = (e_16 / vec2(el));
-    let h_9 = (((a_23.x * b_14.y) - (a_23.y * b_14.x)) / el);
-    let reach_2 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    let _e27 = airlight_atan2_(dot(a_23, t_13), reach_2);
-    let _e29 = airlight_atan2_(dot(b_14, t_13), reach_2);
-    return AirlightEdgeRule(h_9, t_13, reach_2, _e27, _e29);
+fn airlight_edge_rule(a_24: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
+    let e_17 = (b_14 - a_24);
+    let el = sqrt(((e_17.x * e_17.x) + (e_17.y * e_17.y)));
+    let t_13 = (e_17 / vec2(el));
+    let h_9 = (((a_24.x * b_14.y) - (a_24.y * b_14.x)) / el);
+    let reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
+    let _e27 = airlight_atan2_(dot(a_24, t_13), reach_3);
+    let _e29 = airlight_atan2_(dot(b_14, t_13), reach_3);
+    return AirlightEdgeRule(h_9, t_13, reach_3, _e27, _e29);
 }
 
 fn airlight_edge_node(rule_2: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
@@ -7188,56 +7342,56 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
     return vec4<f32>(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-fn airlight_sort4_(x_24: vec4<f32>) -> vec4<f32> {
-    let a_47 = vec4<f32>(min(x_24.x, x_24.y), max(x_24.x, x_24.y), min(x_24.z, x_24.w), max(x_24.z, x_24.w));
-    let b_24 = vec4<f32>(min(a_47.x, a_47.z), min(a_47.y, a_47.w), max(a_47.x, a_47.z), max(a_47.y, a_47.w));
+fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
+    let a_49 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+    let b_24 = vec4<f32>(min(a_49.x, a_49.z), min(a_49.y, a_49.w), max(a_49.x, a_49.z), max(a_49.y, a_49.w));
     return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
 fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
-    var nearest_1: f32 = AIRLIGHT_FLT_MAX;
+    var nearest_2: f32 = AIRLIGHT_FLT_MAX;
     var farthest: f32 = 0f;
     var edges_1: AirlightChordEdges = AirlightChordEdges(vec2(0f), vec2(0f), 0f);
-    var i_30: u32 = 0u;
-    var local_181: bool;
-    var local_182: bool;
+    var i_32: u32 = 0u;
+    var local_185: bool;
+    var local_186: bool;
 
     loop {
-        let _e15 = i_30;
+        let _e15 = i_32;
         if (_e15 < 4u) {
         } else {
             break;
         }
         {
-            let _e18 = i_30;
-            let a_48 = y_6[_e18];
-            let _e20 = i_30;
-            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_48);
+            let _e18 = i_32;
+            let a_50 = y_6[_e18];
+            let _e20 = i_32;
+            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_50);
             let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if (den_1 == 0f) {
                 continue;
             }
-            let r_15 = (((a_48.x * d_5.y) - (a_48.y * d_5.x)) / den_1);
-            let along = (((a_48.x * e_8.y) - (a_48.y * e_8.x)) / den_1);
+            let r_15 = (((a_50.x * d_5.y) - (a_50.y * d_5.x)) / den_1);
+            let along = (((a_50.x * e_8.y) - (a_50.y * e_8.x)) / den_1);
             if (r_15 > 0f) {
-                local_181 = (along >= 0f);
+                local_185 = (along >= 0f);
             } else {
-                local_181 = false;
+                local_185 = false;
             }
-            let _e59 = local_181;
+            let _e59 = local_185;
             if _e59 {
-                local_182 = (along <= 1f);
+                local_186 = (along <= 1f);
             } else {
-                local_182 = false;
+                local_186 = false;
             }
-            let _e65 = local_182;
+            let _e65 = local_186;
             if _e65 {
                 let n_7 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
-                let h_10 = dot(n_7, a_48);
+                let h_10 = dot(n_7, a_50);
                 let outward = select(n_7, -(n_7), (h_10 < 0f));
-                let _e79 = nearest_1;
+                let _e79 = nearest_2;
                 if (r_15 < _e79) {
-                    nearest_1 = r_15;
+                    nearest_2 = r_15;
                     edges_1.entry = outward;
                 }
                 let _e82 = farthest;
@@ -7249,8 +7403,8 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
             }
         }
         continuing {
-            let _e88 = i_30;
-            i_30 = (_e88 + 1u);
+            let _e88 = i_32;
+            i_32 = (_e88 + 1u);
         }
     }
     let _e90 = edges_1;
@@ -7269,25 +7423,25 @@ fn airlight_mercator(n_3: vec2<f32>, cs_2: vec2<f32>) -> f32 {
     return clamp(_e21, -(_e3), _e3);
 }
 
-fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
     var sum_9: f32 = 0f;
     var m_4: vec2<f32> = vec2<f32>(1f, 0f);
     var t_4: vec2<f32>;
     var j_7: u32 = 0u;
-    var i_31: u32 = 0u;
-    var i_32: u32 = 0u;
-    var area: vec4<f32> = vec4(0f);
     var i_33: u32 = 0u;
     var i_34: u32 = 0u;
+    var area: vec4<f32> = vec4(0f);
+    var i_35: u32 = 0u;
+    var i_36: u32 = 0u;
     var ya: vec2<f32>;
     var yb: vec2<f32>;
     var j_8: u32;
-    var i_35: u32 = 0u;
+    var i_37: u32 = 0u;
     var j_9: u32;
     var merc_first: f32;
     var merc_last: f32;
-    var local_183: bool;
-    var a_24: f32;
+    var local_187: bool;
+    var a_25: f32;
     var b_15: f32;
     var j_10: u32;
     var k_9: u32;
@@ -7296,15 +7450,15 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
     let _e5 = airlight_basis_e1_(lobe_3.p);
     let v_9 = cross(lobe_3.p, _e5);
     let q_14 = lobe_3.q;
-    if (o_5.radius > 0f) {
+    if (o_6.radius > 0f) {
         if lobe_3.on_emitter {
-            let dq_2 = (q_14 - o_5.corners[0]);
+            let dq_2 = (q_14 - o_6.corners[0]);
             let d_6 = sqrt(dot(dq_2, dq_2));
             if (d_6 > 0f) {
                 m_4 = (dq_2 / vec2(d_6));
             }
             let _e31 = m_4;
-            let rim_e = ((o_5.corners[0] + (o_5.radius * _e31)) - q_14);
+            let rim_e = ((o_6.corners[0] + (o_6.radius * _e31)) - q_14);
             let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
             let _e41 = m_4.y;
             let _e46 = m_4.x;
@@ -7325,7 +7479,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
             let _e87 = t_4.y;
             let _e91 = t_4.x;
             let h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
-            let half_chord = (tl * sqrt(max(((o_5.radius - d_6) * (o_5.radius + d_6)), 0f)));
+            let half_chord = (tl * sqrt(max(((o_6.radius - d_6) * (o_6.radius + d_6)), 0f)));
             let width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
             let _e108 = t_4;
             let rule_5 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
@@ -7343,7 +7497,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                     let _e125 = airlight_radial_rule(_e124);
                     let _e129 = airlight_edge_at(rule_5, (1.5707964f * _e125.x));
                     let _e130 = sum_9;
-                    let _e139 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e129.xy);
+                    let _e139 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e129.xy);
                     sum_9 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
@@ -7355,31 +7509,31 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
             let _e148 = t_4.x;
             let n_8 = vec2<f32>(_e146, -(_e148));
             loop {
-                let _e153 = i_31;
+                let _e153 = i_33;
                 if (_e153 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e157 = i_31;
+                    let _e157 = i_33;
                     let _e158 = airlight_azimuths(false, _e157);
                     let _e159 = sum_9;
                     let _e163 = t_4;
-                    let _e168 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
+                    let _e168 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
                     sum_9 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
-                    let _e172 = i_31;
-                    i_31 = (_e172 + 1u);
+                    let _e172 = i_33;
+                    i_33 = (_e172 + 1u);
                 }
             }
             let _e174 = sum_9;
             return _e174;
         }
-        let d_7 = (o_5.corners[0] - q_14);
+        let d_7 = (o_6.corners[0] - q_14);
         let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
-        let sb_1 = (o_5.radius / dq_3);
-        let cb = (sqrt(((dq_3 - o_5.radius) * (dq_3 + o_5.radius))) / dq_3);
+        let sb_1 = (o_6.radius / dq_3);
+        let cb = (sqrt(((dq_3 - o_6.radius) * (dq_3 + o_6.radius))) / dq_3);
         let _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
         let _e207 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
         let _e209 = airlight_wrap_turn((_e207 - _e195));
@@ -7388,46 +7542,46 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
         let centre_2 = (_e195 + ((_e209 + _e223) * 0.5f));
         let half_19 = (abs((_e209 - _e223)) * 0.5f);
         loop {
-            let _e234 = i_32;
+            let _e234 = i_34;
             if (_e234 < 32u) {
             } else {
                 break;
             }
             {
-                let _e238 = i_32;
+                let _e238 = i_34;
                 let _e239 = airlight_azimuths(false, _e238);
                 let _e240 = sum_9;
                 let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                let _e249 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e248);
+                let _e249 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e248);
                 sum_9 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
-                let _e253 = i_32;
-                i_32 = (_e253 + 1u);
+                let _e253 = i_34;
+                i_34 = (_e253 + 1u);
             }
         }
         let _e255 = sum_9;
         return _e255;
     }
-    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_5.corners[0] - q_14), _e5.xy), dot((o_5.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[1] - q_14), _e5.xy), dot((o_5.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[2] - q_14), _e5.xy), dot((o_5.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_5.corners[3] - q_14), _e5.xy), dot((o_5.corners[3] - q_14), v_9.xy)));
+    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_6.corners[0] - q_14), _e5.xy), dot((o_6.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[1] - q_14), _e5.xy), dot((o_6.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[2] - q_14), _e5.xy), dot((o_6.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[3] - q_14), _e5.xy), dot((o_6.corners[3] - q_14), v_9.xy)));
     if lobe_3.on_emitter {
         loop {
-            let _e307 = i_33;
+            let _e307 = i_35;
             if (_e307 < 4u) {
             } else {
                 break;
             }
             {
-                let _e310 = i_33;
+                let _e310 = i_35;
                 let b_25 = y_14[((_e310 + 1u) % 4u)];
-                let _e316 = i_33;
-                let _e318 = i_33;
-                let _e323 = i_33;
+                let _e316 = i_35;
+                let _e318 = i_35;
+                let _e323 = i_35;
                 area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
             }
             continuing {
-                let _e330 = i_33;
-                i_33 = (_e330 + 1u);
+                let _e330 = i_35;
+                i_35 = (_e330 + 1u);
             }
         }
         let _e333 = area.x;
@@ -7436,25 +7590,25 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
         let _e341 = area.w;
         let turn = (((_e333 + _e335) + _e338) + _e341);
         loop {
-            let _e345 = i_34;
+            let _e345 = i_36;
             if (_e345 < 4u) {
             } else {
                 break;
             }
             {
-                let _e348 = i_34;
+                let _e348 = i_36;
                 let _e350 = area[_e348];
                 if !(((_e350 * turn) > 0f)) {
                     continue;
                 }
-                let _e355 = i_34;
+                let _e355 = i_36;
                 ya = y_14[_e355];
-                let _e358 = i_34;
+                let _e358 = i_36;
                 yb = y_14[((_e358 + 1u) % 4u)];
                 if (turn < 0f) {
-                    let _e367 = i_34;
+                    let _e367 = i_36;
                     ya = y_14[((_e367 + 1u) % 4u)];
-                    let _e373 = i_34;
+                    let _e373 = i_36;
                     yb = y_14[_e373];
                 }
                 let _e375 = ya;
@@ -7471,7 +7625,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                         let _e386 = j_8;
                         let _e387 = airlight_edge_node(_e380, _e386);
                         let _e388 = sum_9;
-                        let _e391 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e387.xy);
+                        let _e391 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e387.xy);
                         sum_9 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
@@ -7481,39 +7635,39 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                 }
             }
             continuing {
-                let _e398 = i_34;
-                i_34 = (_e398 + 1u);
+                let _e398 = i_36;
+                i_36 = (_e398 + 1u);
             }
         }
         let _e400 = sum_9;
         return _e400;
     }
-    let _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_5.corners[0] + o_5.corners[2])) - q_14));
-    let _e413 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[0] - q_14));
+    let _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_6.corners[0] + o_6.corners[2])) - q_14));
+    let _e413 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[0] - q_14));
     let _e415 = airlight_wrap_turn((_e413 - _e409));
-    let _e419 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[1] - q_14));
+    let _e419 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[1] - q_14));
     let _e421 = airlight_wrap_turn((_e419 - _e409));
-    let _e425 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[2] - q_14));
+    let _e425 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[2] - q_14));
     let _e427 = airlight_wrap_turn((_e425 - _e409));
-    let _e431 = airlight_lobe_azimuth(_e5, v_9, (o_5.corners[3] - q_14));
+    let _e431 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[3] - q_14));
     let _e433 = airlight_wrap_turn((_e431 - _e409));
     let _e435 = airlight_sort4_(vec4<f32>(_e415, _e421, _e427, _e433));
     loop {
-        let _e438 = i_35;
+        let _e438 = i_37;
         if (_e438 < 3u) {
         } else {
             break;
         }
         {
-            let _e441 = i_35;
+            let _e441 = i_37;
             let first_2 = (_e409 + _e435[_e441]);
-            let _e444 = i_35;
+            let _e444 = i_37;
             let last_1 = (_e409 + _e435[(_e444 + 1u)]);
             let _e452 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
             let _e453 = airlight_chord_edges(y_14, _e452);
             let n_9 = _e453.entry;
             if all((n_9 == vec2(0f))) {
-                let c_19 = ((first_2 + last_1) * 0.5f);
+                let c_22 = ((first_2 + last_1) * 0.5f);
                 let hw_5 = ((last_1 - first_2) * 0.5f);
                 j_9 = 0u;
                 loop {
@@ -7526,8 +7680,8 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                         let _e470 = j_9;
                         let _e471 = airlight_triangle_rule(_e470);
                         let _e472 = sum_9;
-                        let _e478 = airlight_cos_sin_turns((c_19 + (hw_5 * _e471.x)));
-                        let _e479 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e478);
+                        let _e478 = airlight_cos_sin_turns((c_22 + (hw_5 * _e471.x)));
+                        let _e479 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e478);
                         sum_9 = (_e472 + ((_e471.y * hw_5) * _e479));
                     }
                     continuing {
@@ -7541,33 +7695,33 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
             merc_last = last_1;
             let exit_h = _e453.exit_h;
             if (exit_h > 0f) {
-                local_183 = (exit_h < (lobe_3.l * lobe_3.scale));
+                local_187 = (exit_h < (lobe_3.l * lobe_3.scale));
             } else {
-                local_183 = false;
+                local_187 = false;
             }
-            let _e497 = local_183;
+            let _e497 = local_187;
             if _e497 {
                 let half_20 = (0.5f * (first_2 + last_1));
-                a_24 = first_2;
+                a_25 = first_2;
                 b_15 = half_20;
                 let _e503 = airlight_cos_sin_turns(first_2);
                 let _e506 = airlight_cos_sin_turns(last_1);
                 if (dot(_e503, _e453.exit) < dot(_e506, _e453.exit)) {
                     merc_first = half_20;
                 } else {
-                    a_24 = half_20;
+                    a_25 = half_20;
                     b_15 = last_1;
                     merc_last = half_20;
                 }
                 let t2_ = vec2<f32>(-(_e453.exit.y), _e453.exit.x);
-                let reach_3 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
-                let _e526 = a_24;
+                let reach_4 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
+                let _e526 = a_25;
                 let _e527 = airlight_cos_sin_turns(_e526);
                 let _e528 = b_15;
                 let _e529 = airlight_cos_sin_turns(_e528);
-                let _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0f) * reach_3));
-                let _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0f) * reach_3));
-                let rule_6 = AirlightEdgeRule(exit_h, t2_, reach_3, _e537, _e545);
+                let _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0f) * reach_4));
+                let _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0f) * reach_4));
+                let rule_6 = AirlightEdgeRule(exit_h, t2_, reach_4, _e537, _e545);
                 j_10 = 0u;
                 loop {
                     let _e549 = j_10;
@@ -7579,7 +7733,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                         let _e552 = j_10;
                         let _e553 = airlight_edge_node(rule_6, _e552);
                         let _e554 = sum_9;
-                        let _e557 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, _e553.xy);
+                        let _e557 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e553.xy);
                         sum_9 = (_e554 + (_e553.w * _e557));
                     }
                     continuing {
@@ -7612,7 +7766,7 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                     if !((lo_8 < hi_9)) {
                         continue;
                     }
-                    let c_20 = ((lo_8 + hi_9) * 0.5f);
+                    let c_23 = ((lo_8 + hi_9) * 0.5f);
                     let hw_6 = ((hi_9 - lo_8) * 0.5f);
                     j_11 = 0u;
                     loop {
@@ -7624,12 +7778,12 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
                         {
                             let _e599 = j_11;
                             let _e600 = airlight_triangle_rule(_e599);
-                            let x_37 = (c_20 + (hw_6 * _e600.x));
-                            let e_17 = exp(-(abs(x_37)));
-                            let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
-                            let th = ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17)));
+                            let x_38 = (c_23 + (hw_6 * _e600.x));
+                            let e_18 = exp(-(abs(x_38)));
+                            let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
+                            let th = ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18)));
                             let _e622 = sum_9;
-                            let _e629 = airlight_flat_lobe_along(s_40, z_14, o_5, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
+                            let _e629 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
                             sum_9 = (_e622 + (((_e600.y * hw_6) * sech) * _e629));
                         }
                         continuing {
@@ -7645,53 +7799,53 @@ fn airlight_flat_about_lobe(s_40: AirlightScene, z_14: f32, o_5: AirlightOutline
             }
         }
         continuing {
-            let _e639 = i_35;
-            i_35 = (_e639 + 1u);
+            let _e639 = i_37;
+            i_37 = (_e639 + 1u);
         }
     }
     let _e641 = sum_9;
     return _e641;
 }
 
-fn airlight_disc(s_41: AirlightScene, a_25: AirlightArea, x_25: vec3<f32>) -> f32 {
-    var local_184: bool;
-    var local_185: bool;
+fn airlight_disc(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
+    var local_188: bool;
+    var local_189: bool;
     var u_6: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_10: f32 = 0f;
-    var i_36: u32 = 0u;
+    var i_38: u32 = 0u;
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel = (x_25 - a_25.c);
-    let z_20 = dot(rel, a_25.n);
+    let rel_1 = (x_26 - a_26.c);
+    let z_20 = dot(rel_1, a_26.n);
     if !((z_20 > 0f)) {
         return 0f;
     }
-    let fx = dot(rel, a_25.a1_);
-    let fy_1 = dot(rel, a_25.a2_);
+    let fx = dot(rel_1, a_26.a1_);
+    let fy_1 = dot(rel_1, a_26.a2_);
     let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_25.radius;
-    let zero_1 = vec2(0f);
-    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_1, zero_1, zero_1), radius_2);
-    let _e30 = airlight_flat_lobe(a_25, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let radius_2 = a_26.radius;
+    let zero_2 = vec2(0f);
+    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
+    let _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_41, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_42, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_41, (radius_2 - rf), z_20);
-            local_185 = _e44;
+            let _e44 = airlight_far_from_edge(s_42, (radius_2 - rf), z_20);
+            local_189 = _e44;
         } else {
-            local_185 = true;
+            local_189 = true;
         }
-        let _e46 = local_185;
-        local_184 = _e46;
+        let _e46 = local_189;
+        local_188 = _e46;
     } else {
-        local_184 = false;
+        local_188 = false;
     }
-    let inside_2 = local_184;
+    let inside_2 = local_188;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
@@ -7702,13 +7856,13 @@ fn airlight_disc(s_41: AirlightScene, a_25: AirlightArea, x_25: vec3<f32>) -> f3
     }
     let k_15 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e73 = i_36;
+        let _e73 = i_38;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e76 = i_36;
+            let _e76 = i_38;
             let _e77 = airlight_azimuths(inside_2, _e76);
             let _e80 = u_6.x;
             let _e84 = u_6.y;
@@ -7726,69 +7880,69 @@ fn airlight_disc(s_41: AirlightScene, a_25: AirlightArea, x_25: vec3<f32>) -> f3
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_41, a_25, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_42, a_26, _e120, _e121, _e122);
             sum_10 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e127 = i_36;
-            i_36 = (_e127 + 1u);
+            let _e127 = i_38;
+            i_38 = (_e127 + 1u);
         }
     }
     let _e129 = sum_10;
     return _e129;
 }
 
-fn airlight_parallelogram(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_43: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
-    var local_186: bool;
+    var local_190: bool;
     var sum_11: f32 = 0f;
-    var i_37: u32 = 0u;
+    var i_39: u32 = 0u;
     var j_12: u32;
 
-    let rel_1 = (x_26 - a_26.c);
-    let z_21 = dot(rel_1, a_26.n);
+    let rel_2 = (x_27 - a_27.c);
+    let z_21 = dot(rel_2, a_27.n);
     if !((z_21 > 0f)) {
         return 0f;
     }
-    let foot = vec2<f32>(dot(rel_1, a_26.a1_), dot(rel_1, a_26.a2_));
-    let u2_ = vec2<f32>(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
-    let v2_ = vec2<f32>(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
-    let corners = array<vec2<f32>, 5>(vec2(0f), u2_, (u2_ + v2_), v2_, vec2(0f));
-    let det = ((u2_.x * v2_.y) - (u2_.y * v2_.x));
-    let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot), (corners[1] - foot), (corners[2] - foot), (corners[3] - foot)), 0f);
-    let size_2 = (0.5f * max(sqrt(dot((u2_ + v2_), (u2_ + v2_))), sqrt(dot((u2_ - v2_), (u2_ - v2_)))));
-    let _e69 = airlight_flat_lobe(a_26, z_21, about_foot, ((0.5f * corners[2]) - foot), size_2);
+    let foot_1 = vec2<f32>(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
+    let u2_1 = vec2<f32>(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
+    let v2_1 = vec2<f32>(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
+    let corners = array<vec2<f32>, 5>(vec2(0f), u2_1, (u2_1 + v2_1), v2_1, vec2(0f));
+    let det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
+    let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0f);
+    let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
+    let _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_42, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_43, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
-    q_8 = (_e76.xy + foot);
+    q_8 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_42, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_186 = _e89;
+        let _e89 = airlight_far_from_edge(s_43, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        local_190 = _e89;
     } else {
-        local_186 = false;
+        local_190 = false;
     }
-    let _e91 = local_186;
+    let _e91 = local_190;
     if _e91 {
-        q_8 = foot;
+        q_8 = foot_1;
     }
     let _e92 = q_8;
-    let _e94 = airlight_above(z_21, (_e92 - foot));
+    let _e94 = airlight_above(z_21, (_e92 - foot_1));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
-    let _e99 = airlight_narrowed(s_42, _e94.rho0_);
+    let _e99 = airlight_narrowed(s_43, _e94.rho0_);
     loop {
-        let _e104 = i_37;
+        let _e104 = i_39;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            let _e107 = i_37;
+            let _e107 = i_39;
             let _e109 = q_8;
             let ca = (corners[_e107] - _e109);
-            let _e111 = i_37;
+            let _e111 = i_39;
             let _e115 = q_8;
             let cb_1 = (corners[(_e111 + 1u)] - _e115);
             if !((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin)) {
@@ -7806,7 +7960,7 @@ fn airlight_parallelogram(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f3
                     let _e132 = j_12;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_11;
-                    let _e138 = airlight_flat_radial(s_42, a_26, _e94, _e133.xy, _e133.z);
+                    let _e138 = airlight_flat_radial(s_43, a_27, _e94, _e133.xy, _e133.z);
                     sum_11 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
@@ -7816,75 +7970,75 @@ fn airlight_parallelogram(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f3
             }
         }
         continuing {
-            let _e145 = i_37;
-            i_37 = (_e145 + 1u);
+            let _e145 = i_39;
+            i_39 = (_e145 + 1u);
         }
     }
     let _e147 = sum_11;
     return _e147;
 }
 
-fn airlight_cap_row(s_43: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_44: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
     let _e5 = airlight_graded_node(graded_4, node_2);
     let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
-    let _e28 = airlight_emitted(s_43, _e9.x);
-    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_43.sigma_t) * dist_1), 0f)));
+    let _e28 = airlight_emitted(s_44, _e9.x);
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_44.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_44: AirlightScene, a_27: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_45: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_12: f32 = 0f;
-    var i_38: u32 = 0u;
+    var i_40: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_27.d);
-    let e1d = dot(_e4, a_27.d);
-    let e2d = dot(e2_2, a_27.d);
-    let _e15 = airlight_graded_range(s_44, 1.5707964f);
+    let ad = dot(cap_1.a, a_28.d);
+    let e1d = dot(_e4, a_28.d);
+    let e2d = dot(e2_2, a_28.d);
+    let _e15 = airlight_graded_range(s_45, 1.5707964f);
     let graded_9 = _e15.y;
-    let c_21 = (0.5f * _e15.x);
+    let c_24 = (0.5f * _e15.x);
     let hw_7 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e63 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e70 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e77 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e84 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e91 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e98 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e105 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e112 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e119 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e126 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e133 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e140 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e147 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e154 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e161 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_44, cap_1, graded_9, (c_21 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e168 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
-    if a_27.isotropic {
-        let _e174 = airlight_area_phase(s_44, 0f);
+    if a_28.isotropic {
+        let _e174 = airlight_area_phase(s_45, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_12;
         let _e179 = rows[0].x;
@@ -7938,13 +8092,13 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_27: AirlightArea, cap_1: AirlightC
         return _e272;
     }
     loop {
-        let _e275 = i_38;
+        let _e275 = i_40;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e279 = i_38;
+            let _e279 = i_40;
             let _e280 = airlight_azimuths(true, _e279);
             let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
@@ -7952,134 +8106,134 @@ fn airlight_sphere_cap(s_44: AirlightScene, a_27: AirlightArea, cap_1: AirlightC
             let _e291 = rows[0].x;
             let _e294 = rows[0].y;
             let _e298 = rows[0].z;
-            let _e301 = airlight_area_phase(s_44, ((_e294 * ad) + (_e298 * across_1)));
+            let _e301 = airlight_area_phase(s_45, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             let _e304 = at_2;
             let _e307 = rows[1].x;
             let _e310 = rows[1].y;
             let _e314 = rows[1].z;
-            let _e317 = airlight_area_phase(s_44, ((_e310 * ad) + (_e314 * across_1)));
+            let _e317 = airlight_area_phase(s_45, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             let _e320 = at_2;
             let _e323 = rows[2].x;
             let _e326 = rows[2].y;
             let _e330 = rows[2].z;
-            let _e333 = airlight_area_phase(s_44, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_45, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[3].x;
             let _e342 = rows[3].y;
             let _e346 = rows[3].z;
-            let _e349 = airlight_area_phase(s_44, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_45, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[4].x;
             let _e358 = rows[4].y;
             let _e362 = rows[4].z;
-            let _e365 = airlight_area_phase(s_44, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_45, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[5].x;
             let _e374 = rows[5].y;
             let _e378 = rows[5].z;
-            let _e381 = airlight_area_phase(s_44, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_45, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[6].x;
             let _e390 = rows[6].y;
             let _e394 = rows[6].z;
-            let _e397 = airlight_area_phase(s_44, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_45, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[7].x;
             let _e406 = rows[7].y;
             let _e410 = rows[7].z;
-            let _e413 = airlight_area_phase(s_44, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_45, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[8].x;
             let _e422 = rows[8].y;
             let _e426 = rows[8].z;
-            let _e429 = airlight_area_phase(s_44, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_45, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[9].x;
             let _e438 = rows[9].y;
             let _e442 = rows[9].z;
-            let _e445 = airlight_area_phase(s_44, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_45, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[10].x;
             let _e454 = rows[10].y;
             let _e458 = rows[10].z;
-            let _e461 = airlight_area_phase(s_44, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_45, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[11].x;
             let _e470 = rows[11].y;
             let _e474 = rows[11].z;
-            let _e477 = airlight_area_phase(s_44, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_45, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[12].x;
             let _e486 = rows[12].y;
             let _e490 = rows[12].z;
-            let _e493 = airlight_area_phase(s_44, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_45, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[13].x;
             let _e502 = rows[13].y;
             let _e506 = rows[13].z;
-            let _e509 = airlight_area_phase(s_44, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_45, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[14].x;
             let _e518 = rows[14].y;
             let _e522 = rows[14].z;
-            let _e525 = airlight_area_phase(s_44, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_45, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[15].x;
             let _e534 = rows[15].y;
             let _e538 = rows[15].z;
-            let _e541 = airlight_area_phase(s_44, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_45, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = sum_12;
             let _e546 = at_2;
             sum_12 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e550 = i_38;
-            i_38 = (_e550 + 1u);
+            let _e550 = i_40;
+            i_40 = (_e550 + 1u);
         }
     }
     let _e552 = sum_12;
     return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_45: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_46: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
     let _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
     let toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e37 = airlight_emitted(s_45, (root_5 / cap_2.radius));
-    let _e47 = airlight_area_phase(s_45, (sign_1 * _e8.x));
-    return ((((_e37 * exp(min((-(s_45.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
+    let _e37 = airlight_emitted(s_46, (root_5 / cap_2.radius));
+    let _e47 = airlight_area_phase(s_46, (sign_1 * _e8.x));
+    return ((((_e37 * exp(min((-(s_46.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_46: AirlightScene, a_28: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_2: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_47: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var sum_13: f32 = 0f;
-    var i_39: u32 = 0u;
+    var i_41: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var start_5: f32;
     var around: f32;
 
-    let p_7 = (sign_2 * a_28.d);
-    let _e8 = airlight_basis_e1_(p_7);
-    let v_10 = cross(p_7, _e8);
+    let p_8 = (sign_2 * a_29.d);
+    let _e8 = airlight_basis_e1_(p_8);
+    let v_10 = cross(p_8, _e8);
     let au = dot(cap_3.a, _e8);
     let av = dot(cap_3.a, v_10);
     let inside_3 = (cos_p_1 > cap_3.cos_a);
@@ -8090,13 +8244,13 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_28: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     loop {
-        let _e47 = i_39;
+        let _e47 = i_41;
         if (_e47 < 32u) {
         } else {
             break;
         }
         {
-            let _e50 = i_39;
+            let _e50 = i_41;
             let _e51 = airlight_azimuths(inside_3, _e50);
             let _e54 = axis_2.x;
             let _e58 = axis_2.y;
@@ -8119,90 +8273,90 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_28: AirlightArea, cap_3: Ai
                 start_5 = max((_e78 - _e89), 0f);
             }
             let _e96 = start_5;
-            let _e98 = airlight_graded_from(scale_2, _e96, (_e78 + _e89));
+            let _e98 = airlight_graded_from(scale_3, _e96, (_e78 + _e89));
             let graded_10 = _e98.x;
-            let c_22 = (0.5f * _e98.y);
+            let c_25 = (0.5f * _e98.y);
             let hw_8 = (0.5f * _e98.y);
             around = 0f;
             let _e108 = around;
             let _e111 = big_b_1;
             let _e112 = start_5;
-            let _e116 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_22 - (0.09501251f * hw_8)));
+            let _e116 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_25 - (0.09501251f * hw_8)));
             around = (_e108 + ((0.1894506f * hw_8) * _e116));
             let _e119 = around;
             let _e122 = big_b_1;
             let _e123 = start_5;
-            let _e127 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_22 + (0.09501251f * hw_8)));
+            let _e127 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_25 + (0.09501251f * hw_8)));
             around = (_e119 + ((0.1894506f * hw_8) * _e127));
             let _e130 = around;
             let _e133 = big_b_1;
             let _e134 = start_5;
-            let _e138 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_22 - (0.28160354f * hw_8)));
+            let _e138 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_25 - (0.28160354f * hw_8)));
             around = (_e130 + ((0.18260342f * hw_8) * _e138));
             let _e141 = around;
             let _e144 = big_b_1;
             let _e145 = start_5;
-            let _e149 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_22 + (0.28160354f * hw_8)));
+            let _e149 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_25 + (0.28160354f * hw_8)));
             around = (_e141 + ((0.18260342f * hw_8) * _e149));
             let _e152 = around;
             let _e155 = big_b_1;
             let _e156 = start_5;
-            let _e160 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_22 - (0.45801678f * hw_8)));
+            let _e160 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_25 - (0.45801678f * hw_8)));
             around = (_e152 + ((0.16915652f * hw_8) * _e160));
             let _e163 = around;
             let _e166 = big_b_1;
             let _e167 = start_5;
-            let _e171 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_22 + (0.45801678f * hw_8)));
+            let _e171 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_25 + (0.45801678f * hw_8)));
             around = (_e163 + ((0.16915652f * hw_8) * _e171));
             let _e174 = around;
             let _e177 = big_b_1;
             let _e178 = start_5;
-            let _e182 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_22 - (0.61787623f * hw_8)));
+            let _e182 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_25 - (0.61787623f * hw_8)));
             around = (_e174 + ((0.14959599f * hw_8) * _e182));
             let _e185 = around;
             let _e188 = big_b_1;
             let _e189 = start_5;
-            let _e193 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_22 + (0.61787623f * hw_8)));
+            let _e193 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_25 + (0.61787623f * hw_8)));
             around = (_e185 + ((0.14959599f * hw_8) * _e193));
             let _e196 = around;
             let _e199 = big_b_1;
             let _e200 = start_5;
-            let _e204 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_22 - (0.7554044f * hw_8)));
+            let _e204 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_25 - (0.7554044f * hw_8)));
             around = (_e196 + ((0.12462897f * hw_8) * _e204));
             let _e207 = around;
             let _e210 = big_b_1;
             let _e211 = start_5;
-            let _e215 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_22 + (0.7554044f * hw_8)));
+            let _e215 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_25 + (0.7554044f * hw_8)));
             around = (_e207 + ((0.12462897f * hw_8) * _e215));
             let _e218 = around;
             let _e221 = big_b_1;
             let _e222 = start_5;
-            let _e226 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_22 - (0.8656312f * hw_8)));
+            let _e226 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_25 - (0.8656312f * hw_8)));
             around = (_e218 + ((0.09515851f * hw_8) * _e226));
             let _e229 = around;
             let _e232 = big_b_1;
             let _e233 = start_5;
-            let _e237 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_22 + (0.8656312f * hw_8)));
+            let _e237 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_25 + (0.8656312f * hw_8)));
             around = (_e229 + ((0.09515851f * hw_8) * _e237));
             let _e240 = around;
             let _e243 = big_b_1;
             let _e244 = start_5;
-            let _e248 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_22 - (0.944575f * hw_8)));
+            let _e248 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_25 - (0.944575f * hw_8)));
             around = (_e240 + ((0.062253524f * hw_8) * _e248));
             let _e251 = around;
             let _e254 = big_b_1;
             let _e255 = start_5;
-            let _e259 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_22 + (0.944575f * hw_8)));
+            let _e259 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_25 + (0.944575f * hw_8)));
             around = (_e251 + ((0.062253524f * hw_8) * _e259));
             let _e262 = around;
             let _e265 = big_b_1;
             let _e266 = start_5;
-            let _e270 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_22 - (0.9894009f * hw_8)));
+            let _e270 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_25 - (0.9894009f * hw_8)));
             around = (_e262 + ((0.02715246f * hw_8) * _e270));
             let _e273 = around;
             let _e276 = big_b_1;
             let _e277 = start_5;
-            let _e281 = airlight_sphere_lobe_node(s_46, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_22 + (0.9894009f * hw_8)));
+            let _e281 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_25 + (0.9894009f * hw_8)));
             around = (_e273 + ((0.02715246f * hw_8) * _e281));
             let _e284 = sum_13;
             let _e285 = wpsi;
@@ -8210,32 +8364,32 @@ fn airlight_sphere_about_lobe(s_46: AirlightScene, a_28: AirlightArea, cap_3: Ai
             sum_13 = (_e284 + (_e285 * _e286));
         }
         continuing {
-            let _e290 = i_39;
-            i_39 = (_e290 + 1u);
+            let _e290 = i_41;
+            i_41 = (_e290 + 1u);
         }
     }
     let _e292 = sum_13;
     return _e292;
 }
 
-fn airlight_sphere(s_47: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_sphere(s_48: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
-    var local_187: bool;
-    var local_188: bool;
-    var local_189: bool;
-    var local_190: bool;
     var local_191: bool;
+    var local_192: bool;
+    var local_193: bool;
+    var local_194: bool;
+    var local_195: bool;
 
-    let v_11 = (a_29.c - x_27);
+    let v_11 = (a_30.c - x_28);
     let _e5 = airlight_safe_length(v_11);
-    if !((_e5 > a_29.radius)) {
+    if !((_e5 > a_30.radius)) {
         return 0f;
     }
-    let sin_a_2 = (a_29.radius / _e5);
-    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_29.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let sin_a_2 = (a_30.radius / _e5);
+    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
         let _e32 = j_13;
@@ -8245,44 +8399,44 @@ fn airlight_sphere(s_47: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> 
         }
         {
             let _e39 = j_13;
-            let lobe_5 = select(a_29.lobes.xy, a_29.lobes.zw, (_e39 == 1u));
-            let c_23 = dot(cap_4.a, (lobe_5.x * a_29.d));
+            let lobe_5 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
+            let c_26 = dot(cap_4.a, (lobe_5.x * a_30.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_187 = (lobe_5.y > 0f);
+                local_191 = (lobe_5.y > 0f);
             } else {
-                local_187 = false;
+                local_191 = false;
             }
-            let _e57 = local_187;
+            let _e57 = local_191;
             if _e57 {
-                local_188 = (lobe_5.y < (_e23 + _e23));
+                local_192 = (lobe_5.y < (_e23 + _e23));
             } else {
-                local_188 = false;
+                local_192 = false;
             }
-            let _e64 = local_188;
+            let _e64 = local_192;
             if _e64 {
-                if !((c_23 > cap_4.cos_a)) {
-                    if (c_23 > -(cap_4.cos_a)) {
-                        let _e77 = airlight_acos(c_23);
-                        local_191 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                if !((c_26 > cap_4.cos_a)) {
+                    if (c_26 > -(cap_4.cos_a)) {
+                        let _e77 = airlight_acos(c_26);
+                        local_195 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                     } else {
-                        local_191 = false;
+                        local_195 = false;
                     }
-                    let _e84 = local_191;
-                    local_190 = _e84;
+                    let _e84 = local_195;
+                    local_194 = _e84;
                 } else {
-                    local_190 = true;
+                    local_194 = true;
                 }
-                let _e86 = local_190;
-                local_189 = _e86;
+                let _e86 = local_194;
+                local_193 = _e86;
             } else {
-                local_189 = false;
+                local_193 = false;
             }
-            let _e88 = local_189;
+            let _e88 = local_193;
             if _e88 {
                 chosen = lobe_5.y;
                 sign_3 = lobe_5.x;
-                cos_p_2 = c_23;
+                cos_p_2 = c_26;
             }
         }
         continuing {
@@ -8295,48 +8449,48 @@ fn airlight_sphere(s_47: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_47, a_29, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_48, a_30, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_47, a_29, cap_4);
+    let _e101 = airlight_sphere_cap(s_48, a_30, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_48: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
-    switch s_48.light_shape {
+fn airlight_emitter_radiance(s_49: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
+    switch s_49.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_48, a_30, x_28);
+            let _e4 = airlight_disc(s_49, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_48, a_30, x_28);
+            let _e5 = airlight_parallelogram(s_49, a_31, x_29);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_48, a_30, x_28);
+            let _e6 = airlight_sphere(s_49, a_31, x_29);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_49: AirlightScene, a_31: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_50: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
-    let t_15 = (a_31.x_h + along_1);
-    let fade = exp(min((-(s_49.sigma_t) * max(((a_31.x_h - s_49.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_49, a_31, (s_49.origin + (t_15 * a_31.d)));
-    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
+    let t_15 = (a_32.x_h + along_1);
+    let fade = exp(min((-(s_50.sigma_t) * max(((a_32.x_h - s_50.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_50, a_32, (s_50.origin + (t_15 * a_32.d)));
+    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_51: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_10: f32;
     var gauss_1: f32;
     var j_14: u32;
-    var local_192: bool;
+    var local_196: bool;
 
-    let _e1 = airlight_area(s_50);
+    let _e1 = airlight_area(s_51);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8354,7 +8508,7 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_24 = (0.5f * (_e27 + _e29));
+            let c_27 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
             let hw_9 = (0.5f * (_e34 - _e36));
@@ -8373,13 +8527,13 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
                     let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_14;
-                        local_192 = (_e66 < 14u);
+                        local_196 = (_e66 < 14u);
                     } else {
-                        local_192 = false;
+                        local_196 = false;
                     }
-                    let _e70 = local_192;
-                    let x_38 = select((c_24 + (hw_9 * node_4.x)), (c_24 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_50, _e1, x_38);
+                    let _e70 = local_196;
+                    let x_39 = select((c_27 + (hw_9 * node_4.x)), (c_27 - (hw_9 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_51, _e1, x_39);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8413,92 +8567,16 @@ fn airlight_area_light(s_50: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_50.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_51.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_51: AirlightScene) -> AirlightResult {
-    var local_193: bool;
-    var local_194: bool;
-
-    let _e1 = airlight_valid(s_51);
-    if !(!(_e1)) {
-        local_193 = (s_51.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_193 = true;
-    }
-    let _e10 = local_193;
-    if !(_e10) {
-        local_194 = (s_51.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_194 = true;
-    }
-    let _e18 = local_194;
-    if _e18 {
-        return AirlightResult(0f, 1u);
-    }
-    let _e22 = airlight_area_light(s_51);
-    return _e22;
-}
-
-fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_195: bool;
-
-    let _e2 = airlight_is_finite(r_5.in_scatter);
-    if !(!(_e2)) {
-        local_195 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
-    } else {
-        local_195 = true;
-    }
-    let _e11 = local_195;
-    if _e11 {
-        return AirlightResult(340282350000000000000000000000000000000f, 2u);
-    }
-    return r_5;
-}
-
-fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
-    var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_196: bool;
-    var g_29: AirlightCanonical;
-
-    let p_8 = n_4.scene;
-    let _e7 = airlight_vec_finite(p_8.light_position);
-    if _e7 {
-        let _e11 = airlight_vec_finite(p_8.dir);
-        local_196 = _e11;
-    } else {
-        local_196 = false;
-    }
-    let _e13 = local_196;
-    if _e13 {
-        g_29 = n_4.canonical;
-        if !(n_4.exact) {
-            let _e18 = airlight_canonical(p_8);
-            let _e19 = airlight_refined(p_8, _e18);
-            g_29 = _e19;
-        }
-        let _e20 = g_29;
-        let _e21 = airlight_in_scatter_canonical(p_8, _e20);
-        r_6 = _e21;
-    }
-    let _e22 = r_6;
-    let _e23 = airlight_overflowed(_e22);
-    return _e23;
-}
-
-fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
-    let _e1 = airlight_no_canonical();
-    let _e5 = airlight_node_integral(AirlightNode(p_1, 1f, _e1, false));
-    return _e5;
-}
-
-fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_area(s_52: AirlightScene) -> AirlightResult {
     var local_197: bool;
     var local_198: bool;
 
     let _e1 = airlight_valid(s_52);
     if !(!(_e1)) {
-        local_197 = (s_52.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_197 = (s_52.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_197 = true;
     }
@@ -8512,40 +8590,116 @@ fn airlight_in_scatter_point(s_52: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_52);
+    let _e22 = airlight_area_light(s_52);
     return _e22;
 }
 
-fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
+fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
     var local_199: bool;
-    var local_200: bool;
 
-    let _e1 = airlight_valid(s_53);
-    if !(!(_e1)) {
-        local_199 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    let _e2 = airlight_is_finite(r_5.in_scatter);
+    if !(!(_e2)) {
+        local_199 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
         local_199 = true;
     }
-    let _e10 = local_199;
-    if !(_e10) {
-        local_200 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_200 = true;
+    let _e11 = local_199;
+    if _e11 {
+        return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    let _e18 = local_200;
+    return r_5;
+}
+
+fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
+    var r_6: AirlightResult = AirlightResult(0f, 0u);
+    var local_200: bool;
+    var g_29: AirlightCanonical;
+
+    let p_9 = n_4.scene;
+    let _e7 = airlight_vec_finite(p_9.light_position);
+    if _e7 {
+        let _e11 = airlight_vec_finite(p_9.dir);
+        local_200 = _e11;
+    } else {
+        local_200 = false;
+    }
+    let _e13 = local_200;
+    if _e13 {
+        g_29 = n_4.canonical;
+        if !(n_4.exact) {
+            let _e18 = airlight_canonical(p_9);
+            let _e19 = airlight_refined(p_9, _e18);
+            g_29 = _e19;
+        }
+        let _e20 = g_29;
+        let _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        r_6 = _e21;
+    }
+    let _e22 = r_6;
+    let _e23 = airlight_overflowed(_e22);
+    return _e23;
+}
+
+fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
+    let _e1 = airlight_no_canonical();
+    let _e5 = airlight_node_integral(AirlightNode(p_1, 1f, _e1, false));
+    return _e5;
+}
+
+fn airlight_in_scatter_point(s_53: AirlightScene) -> AirlightResult {
+    var local_201: bool;
+    var local_202: bool;
+
+    let _e1 = airlight_valid(s_53);
+    if !(!(_e1)) {
+        local_201 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_201 = true;
+    }
+    let _e10 = local_201;
+    if !(_e10) {
+        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_202 = true;
+    }
+    let _e18 = local_202;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_53);
-    let _e23 = airlight_refined(s_53, _e22);
-    let _e24 = airlight_limits(s_53, _e23);
+    let _e22 = airlight_point_integral(s_53);
+    return _e22;
+}
+
+fn airlight_in_scatter_route(s_54: AirlightScene) -> AirlightResult {
+    var local_203: bool;
+    var local_204: bool;
+
+    let _e1 = airlight_valid(s_54);
+    if !(!(_e1)) {
+        local_203 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_203 = true;
+    }
+    let _e10 = local_203;
+    if !(_e10) {
+        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_204 = true;
+    }
+    let _e18 = local_204;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_54);
+    let _e23 = airlight_refined(s_54, _e22);
+    let _e24 = airlight_limits(s_54, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_53);
+    let _e29 = airlight_isotropic_scene(s_54);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_53, _e23);
+        let _e31 = airlight_angle_route(s_54, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8554,24 +8708,24 @@ fn airlight_in_scatter_route(s_53: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_55: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_11: f32;
     var gauss_2: f32;
     var j_15: u32;
-    var local_201: bool;
+    var local_205: bool;
     var f: f32;
-    var local_202: bool;
+    var local_206: bool;
 
-    let _e1 = airlight_valid(s_54);
+    let _e1 = airlight_valid(s_55);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_54.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_55.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_54);
+    let _e12 = airlight_outer(s_55);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8591,7 +8745,7 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_25 = (0.5f * (_e42 + _e44));
+            let c_28 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
             let hw_10 = (0.5f * (_e49 - _e51));
@@ -8610,25 +8764,25 @@ fn airlight_in_scatter(s_54: AirlightScene) -> AirlightResult {
                     let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_15;
-                        local_201 = (_e81 < 6u);
+                        local_205 = (_e81 < 6u);
                     } else {
-                        local_201 = false;
+                        local_205 = false;
                     }
-                    let _e85 = local_201;
-                    let w_11 = select((c_25 + (hw_10 * node_5.x)), (c_25 - (hw_10 * node_5.x)), _e85);
-                    let _e87 = airlight_outer_node(s_54, _e12, w_11);
+                    let _e85 = local_205;
+                    let w_11 = select((c_28 + (hw_10 * node_5.x)), (c_28 - (hw_10 * node_5.x)), _e85);
+                    let _e87 = airlight_outer_node(s_55, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_54.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_202 = (s_54.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_55.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_206 = (s_55.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_202 = false;
+                            local_206 = false;
                         }
-                        let _e106 = local_202;
+                        let _e106 = local_206;
                         if _e106 {
                             return _e93;
                         }

@@ -24,7 +24,7 @@ fn main() {
     for g in [0.95, 0.99] {
         // the corners (0, 0) and (1, 1), the middles of the edges v = 0 and u = 1; inward directions
         for ((u, v), inward) in [((0.0, 0.0), 1.0), ((1.0, 1.0), -1.0), ((0.5, 0.0), 1.0), ((1.0, 0.5), -1.0)] {
-            for offset in [-0.002, -0.0005, -0.0001, 0.0001, 0.0005, 0.002, 0.01] {
+            for offset in [-0.002, -0.0005, -0.0001, -0.00001, 0.00001, 0.0001, 0.0005, 0.002, 0.01] {
                 for (label, (a, b)) in [("u", (1.0, 0.0)), ("v", (0.0, 1.0)), ("diagonal", (0.7, 0.7))] {
                     let towards = (eu * a + ev * b).normalize() * inward;
                     let dir = corner + eu * u + ev * v + towards * offset;
@@ -44,7 +44,7 @@ fn main() {
     let disc = Emitter::Disc { center, normal, radius };
     let (radial, tangent) = (eu.normalize(), normal.cross(eu.normalize()));
     for g in [0.95, 0.99] {
-        for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
+        for offset in [-0.002, -0.0005, -0.00001, 0.00001, 0.0005, 0.002, 0.01] {
             for (label, dir) in [("across the rim", center + radial * (radius - offset)), ("along the rim", center + radial * (radius - offset) + tangent * 0.05)] {
                 let ray = Ray { origin: DVec3::ZERO, dir, t_min: 0.0, t_max: f64::INFINITY };
                 let scene = AreaScene::new(ray, AreaLight::new(disc, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();

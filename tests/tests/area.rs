@@ -320,13 +320,15 @@ fn bounded_flat_emitters_in_forward_fog() {
 }
 
 /// The bounded method on a rectangle in `g = 0.95` and `0.99` fog, on rays that cross its plane
-/// 0.0005 to 0.01 inside and 0.0005 and 0.002 outside the middles of two edges, two corners
+/// 0.00001 to 0.01 inside and 0.00001 to 0.002 outside the middles of two edges, two corners
 /// (along the diagonal and along an edge, where inside is on the edge) and two points of edges
 /// 0.001 from a corner: the phase lobe's point `q_L` next to an edge. Inside, a wedge of chords
 /// ending on the edge is taken in the angle `β` it subtends (in the azimuth, 2.4e-3 off); outside,
 /// one starting on it in its Mercator angle (in the azimuth 1.2e-3 off), but for the half nearer
 /// a near edge they end on, in that edge's `β` (Mercator alone 1.3e-4); on an edge, the emitter
-/// is taken as holding `q_L` also where rounding puts it outside (9.7e-4 off without);
+/// is taken as holding `q_L` also where rounding puts it outside (9.7e-4 off without); the ray
+/// has a panel ending where the lobe's footprint reaches past the nearest edge and the next
+/// (`CROSSING_REACH`; without, crossings 1e-4 from an edge were 1.5e-4 off);
 /// `airlight::area::outer`. Within the f32 target 1e-4 of the nested construction at tolerance
 /// 1e-10, in f64 and in f32.
 #[test]
@@ -336,7 +338,7 @@ fn bounded_rectangle_with_the_lobe_next_to_an_edge() {
     let crossings = [(0.5, 0.0, ev), (1.0, 0.5, -eu), (0.0, 0.0, eu + ev), (1.0, 1.0, -(eu + ev)), (0.0, 0.0, eu), (1.0, 1.0, -ev), (0.001, 0.0, ev), (1.0, 0.999, -eu)];
     for g in [0.95, 0.99] {
         for (u, v, inward) in crossings {
-            for offset in [-0.002, -0.0005, 0.0005, 0.002, 0.01] {
+            for offset in [-0.002, -0.0005, -0.0001, -0.00001, 0.00001, 0.0001, 0.0005, 0.002, 0.01] {
                 let dir = corner + eu * u + ev * v + inward.normalize() * offset;
                 let (bounded, single, nested) = bounded_in_both_precisions(dir, rect, g, 1e-10);
                 assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "({u}, {v}) + {offset} inward, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");

@@ -484,8 +484,8 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
             }
         }
     }
-    // the rectangle in g = 0.99 fog on rays crossing its plane just inside and outside an edge's
-    // middle, inside a corner and on an edge by a corner (tests/area.rs
+    // the rectangle in g = 0.99 and 0.95 fog on rays crossing its plane just inside and outside an
+    // edge's middle, inside a corner and on an edge by a corner (tests/area.rs
     // bounded_rectangle_with_the_lobe_next_to_an_edge)
     let rectangle = Emitter::Rectangle { corner, edge_u, edge_v };
     let crossings = [
@@ -496,8 +496,8 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
         ("outside an edge by a corner", corner + 0.001 * edge_u, -edge_v),
     ];
     for (label, inside, inward) in crossings {
-        for offset in [0.0005f32, 0.002] {
-            cases.push(case(rectangle, Emission::Lambertian, inside + inward.normalize() * offset, 0.99, format!("g = 0.99 rectangle, crossing {offset} {label}")));
+        for (g, offset) in [(0.99, 0.0005f32), (0.99, 0.002), (0.95, 0.0001)] {
+            cases.push(case(rectangle, Emission::Lambertian, inside + inward.normalize() * offset, g, format!("g = {g} rectangle, crossing {offset} {label}")));
         }
     }
     // a disc of the rectangle's plane in g = 0.95 fog on rays crossing it on and just inside its rim

@@ -2031,21 +2031,23 @@ fn airlight_list_scan(l: AirlightPanelList, count: u32) -> AirlightListScan {
 }
 
 /// The first panels' edges of an outer integral over [lo, hi] (extended.rs `edges_between`): lo,
-/// the cuts strictly inside in increasing order (three compare-and-swaps; repeats dropped), hi;
+/// the cuts strictly inside in increasing order (five compare-and-swaps; repeats dropped), hi;
 /// `panels` of them between.
 struct AirlightEdges {
     at: array<f32, AIRLIGHT_OUTER_EDGES>,
     panels: u32,
 }
 
-fn airlight_edges_between(lo: f32, hi: f32, unsorted: array<f32, 3>) -> AirlightEdges {
+fn airlight_edges_between(lo: f32, hi: f32, unsorted: array<f32, 4>) -> AirlightEdges {
     var cuts = unsorted;
     if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
+    if (cuts[3] < cuts[2]) { let c = cuts[2]; cuts[2] = cuts[3]; cuts[3] = c; }
+    if (cuts[2] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[2]; cuts[2] = c; }
+    if (cuts[3] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[3]; cuts[3] = c; }
     if (cuts[2] < cuts[1]) { let c = cuts[1]; cuts[1] = cuts[2]; cuts[2] = c; }
-    if (cuts[1] < cuts[0]) { let c = cuts[0]; cuts[0] = cuts[1]; cuts[1] = c; }
     var e = AirlightEdges(array<f32, AIRLIGHT_OUTER_EDGES>(lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo, lo), 0u);
     var n = 0u;
-    for (var i = 0u; i < 3u; i++) {
+    for (var i = 0u; i < 4u; i++) {
         if (cuts[i] > e.at[n] && cuts[i] < hi) {
             n += 1u;
             e.at[n] = cuts[i];
@@ -2503,7 +2505,7 @@ fn airlight_outer(s: AirlightScene) -> AirlightOuter {
     g.scale = scale;
     // panels: split at the closest approach and where the light's foot passes a ray end; not at
     // the closest approach within half a unit of w of an end where the map is taken (extended.rs)
-    var cuts = array<f32, 3>(AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX);
+    var cuts = array<f32, 4>(AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX, AIRLIGHT_FLT_MAX);
     var at = array<f32, 3>(s_star, (s.t_min - along_d) / cos_a, (s.t_max - along_d) / cos_a);
     let sliver = scale > 0.0 && min(-airlight_to_w(g, 0.0), airlight_to_w(g, len)) < 0.5;
     for (var i = 0u; i < 3u; i++) {
@@ -2603,6 +2605,9 @@ const AIRLIGHT_LOBE_REACH: f32 = @LOBE_REACH@;
 // How far inside a flat emitter's edge, in heights above its plane, its foot is taken about
 // (outer.rs EDGE_REACH).
 const AIRLIGHT_EDGE_REACH: f32 = @EDGE_REACH@;
+// Where a ray crosses a flat emitter's plane near an edge, in a narrow phase lobe, how far from
+// the crossing, in lobe scales of the edge's distance, a ray panel ends (outer.rs CROSSING_REACH).
+const AIRLIGHT_CROSSING_REACH: f32 = @CROSSING_REACH@;
 // The largest power of an emission lobe (area.rs Emission::MAX_POWER).
 const AIRLIGHT_EMISSION_MAX_POWER: u32 = @EMISSION_MAX_POWER@u;
 
@@ -2754,8 +2759,9 @@ fn airlight_area_theta(a: AirlightArea, t: f32, infinite: bool) -> f32 {
 
 /// The ray integral's setup (outer.rs `in_scatter_bounded`): the emitter's frame, its centre and
 /// size, and the first panels' edges — at the centre's foot, where the ray crosses a flat
-/// emitter's plane and where it enters and leaves a sphere — cut where the extinction has
-/// grown by −ln ε past the emitter's far side.
+/// emitter's plane (and, in a narrow phase lobe, CROSSING_REACH lobe scales of an edge's distance
+/// from it) and where it enters and leaves a sphere — cut where the extinction has grown by
+/// −ln ε past the emitter's far side.
 fn airlight_area(s: AirlightScene) -> AirlightArea {
     let zero = vec3<f32>(0.0);
     var a = AirlightArea(zero, s.light_position, zero, zero, zero, zero, zero, zero, s.light_param_a, 0.0, 0.0,
@@ -2776,6 +2782,10 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     var cut_count = 0u;
     var cut0 = 0.0;
     var cut1 = 0.0;
+    // a flat emitter's: its plane's crossing's distances from the nearest edge and the next, and
+    // the emitting side along the ray
+    var distances = vec2<f32>(AIRLIGHT_FLT_MAX);
+    var front = 1.0;
     var centre = s.light_position;
     var size = s.light_param_a;
     if (s.light_shape == AIRLIGHT_SHAPE_SPHERE) {
@@ -2808,6 +2818,8 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
         a.dirs = vec3<f32>(dot(a.a1, d), dot(a.a2, d), dot(a.n, d));
         cut0 = dot(a.c - o, a.n) / dot(d, a.n);
         cut_count = 1u;
+        distances = airlight_outline_distances(airlight_outline_at(s, a, o + cut0 * d));
+        front = select(1.0, -1.0, dot(d, a.n) < 0.0);
     }
     if (!(size > 0.0)) {
         a.outcome = 1u;
@@ -2829,8 +2841,20 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     let lo = airlight_area_theta(a, t0, false);
     let hi = airlight_area_theta(a, t_end, end_infinite);
     // the cuts within [t0, t_end] (outside it: its start, which the edges skip)
-    var cuts = array<f32, 3>(a.x_h, select(a.x_h, cut0, cut_count > 0u), select(a.x_h, cut1, cut_count > 1u));
-    for (var i = 0u; i < 3u; i++) {
+    var cuts = array<f32, 4>(a.x_h, select(a.x_h, cut0, cut_count > 0u), select(a.x_h, cut1, cut_count > 1u), a.x_h);
+    // a flat emitter's plane crossed δ from an edge in a phase lobe of scale s < 1: a panel ends
+    // CROSSING_REACH·δ/s from the crossing on the emitting side, for the nearest edge and the
+    // next, unless the θ map's own scale h' is shorter
+    var scale = 1.0;
+    if (a.lobes.y > 0.0) { scale = min(scale, a.lobes.y); }
+    if (a.lobes.w > 0.0) { scale = min(scale, a.lobes.w); }
+    if (cut_count == 1u && scale < 1.0 && cut0 >= t0 && (end_infinite || cut0 <= t_end)) {
+        for (var i = 0u; i < 2u; i++) {
+            let reach = AIRLIGHT_CROSSING_REACH * distances[i] / scale;
+            if (reach < a.h_eff) { cuts[i + 2u] = cut0 + front * reach; }
+        }
+    }
+    for (var i = 0u; i < 4u; i++) {
         let t = cuts[i];
         cuts[i] = lo;
         if (airlight_is_finite(t) && t >= t0 && (end_infinite || t <= t_end)) { cuts[i] = airlight_area_theta(a, t, false); }
@@ -3083,6 +3107,42 @@ fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
         }
     }
     return vec3<f32>(nearest, select(0.0, 1.0, inside));
+}
+
+/// The distances of the foot (the origin) from the outline's nearest edge and from the next, a
+/// circle's next FLT_MAX (outer.rs `Outline::distances`).
+fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
+    if (o.radius > 0.0) {
+        let c = o.corners[0];
+        return vec2<f32>(abs(sqrt(c.x * c.x + c.y * c.y) - o.radius), AIRLIGHT_FLT_MAX);
+    }
+    var nearest = vec2<f32>(AIRLIGHT_FLT_MAX);
+    for (var i = 0u; i < 4u; i++) {
+        let a = o.corners[i];
+        let e = o.corners[(i + 1u) % 4u] - a;
+        let p = a + clamp(-(a.x * e.x + a.y * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0) * e;
+        let distance = sqrt(p.x * p.x + p.y * p.y);
+        if (distance < nearest.x) {
+            nearest = vec2<f32>(distance, nearest.x);
+        } else if (distance < nearest.y) {
+            nearest.y = distance;
+        }
+    }
+    return nearest;
+}
+
+/// A flat emitter's outline about the foot of x, a point of its plane (outer.rs
+/// `Shape::outline_distances`).
+fn airlight_outline_at(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> AirlightOutline {
+    let rel = x - a.c;
+    let foot = vec2<f32>(dot(rel, a.a1), dot(rel, a.a2));
+    let zero = vec2<f32>(0.0);
+    if (s.light_shape == AIRLIGHT_SHAPE_DISC) {
+        return AirlightOutline(array<vec2<f32>, 4>(-foot, zero, zero, zero), a.radius);
+    }
+    let u2 = vec2<f32>(dot(a.eu, a.a1), dot(a.eu, a.a2));
+    let v2 = vec2<f32>(dot(a.ev, a.a1), dot(a.ev, a.a2));
+    return AirlightOutline(array<vec2<f32>, 4>(-foot, u2 - foot, u2 + v2 - foot, v2 - foot), 0.0);
 }
 
 /// A phase lobe pointing at a flat emitter (outer.rs `FlatLobe`): its direction p = sign·d in

@@ -302,6 +302,7 @@ impl Constants {
             ("@AREA_RAY_TOLERANCE@", f(airlight::area::outer::BOUNDED_RAY_TOLERANCE)),
             ("@LOBE_REACH@", f(airlight::area::outer::LOBE_REACH)),
             ("@EDGE_REACH@", f(airlight::area::outer::EDGE_REACH)),
+            ("@CROSSING_REACH@", f(airlight::area::outer::CROSSING_REACH)),
             ("@EMISSION_MAX_POWER@", airlight::Emission::MAX_POWER.to_string()),
             ("@EMISSION_POWER_STEPS@", unrolled::power_steps(emission_bits)),
             (

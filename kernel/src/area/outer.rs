@@ -11,9 +11,11 @@
 //! * The ray: globally adaptive Gauss–Kronrod 7/15 (`crate::extended::adaptive`) in the angle
 //!   seen from the emitter's centre, `t − x_h = h' tan θ`, `h' = hypot(h, size)` (the glow is
 //!   as wide as the emitter's distance or its size), split at the centre's foot, where the ray
-//!   crosses a flat emitter's plane (behind it `S = 0`) and where it enters or leaves a sphere
-//!   (inside `S = 0`); cut where the extinction from the segment's start has grown by `−ln ε`
-//!   past the emitter's far side; at most [`BOUNDED_RAY_PANELS`] panels.
+//!   crosses a flat emitter's plane (behind it `S = 0`; in front, where the crossing lies near
+//!   an edge in a narrow phase lobe, also [`CROSSING_REACH`] lobe scales of the edge's distance
+//!   from it) and where it enters or leaves a sphere (inside `S = 0`); cut where the extinction
+//!   from the segment's start has grown by `−ln ε` past the emitter's far side; at most
+//!   [`BOUNDED_RAY_PANELS`] panels.
 //! * A flat emitter: polar coordinates about `q*`, its point nearest `x`'s foot on the plane
 //!   (the foot itself where it lies inside), `r = ρ₀ tan γ`, `ρ₀ = |x − q*|`, so that the
 //!   `z/d³` of `dω = z dA/d³` is smooth in `γ`: a disc over the whole circle about the foot, or
@@ -56,6 +58,22 @@ pub const BOUNDED_RAY_PANELS: usize = 8;
 /// The relative tolerance of [`AreaScene::in_scatter_bounded`]'s ray integral (its summed
 /// `|K15 − G7|`; the inner rules are fixed).
 pub const BOUNDED_RAY_TOLERANCE: f64 = 1e-3;
+
+/// Where a ray crosses a flat emitter's plane a distance `δ` from an edge in a phase lobe of
+/// scale `s < 1` (`2κ`, `κ` the lobe's width), a ray panel on the emitting side ends
+/// `CROSSING_REACH·δ/s` from the crossing: there the lobe's footprint `L·s` on the plane (`L` the
+/// distance to the crossing) is `CROSSING_REACH` times `δ`, and `S` has passed from the edge far
+/// outside the lobe to the edge through its point — a change over `δ/s`, which panels in `θ`, as
+/// wide as the emitter's distance, take as a step. One such panel for the nearest edge and one
+/// for the next (a crossing on an edge by a corner). `cargo run --release -p airlight-tests
+/// --example area_bounded_crossing`, `g` = 0.95 and 0.99, crossings 1e-4 from an edge or corner:
+/// 5.6e-4 without; the nearest edge's panel alone 3.5e-4 at 1, 1.9e-4 at 4 and 16 (the crossings
+/// on an edge by a corner); both 1.8e-5 at 8, 1.1e-5 — the emitter rules' own — at 16 and 32.
+/// Wider lobes are left to the θ panels' bisection, as isotropic scattering is: a `g` = 0.5 ray of
+/// tests/reference/area.jsonl crossing 0.005 outside an edge was 1.3e-6 off without the panel,
+/// 7.9e-5 with it (its first panels met the tolerance where, before, bisecting towards the
+/// crossing had also refined the rest). docs/DESIGN.md §12.
+pub const CROSSING_REACH: f64 = 16.0;
 
 /// How far inside a flat emitter's edge, in heights `z` of `x` above its plane, its foot must be
 /// for the emitter to be taken in polar coordinates about the foot (a smaller scale `s < 1` of an
@@ -381,10 +399,8 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
     if !(z > T::zero()) {
         return T::zero();
     }
-    let foot = (dot(rel, a1), dot(rel, a2));
-    let (u2, v2) = ((dot(eu, a1), dot(eu, a2)), (dot(ev, a1), dot(ev, a2)));
-    // counter-clockwise about n
-    let corners = [(T::zero(), T::zero()), u2, (u2.0 + v2.0, u2.1 + v2.1), v2];
+    let (corners, foot) = parallelogram_corners(rel, (eu, ev), (n, a1, a2));
+    let (u2, v2) = (corners[1], corners[3]);
     let det = u2.0 * v2.1 - u2.1 * v2.0;
     let dirs = [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)];
     let about_foot = Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1)));
@@ -409,6 +425,13 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
         }
     }
     sum
+}
+
+/// The parallelogram `p0 + u·eu + v·ev`'s corners in its plane's coordinates, counter-clockwise
+/// about `n`, and the foot of `x` (`rel = x − p0`).
+fn parallelogram_corners<T: Real>(rel: [T; 3], (eu, ev): ([T; 3], [T; 3]), (_, a1, a2): Frame<T>) -> ([(T, T); 4], (T, T)) {
+    let (u2, v2) = ((dot(eu, a1), dot(eu, a2)), (dot(ev, a1), dot(ev, a2)));
+    ([(T::zero(), T::zero()), u2, (u2.0 + v2.0, u2.1 + v2.1), v2], (dot(rel, a1), dot(rel, a2)))
 }
 
 /// A flat emitter's outline in its plane's coordinates (along `a1`, `a2` of [`Frame`]) about
@@ -490,6 +513,29 @@ impl<T: Real> Outline<T> {
                     }
                 }
                 (best.1, inside)
+            }
+        }
+    }
+
+    /// The distances of the foot (the origin) from the outline's nearest edge and from the next
+    /// (a circle has one edge, the next at ∞).
+    fn distances(&self) -> [T; 2] {
+        match *self {
+            Outline::Circle { c, radius } => [(c.0.hypot(c.1) - radius).abs(), T::infinity()],
+            Outline::Polygon(corners) => {
+                let mut nearest = [T::infinity(); 2];
+                for i in 0..4 {
+                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                    let e = (b.0 - a.0, b.1 - a.1);
+                    let s = (-(a.0 * e.0 + a.1 * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
+                    let distance = (a.0 + s * e.0).hypot(a.1 + s * e.1);
+                    if distance < nearest[0] {
+                        nearest = [distance, nearest[0]];
+                    } else if distance < nearest[1] {
+                        nearest[1] = distance;
+                    }
+                }
+                nearest
             }
         }
     }
@@ -800,6 +846,22 @@ impl<T: Real> Shape<T> {
             Shape::Sphere { c, radius } => sphere(light, x, c, radius),
         }
     }
+
+    /// A flat emitter's unit normal and the distances of a point `x` of its plane from the
+    /// outline's nearest edge and from the next ([`Outline::distances`]); `None` for a sphere.
+    fn outline_distances(&self, x: [T; 3]) -> Option<([T; 3], [T; 2])> {
+        match *self {
+            Shape::Disc { c, frame: (n, a1, a2), radius } => {
+                let rel = sub(x, c);
+                Some((n, Outline::Circle { c: (-dot(rel, a1), -dot(rel, a2)), radius }.distances()))
+            }
+            Shape::Parallelogram { p0, edges, frame } => {
+                let (corners, foot) = parallelogram_corners(sub(x, p0), edges, frame);
+                Some((frame.0, Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1))).distances()))
+            }
+            Shape::Sphere { .. } => None,
+        }
+    }
 }
 
 impl<T, P> AreaScene<T, P>
@@ -834,7 +896,7 @@ where
         let emission_scale = (power > 1).then(|| T::lit(2.0) / T::from(power - 1).unwrap_or(T::one()).sqrt());
         let light = Light { d, sigma_t, radiance: self.light.radiance, power, emission_scale, phase: &self.phase, constant_phase, lobes: lobes(&self.phase), azimuths: Azimuths::new() };
         // the emitter, its centre and size, and where the ray's integrand changes its form
-        let mut cuts = [T::nan(); 2];
+        let mut cuts = [T::nan(); 3];
         let (shape, centre, size) = match self.light.emitter {
             Emitter::Disc { center, normal, radius } => {
                 let (c, n) = (T::vec3_to_array(center), normalize(T::vec3_to_array(normal)));
@@ -860,7 +922,7 @@ where
                 let disc = b * b - k;
                 if disc > T::zero() {
                     let q = -b - disc.sqrt().copysign(b);
-                    cuts = [q, k / q];
+                    cuts = [q, k / q, T::nan()];
                 }
                 (Shape::Sphere { c, radius }, c, radius)
             }
@@ -875,9 +937,24 @@ where
         // anywhere it is seen from nearer
         let t_end = if sigma_t > T::zero() { t1.min(t0 + length(sub(centre, axpy(o, t0, d))) + size - T::epsilon().ln() / sigma_t) } else { t1 };
         let theta = |t: T| if t.is_finite() { (t - x_h).atan2(h_eff) } else { T::FRAC_PI_2() };
+        // a flat emitter's plane crossed δ from an edge in a phase lobe of scale s < 1: on its
+        // emitting side S changes over the distance at which the lobe reaches δ, where a panel
+        // ends ([`CROSSING_REACH`]); for the nearest edge and the next (a crossing on an edge by
+        // a corner), unless the θ map's own scale h' is shorter
+        let crossing = cuts[0];
+        let s = light.lobes.iter().flatten().fold(T::one(), |s, &(_, scale)| s.min(scale));
+        if let Some((n, distances)) = shape.outline_distances(axpy(o, crossing, d)).filter(|_| s < T::one() && crossing >= t0 && crossing <= t_end) {
+            let front = if dot(d, n) < T::zero() { -T::one() } else { T::one() };
+            for (cut, delta) in cuts[1..].iter_mut().zip(distances) {
+                let reach = T::lit(CROSSING_REACH) * delta / s;
+                if reach < h_eff {
+                    *cut = crossing + front * reach;
+                }
+            }
+        }
         // the cuts within the segment (outside it, or none: its start, which the edges skip)
-        let mut inside = [x_h, cuts[0], cuts[1]].map(|t| theta(if t >= t0 && t <= t_end { t } else { t0 }));
-        let (edges, n): ([T; 5], usize) = edges_between(theta(t0), theta(t_end), &mut inside);
+        let mut inside = [x_h, cuts[0], cuts[1], cuts[2]].map(|t| theta(if t >= t0 && t <= t_end { t } else { t0 }));
+        let (edges, n): ([T; 6], usize) = edges_between(theta(t0), theta(t_end), &mut inside);
         let mut integrand = |th: T| {
             let (s, c) = sin_cos_turns(th);
             let t = x_h + h_eff * s / c;
