@@ -607,10 +607,10 @@ metal::float2 airlight_csqrt(
 metal::float2 airlight_cos_sin(
     float x
 ) {
-    float z_15 = x * x;
-    float c_8 = 1.0 + (z_15 * (-0.5 + (z_15 * (0.041666668 + (z_15 * (-0.0013888889 + (z_15 * (0.000024801588 + (z_15 * (-0.0000002755732 + (z_15 * (0.0000000020876756 + (z_15 * (-0.000000000011470745 + (z_15 * 0.000000000000047794773)))))))))))))));
-    float s_56 = 1.0 + (z_15 * (-0.16666667 + (z_15 * (0.008333334 + (z_15 * (-0.0001984127 + (z_15 * (0.0000027557319 + (z_15 * (-0.000000025052108 + (z_15 * (0.00000000016059044 + (z_15 * (-0.00000000000076471636 + (z_15 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_8, s_56 * x);
+    float z_16 = x * x;
+    float c_8 = 1.0 + (z_16 * (-0.5 + (z_16 * (0.041666668 + (z_16 * (-0.0013888889 + (z_16 * (0.000024801588 + (z_16 * (-0.0000002755732 + (z_16 * (0.0000000020876756 + (z_16 * (-0.000000000011470745 + (z_16 * 0.000000000000047794773)))))))))))))));
+    float s_57 = 1.0 + (z_16 * (-0.16666667 + (z_16 * (0.008333334 + (z_16 * (-0.0001984127 + (z_16 * (0.0000027557319 + (z_16 * (-0.000000025052108 + (z_16 * (0.00000000016059044 + (z_16 * (-0.00000000000076471636 + (z_16 * 0.0000000000000028114574)))))))))))))));
+    return metal::float2(c_8, s_57 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -638,11 +638,11 @@ float airlight_atan(
     }
     float _e17 = t;
     float _e18 = t;
-    float z_16 = _e17 * _e18;
+    float z_17 = _e17 * _e18;
     float _e20 = y;
     float _e32 = t;
     float _e34 = t;
-    return _e20 + (((((((((0.080537446 * z_16) - 0.13877685) * z_16) + 0.19977711) * z_16) - 0.3333295) * z_16) * _e32) + _e34);
+    return _e20 + (((((((((0.080537446 * z_17) - 0.13877685) * z_17) + 0.19977711) * z_17) - 0.3333295) * z_17) * _e32) + _e34);
 }
 
 metal::float2 airlight_cln(
@@ -672,10 +672,10 @@ float airlight_log1p(
     if (_e9) {
         return metal::log(1.0 + x_2);
     }
-    float s_57 = x_2 / (2.0 + x_2);
-    float z_17 = s_57 * s_57;
-    float sum_14 = (((((((((((((((z_17 / 17.0) + 0.06666667) * z_17) + 0.07692308) * z_17) + 0.09090909) * z_17) + 0.11111111) * z_17) + 0.14285715) * z_17) + 0.2) * z_17) + 0.33333334) * z_17) + 1.0;
-    return (2.0 * s_57) * sum_14;
+    float s_58 = x_2 / (2.0 + x_2);
+    float z_18 = s_58 * s_58;
+    float sum_15 = (((((((((((((((z_18 / 17.0) + 0.06666667) * z_18) + 0.07692308) * z_18) + 0.09090909) * z_18) + 0.11111111) * z_18) + 0.14285715) * z_18) + 0.2) * z_18) + 0.33333334) * z_18) + 1.0;
+    return (2.0 * s_58) * sum_15;
 }
 
 bool airlight_is_finite(
@@ -843,8 +843,8 @@ metal::float2 airlight_e1_scaled_cf(
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = static_cast<float>(_e14);
-    metal::float2 b_16 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
-    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_16);
+    metal::float2 b_15 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_15);
     metal::float2 _e33 = airlight_cmul(_e29, _e29);
     metal::float2 _e35 = airlight_csqrt(metal::float2(1.0, 0.0) - _e33);
     root = _e35;
@@ -854,7 +854,7 @@ metal::float2 airlight_e1_scaled_cf(
         root = -(_e41);
     }
     metal::float2 _e46 = root;
-    metal::float2 _e48 = airlight_cmul(b_16, metal::float2(1.0, 0.0) + _e46);
+    metal::float2 _e48 = airlight_cmul(b_15, metal::float2(1.0, 0.0) + _e46);
     t_1 = _e48 * 0.5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -932,12 +932,12 @@ float airlight_en_scaled_cf(
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = static_cast<float>(n);
     float m_7 = static_cast<float>(_e2);
-    float b_17 = (x_4 + nf_1) + (2.0 * (m_7 + 1.0));
-    float a_33 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
-    float disc = 1.0 - ((4.0 * a_33) / (b_17 * b_17));
-    t_2 = b_17;
+    float b_16 = (x_4 + nf_1) + (2.0 * (m_7 + 1.0));
+    float a_32 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
+    float disc = 1.0 - ((4.0 * a_32) / (b_16 * b_16));
+    t_2 = b_16;
     if (disc > 0.0) {
-        t_2 = (b_17 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_16 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1089,11 +1089,11 @@ float airlight_hg_base(
     float op
 ) {
     if (g_2 >= 0.0) {
-        float a_34 = 1.0 - g_2;
-        return (om * (g_2 + g_2)) + (a_34 * a_34);
+        float a_33 = 1.0 - g_2;
+        return (om * (g_2 + g_2)) + (a_33 * a_33);
     }
-    float b_18 = 1.0 + g_2;
-    return (op * -((g_2 + g_2))) + (b_18 * b_18);
+    float b_17 = 1.0 + g_2;
+    return (op * -((g_2 + g_2))) + (b_17 * b_17);
 }
 
 float airlight_hg(
@@ -1239,11 +1239,11 @@ float airlight_singular_height(
 float airlight_hg_gap(
     float g_4
 ) {
-    float a_35 = metal::abs(g_4);
-    if (!((a_35 > 0.0))) {
+    float a_34 = metal::abs(g_4);
+    if (!((a_34 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return ((1.0 - a_35) * (1.0 - a_35)) / (a_35 + a_35);
+    return ((1.0 - a_34) * (1.0 - a_34)) / (a_34 + a_34);
 }
 
 metal::float3 airlight_singular_heights(
@@ -1261,8 +1261,8 @@ metal::float3 airlight_singular_heights(
             break;
         }
         case 3u: {
-            float a_36 = metal::abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, (a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX, sigma_1);
+            float a_35 = metal::abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, (a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX, sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -2088,10 +2088,10 @@ float airlight_error_factor(
     if (!((m_1.inner[0] > 0.0))) {
         return 1.0;
     }
-    float last = metal::abs(c_2.inner[7]) + metal::abs(c_2.inner[6]);
+    float last_1 = metal::abs(c_2.inner[7]) + metal::abs(c_2.inner[6]);
     float before = metal::abs(c_2.inner[5]) + metal::abs(c_2.inner[4]);
     if (!(!((before > 0.0)))) {
-        local_16 = !((last < before));
+        local_16 = !((last_1 < before));
     } else {
         local_16 = true;
     }
@@ -2099,7 +2099,7 @@ float airlight_error_factor(
     if (_e27) {
         return 1.0;
     }
-    float measured = metal::sqrt(last / before);
+    float measured = metal::sqrt(last_1 / before);
     float q_9 = metal::max(measured, (floor > 0.0) ? floor : 0.0);
     float truncation = metal::max(metal::abs(m_1.inner[7]), metal::abs(m_1.inner[6]));
     if (q_9 < 1.0) {
@@ -2177,8 +2177,8 @@ float airlight_bernstein_rho(
     float im
 ) {
     float im2_ = im * im;
-    float a_37 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
-    return a_37 + metal::sqrt(metal::max((a_37 * a_37) - 1.0, 0.0));
+    float a_36 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
+    return a_36 + metal::sqrt(metal::max((a_36 * a_36) - 1.0, 0.0));
 }
 
 float airlight_transform_noise(
@@ -2287,8 +2287,8 @@ AirlightPanel airlight_v_panel(
             float _e40 = r_2;
             uint _e41 = i_6;
             float _e42 = airlight_node(_e8, _e41);
-            float v_8 = _e39 + (_e40 * _e42);
-            metal::float2 _e48 = airlight_integrand_over(s_6, g_8, half_6.second ? -(sigma_4) : sigma_4, v_8);
+            float v_9 = _e39 + (_e40 * _e42);
+            metal::float2 _e48 = airlight_integrand_over(s_6, g_8, half_6.second ? -(sigma_4) : sigma_4, v_9);
             float fy = _e48.x;
             float over = _e48.y;
             uint _e51 = i_6;
@@ -3324,9 +3324,9 @@ metal::float2 airlight_angle_route(
             break;
         }
         case 3u: {
-            float a_38 = metal::abs(p0_4);
+            float a_37 = metal::abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, (a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, (a_37 > 0.0) ? ((1.0 - a_37) / a_37) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3400,15 +3400,15 @@ metal::float2 airlight_angle_route(
             bool below_1 = lower <= 1.5707964;
             float _e248 = psi1_1;
             metal::float2 _e254 = airlight_cos_sin(below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241))));
-            float cs_3 = _e254.y;
+            float cs_4 = _e254.y;
             float sn = below_1 ? -(_e254.x) : _e254.x;
             float near_pole = 1.0 + _e254.x;
-            float far_pole = (cs_3 * cs_3) / near_pole;
+            float far_pole = (cs_4 * cs_4) / near_pole;
             float one_minus = below_1 ? near_pole : far_pole;
             float one_plus = below_1 ? far_pole : near_pole;
-            float y_11 = below_1 ? (cs_3 / near_pole) : (near_pole / cs_3);
-            float weight_3 = (cs_3 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_11 - _e26), 0.0))) : 0.0;
-            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_3));
+            float y_11 = below_1 ? (cs_4 / near_pole) : (near_pole / cs_4);
+            float weight_3 = (cs_4 > 0.0) ? metal::exp(-(metal::max(big_h_7 * (y_11 - _e26), 0.0))) : 0.0;
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, (g_13.d_el * sn) + (g_13.d_c * cs_4));
             float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = _e288 * _e294;
             float gw = weight_3 * f_2;
@@ -3485,23 +3485,23 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_39 = a0_ / scale_4;
-    float b_19 = b0_ / scale_4;
+    float a_38 = a0_ / scale_4;
+    float b_18 = b0_ / scale_4;
     float c_10 = c0_ / scale_4;
-    float disc_1 = (b_19 * b_19) - ((4.0 * a_39) * c_10);
+    float disc_1 = (b_18 * b_18) - ((4.0 * a_38) * c_10);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_19 < 0.0) {
+    if (b_18 < 0.0) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_10 = -0.5 * (b_19 + (_e47 * metal::sqrt(disc_1)));
+    float q_10 = -0.5 * (b_18 + (_e47 * metal::sqrt(disc_1)));
     if (q_10 != 0.0) {
         r1_ = c_10 / q_10;
     }
-    if (a_39 != 0.0) {
-        r2_2 = q_10 / a_39;
+    if (a_38 != 0.0) {
+        r2_2 = q_10 / a_38;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3556,15 +3556,15 @@ bool airlight_dark(
     if (_e31) {
         return false;
     }
-    float a_40 = sigma_11 * g_15.d_el;
+    float a_39 = sigma_11 * g_15.d_el;
     float d_3 = g_15.d_c;
     if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_40 * a_40) + (d_3 * d_3));
-    y1_1 = (root_1 - a_40) / d_3;
-    if (a_40 > 0.0) {
-        y1_1 = d_3 / (a_40 + root_1);
+    float root_1 = metal::sqrt((a_39 * a_39) + (d_3 * d_3));
+    y1_1 = (root_1 - a_39) / d_3;
+    if (a_39 > 0.0) {
+        y1_1 = d_3 / (a_39 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -4397,8 +4397,8 @@ metal::float3 airlight_normalize(
     metal::float3 v_3
 ) {
     float m_9 = metal::max(metal::abs(v_3.x), metal::max(metal::abs(v_3.y), metal::abs(v_3.z)));
-    metal::float3 u_7 = v_3 / metal::float3(m_9);
-    return u_7 / metal::float3(metal::length(u_7));
+    metal::float3 u_8 = v_3 / metal::float3(m_9);
+    return u_8 / metal::float3(metal::length(u_8));
 }
 
 bool airlight_valid(
@@ -5040,10 +5040,10 @@ AirlightCanonical airlight_refined(
     }
     metal::float3 _e113 = airlight_normalize(dir_2);
     metal::float3 _e114 = airlight_normalize(w_6);
-    metal::float3 n_5 = -(metal::cross(_e113, _e114));
+    metal::float3 n_6 = -(metal::cross(_e113, _e114));
     out_2.h = h_7;
     metal::float3 _e119 = a_16;
-    out_2.d_c = metal::dot(n_5, _e119);
+    out_2.d_c = metal::dot(n_6, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
 }
@@ -5598,10 +5598,10 @@ float airlight_asinh(
     float x_16
 ) {
     float r_4 = {};
-    float a_41 = metal::abs(x_16);
-    r_4 = AIRLIGHT_LN_2_ + metal::log(a_41);
-    if (a_41 <= 4096.0) {
-        float _e17 = airlight_log1p(a_41 + ((a_41 * a_41) / (1.0 + metal::sqrt(1.0 + (a_41 * a_41)))));
+    float a_40 = metal::abs(x_16);
+    r_4 = AIRLIGHT_LN_2_ + metal::log(a_40);
+    if (a_40 <= 4096.0) {
+        float _e17 = airlight_log1p(a_40 + ((a_40 * a_40) / (1.0 + metal::sqrt(1.0 + (a_40 * a_40)))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5624,17 +5624,17 @@ metal::float2 airlight_cos_sin_half_turn(
     float x_17
 ) {
     float r_12 = x_17 - 1.5707964;
-    float z_18 = r_12 * r_12;
-    float cos_r = 1.0 - ((z_18 / 2.0) * (1.0 - ((z_18 / 12.0) * (1.0 - ((z_18 / 30.0) * (1.0 - ((z_18 / 56.0) * (1.0 - ((z_18 / 90.0) * (1.0 - ((z_18 / 132.0) * (1.0 - (z_18 / 182.0)))))))))))));
-    float sin_r = r_12 * (1.0 - ((z_18 / 6.0) * (1.0 - ((z_18 / 20.0) * (1.0 - ((z_18 / 42.0) * (1.0 - ((z_18 / 72.0) * (1.0 - ((z_18 / 110.0) * (1.0 - ((z_18 / 156.0) * (1.0 - (z_18 / 210.0))))))))))))));
+    float z_19 = r_12 * r_12;
+    float cos_r = 1.0 - ((z_19 / 2.0) * (1.0 - ((z_19 / 12.0) * (1.0 - ((z_19 / 30.0) * (1.0 - ((z_19 / 56.0) * (1.0 - ((z_19 / 90.0) * (1.0 - ((z_19 / 132.0) * (1.0 - (z_19 / 182.0)))))))))))));
+    float sin_r = r_12 * (1.0 - ((z_19 / 6.0) * (1.0 - ((z_19 / 20.0) * (1.0 - ((z_19 / 42.0) * (1.0 - ((z_19 / 72.0) * (1.0 - ((z_19 / 110.0) * (1.0 - ((z_19 / 156.0) * (1.0 - (z_19 / 210.0))))))))))))));
     return metal::float2(-(sin_r), cos_r);
 }
 
 float airlight_acos(
     float x_18
 ) {
-    float a_42 = metal::abs(x_18);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_42) / (1.0 + a_42)));
+    float a_41 = metal::abs(x_18);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_41) / (1.0 + a_41)));
     return (x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
@@ -5652,12 +5652,12 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_43 = cos_a * cos_g;
-    float b_20 = sin_a * sin_g;
-    if (b_20 <= metal::abs(a_43)) {
-        return (a_43 > 0.0) ? AIRLIGHT_PI : 0.0;
+    float a_42 = cos_a * cos_g;
+    float b_19 = sin_a * sin_g;
+    if (b_19 <= metal::abs(a_42)) {
+        return (a_42 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_43) / b_20, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_42) / b_19, -1.0, 1.0));
     return _e18;
 }
 
@@ -5736,9 +5736,9 @@ AirlightOuter airlight_surface(
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
     float _e92 = airlight_angle(cos_a_1, _e41);
-    float first_1 = metal::abs(1.5707964 - _e92);
-    cuts_2.inner[0] = first_1;
-    cuts_2.inner[1] = AIRLIGHT_PI - first_1;
+    float first_2 = metal::abs(1.5707964 - _e92);
+    cuts_2.inner[0] = first_2;
+    cuts_2.inner[1] = AIRLIGHT_PI - first_2;
     if (s_25.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         metal::float3 _e105 = airlight_normalize(s_25.brdf_view);
@@ -5843,8 +5843,8 @@ AirlightOuter airlight_surface(
             cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_16;
         }
     }
-    float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_1);
-    g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first_1 : 0.0;
+    float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2);
+    g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first_2 : 0.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
     while(true) {
@@ -6457,14 +6457,14 @@ AirlightNode airlight_outer_node(
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         uint i_42 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
         float t_9 = x_21 - static_cast<float>(i_42);
-        float a_44 = g_25.gamma.inner[metal::min(unsigned(i_42), 12u)];
-        float b_21 = g_25.gamma.inner[metal::min(unsigned(i_42 + 1u), 12u)];
-        float w_8 = b_21 - a_44;
-        float u_8 = 1.0 - t_9;
+        float a_43 = g_25.gamma.inner[metal::min(unsigned(i_42), 12u)];
+        float b_20 = g_25.gamma.inner[metal::min(unsigned(i_42 + 1u), 12u)];
+        float w_8 = b_20 - a_43;
+        float u_9 = 1.0 - t_9;
         bool smooth_a = ((g_25.smooth_edges >> i_42) & 1u) != 0u;
         bool smooth_b = ((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u;
-        gamma_1 = a_44 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
-        jacobian = ((w_8 * 6.0) * t_9) * u_8;
+        gamma_1 = a_43 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
+        jacobian = ((w_8 * 6.0) * t_9) * u_9;
         float _e58 = gamma_1;
         if (smooth_b) {
             local_163 = !(smooth_a);
@@ -6472,7 +6472,7 @@ AirlightNode airlight_outer_node(
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = _e66 ? (a_44 + ((w_8 * t_9) * t_9)) : _e58;
+        gamma_1 = _e66 ? (a_43 + ((w_8 * t_9) * t_9)) : _e58;
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -6488,7 +6488,7 @@ AirlightNode airlight_outer_node(
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = _e85 ? (b_21 - ((w_8 * u_8) * u_8)) : _e77;
+        gamma_1 = _e85 ? (b_20 - ((w_8 * u_9) * u_9)) : _e77;
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -6496,7 +6496,7 @@ AirlightNode airlight_outer_node(
             local_166 = false;
         }
         bool _e94 = local_166;
-        jacobian = _e94 ? (w_8 * (u_8 + u_8)) : _e87;
+        jacobian = _e94 ? (w_8 * (u_9 + u_9)) : _e87;
         float _e96 = gamma_1;
         if (smooth_a) {
             local_167 = smooth_b;
@@ -6504,7 +6504,7 @@ AirlightNode airlight_outer_node(
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = _e102 ? (a_44 + (w_8 * t_9)) : _e96;
+        gamma_1 = _e102 ? (a_43 + (w_8 * t_9)) : _e96;
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -6530,10 +6530,10 @@ AirlightNode airlight_outer_node(
             float arc = 2.0 * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y));
             weight = (s_27.brdf_scale * 0.31830987) * arc;
         } else {
-            float n_6 = s_27.brdf_exponent;
+            float n_7 = s_27.brdf_exponent;
             float _e161 = gamma_1;
-            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
-            weight = ((s_27.brdf_scale * (n_6 + 2.0)) * 0.15915494) * _e162;
+            float _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_7);
+            weight = ((s_27.brdf_scale * (n_7 + 2.0)) * 0.15915494) * _e162;
         }
         p.dir = (_e119.x * g_25.l) + (_e119.y * g_25.u);
         p.t_min = 0.0;
@@ -6578,11 +6578,18 @@ metal::float3 airlight_azimuths(
     return circle ? full.inner[metal::min(unsigned(i_25), 31u)] : half_18.inner[metal::min(unsigned(i_25), 31u)];
 }
 
+metal::float3 airlight_azimuths_even(
+    uint j_5
+) {
+    metal::float3 _e6 = airlight_azimuths(false, (2u * j_5) + 1u);
+    return metal::float3(_e6.xy, 2.0 * _e6.z);
+}
+
 metal::float2 airlight_triangle_rule(
     uint i_26
 ) {
-    airlight_type_21 rule_3 = airlight_type_21 {{metal::float2(-0.12523341, 0.24914704), metal::float2(0.12523341, 0.24914704), metal::float2(-0.3678315, 0.23349254), metal::float2(0.3678315, 0.23349254), metal::float2(-0.58731794, 0.20316742), metal::float2(0.58731794, 0.20316742), metal::float2(-0.76990265, 0.16007833), metal::float2(0.76990265, 0.16007833), metal::float2(-0.9041172, 0.10693932), metal::float2(0.9041172, 0.10693932), metal::float2(-0.98156065, 0.047175337), metal::float2(0.98156065, 0.047175337)}};
-    return rule_3.inner[metal::min(unsigned(i_26), 11u)];
+    airlight_type_21 rule_5 = airlight_type_21 {{metal::float2(-0.12523341, 0.24914704), metal::float2(0.12523341, 0.24914704), metal::float2(-0.3678315, 0.23349254), metal::float2(0.3678315, 0.23349254), metal::float2(-0.58731794, 0.20316742), metal::float2(0.58731794, 0.20316742), metal::float2(-0.76990265, 0.16007833), metal::float2(0.76990265, 0.16007833), metal::float2(-0.9041172, 0.10693932), metal::float2(0.9041172, 0.10693932), metal::float2(-0.98156065, 0.047175337), metal::float2(0.98156065, 0.047175337)}};
+    return rule_5.inner[metal::min(unsigned(i_26), 11u)];
 }
 
 float airlight_area_phase(
@@ -6809,8 +6816,8 @@ metal::float4 airlight_phase_lobes(
             break;
         }
         case 3u: {
-            float a_45 = metal::abs(p0_5);
-            metal::float2 _e21 = airlight_lobe(p0_5, (a_45 > 0.0) ? ((1.0 - a_45) / a_45) : AIRLIGHT_FLT_MAX);
+            float a_44 = metal::abs(p0_5);
+            metal::float2 _e21 = airlight_lobe(p0_5, (a_44 > 0.0) ? ((1.0 - a_44) / a_44) : AIRLIGHT_FLT_MAX);
             first = _e21;
             break;
         }
@@ -6894,10 +6901,10 @@ metal::float2 airlight_outline_distances(
         }
         {
             uint _e28 = i_27;
-            metal::float2 a_46 = o.corners.inner[metal::min(unsigned(_e28), 3u)];
+            metal::float2 a_45 = o.corners.inner[metal::min(unsigned(_e28), 3u)];
             uint _e31 = i_27;
-            metal::float2 e_15 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e31 + 1u, 4u)), 3u)] - a_46;
-            metal::float2 p_4 = a_46 + (metal::clamp(-(((o.corners.inner[metal::min(unsigned(_e28), 3u)].x * e_15.x) + (o.corners.inner[metal::min(unsigned(_e28), 3u)].y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0) * e_15);
+            metal::float2 e_15 = o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e31 + 1u, 4u)), 3u)] - a_45;
+            metal::float2 p_4 = a_45 + (metal::clamp(-(((o.corners.inner[metal::min(unsigned(_e28), 3u)].x * e_15.x) + (o.corners.inner[metal::min(unsigned(_e28), 3u)].y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0) * e_15);
             float distance = metal::sqrt((p_4.x * p_4.x) + (p_4.y * p_4.y));
             float _e68 = nearest.x;
             if (distance < _e68) {
@@ -6973,7 +6980,7 @@ AirlightArea airlight_area(
         AirlightArea _e42 = a_19;
         return _e42;
     }
-    metal::float3 o_7 = s_36.origin;
+    metal::float3 o_8 = s_36.origin;
     metal::float3 _e45 = airlight_normalize(s_36.dir);
     a_19.d = _e45;
     bool infinite_6 = (s_36.flags & 1u) != 0u;
@@ -6982,184 +6989,187 @@ AirlightArea airlight_area(
     size = s_36.light_param_a;
     if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         metal::float3 _e72 = a_19.c;
-        metal::float3 oc = o_7 - _e72;
-        float b_22 = metal::dot(oc, _e45);
+        metal::float3 oc = o_8 - _e72;
+        float b_21 = metal::dot(oc, _e45);
         float _e77 = a_19.radius;
         float _e79 = a_19.radius;
         float k_12 = metal::dot(oc, oc) - (_e77 * _e79);
-        float disc_2 = (b_22 * b_22) - k_12;
+        float _e84 = airlight_safe_length(oc - (b_21 * _e45));
+        float _e86 = a_19.radius;
+        float _e89 = a_19.radius;
+        float disc_2 = (_e86 - _e84) * (_e89 + _e84);
         if (disc_2 > 0.0) {
             float root_2 = metal::sqrt(disc_2);
-            float q_12 = -(b_22) - (((as_type<uint>(b_22) & 2147483648u) != 0u) ? -(root_2) : root_2);
+            float q_12 = -(b_21) - (((as_type<uint>(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2);
             cut0_ = q_12;
             cut1_ = k_12 / q_12;
             cut_count = 2u;
         }
     } else {
         if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
-            metal::float3 _e103 = airlight_normalize(s_36.light_axis);
-            a_19.n = _e103;
-            metal::float3 _e106 = a_19.n;
-            metal::float3 _e107 = airlight_basis_e1_(_e106);
-            a_19.a1_ = _e107;
+            metal::float3 _e111 = airlight_normalize(s_36.light_axis);
+            a_19.n = _e111;
+            metal::float3 _e114 = a_19.n;
+            metal::float3 _e115 = airlight_basis_e1_(_e114);
+            a_19.a1_ = _e115;
         } else {
             a_19.eu = s_36.light_axis;
             a_19.ev = s_36.light_end;
-            metal::float3 _e114 = a_19.eu;
-            metal::float3 _e116 = a_19.ev;
-            metal::float3 _e118 = airlight_normalize(metal::cross(_e114, _e116));
-            a_19.n = _e118;
-            metal::float3 _e121 = a_19.eu;
-            metal::float3 _e122 = airlight_normalize(_e121);
-            a_19.a1_ = _e122;
-            metal::float3 _e124 = a_19.eu;
-            metal::float3 _e126 = a_19.ev;
-            metal::float3 diagonal = _e124 + _e126;
-            metal::float3 _e129 = a_19.c;
-            centre = _e129 + (0.5 * diagonal);
-            float _e133 = airlight_safe_length(diagonal);
-            metal::float3 _e135 = a_19.eu;
-            metal::float3 _e137 = a_19.ev;
-            float _e139 = airlight_safe_length(_e135 - _e137);
-            size = 0.5 * metal::max(_e133, _e139);
+            metal::float3 _e122 = a_19.eu;
+            metal::float3 _e124 = a_19.ev;
+            metal::float3 _e126 = airlight_normalize(metal::cross(_e122, _e124));
+            a_19.n = _e126;
+            metal::float3 _e129 = a_19.eu;
+            metal::float3 _e130 = airlight_normalize(_e129);
+            a_19.a1_ = _e130;
+            metal::float3 _e132 = a_19.eu;
+            metal::float3 _e134 = a_19.ev;
+            metal::float3 diagonal = _e132 + _e134;
+            metal::float3 _e137 = a_19.c;
+            centre = _e137 + (0.5 * diagonal);
+            float _e141 = airlight_safe_length(diagonal);
+            metal::float3 _e143 = a_19.eu;
+            metal::float3 _e145 = a_19.ev;
+            float _e147 = airlight_safe_length(_e143 - _e145);
+            size = 0.5 * metal::max(_e141, _e147);
         }
-        metal::float3 _e145 = a_19.n;
-        metal::float3 _e147 = a_19.a1_;
-        a_19.a2_ = metal::cross(_e145, _e147);
-        metal::float3 _e151 = a_19.a1_;
-        metal::float3 _e154 = a_19.a2_;
-        metal::float3 _e157 = a_19.n;
-        a_19.dirs = metal::float3(metal::dot(_e151, _e45), metal::dot(_e154, _e45), metal::dot(_e157, _e45));
-        metal::float3 _e161 = a_19.c;
-        metal::float3 _e164 = a_19.n;
-        metal::float3 _e167 = a_19.n;
-        cut0_ = metal::dot(_e161 - o_7, _e164) / metal::dot(_e45, _e167);
+        metal::float3 _e153 = a_19.n;
+        metal::float3 _e155 = a_19.a1_;
+        a_19.a2_ = metal::cross(_e153, _e155);
+        metal::float3 _e159 = a_19.a1_;
+        metal::float3 _e162 = a_19.a2_;
+        metal::float3 _e165 = a_19.n;
+        a_19.dirs = metal::float3(metal::dot(_e159, _e45), metal::dot(_e162, _e45), metal::dot(_e165, _e45));
+        metal::float3 _e169 = a_19.c;
+        metal::float3 _e172 = a_19.n;
+        metal::float3 _e175 = a_19.n;
+        cut0_ = metal::dot(_e169 - o_8, _e172) / metal::dot(_e45, _e175);
         cut_count = 1u;
-        AirlightArea _e171 = a_19;
-        float _e172 = cut0_;
-        AirlightOutline _e175 = airlight_outline_at(s_36, _e171, o_7 + (_e172 * _e45));
-        metal::float2 _e176 = airlight_outline_distances(_e175);
-        distances = _e176;
-        metal::float3 _e178 = a_19.n;
-        front = (metal::dot(_e45, _e178) < 0.0) ? -1.0 : 1.0;
+        AirlightArea _e179 = a_19;
+        float _e180 = cut0_;
+        AirlightOutline _e183 = airlight_outline_at(s_36, _e179, o_8 + (_e180 * _e45));
+        metal::float2 _e184 = airlight_outline_distances(_e183);
+        distances = _e184;
+        metal::float3 _e186 = a_19.n;
+        front = (metal::dot(_e45, _e186) < 0.0) ? -1.0 : 1.0;
     }
-    float _e185 = size;
-    if (!((_e185 > 0.0))) {
+    float _e193 = size;
+    if (!((_e193 > 0.0))) {
         a_19.outcome = 1u;
-        AirlightArea _e191 = a_19;
-        return _e191;
+        AirlightArea _e199 = a_19;
+        return _e199;
     }
-    metal::float3 _e192 = centre;
-    metal::float3 to_centre = _e192 - o_7;
+    metal::float3 _e200 = centre;
+    metal::float3 to_centre = _e200 - o_8;
     a_19.x_h = metal::dot(to_centre, _e45);
-    float _e197 = a_19.x_h;
-    float _e200 = airlight_safe_length(to_centre - (_e197 * _e45));
-    float _e203 = size;
-    float _e204 = size;
-    a_19.h_eff = metal::sqrt((_e200 * _e200) + (_e203 * _e204));
+    float _e205 = a_19.x_h;
+    float _e208 = airlight_safe_length(to_centre - (_e205 * _e45));
+    float _e211 = size;
+    float _e212 = size;
+    a_19.h_eff = metal::sqrt((_e208 * _e208) + (_e211 * _e212));
     t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
     if (s_36.sigma_t > 0.0) {
-        metal::float3 _e214 = centre;
-        float _e218 = airlight_safe_length(_e214 - (o_7 + (t0_2 * _e45)));
-        float _e220 = size;
-        float reach_1 = ((t0_2 + _e218) + _e220) - (-15.942385 / s_36.sigma_t);
+        metal::float3 _e222 = centre;
+        float _e226 = airlight_safe_length(_e222 - (o_8 + (t0_2 * _e45)));
+        float _e228 = size;
+        float reach_1 = ((t0_2 + _e226) + _e228) - (-15.942385 / s_36.sigma_t);
         if (!(infinite_6)) {
-            float _e229 = t_end_1;
-            local_173 = reach_1 < _e229;
+            float _e237 = t_end_1;
+            local_173 = reach_1 < _e237;
         } else {
             local_173 = true;
         }
-        bool _e232 = local_173;
-        if (_e232) {
+        bool _e240 = local_173;
+        if (_e240) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e234 = a_19;
-    float _e236 = airlight_area_theta(_e234, t0_2, false);
-    AirlightArea _e237 = a_19;
-    float _e238 = t_end_1;
-    bool _e239 = end_infinite;
-    float _e240 = airlight_area_theta(_e237, _e238, _e239);
-    float _e242 = a_19.x_h;
-    float _e244 = a_19.x_h;
-    float _e245 = cut0_;
-    uint _e246 = cut_count;
-    float _e251 = a_19.x_h;
-    float _e252 = cut1_;
-    uint _e253 = cut_count;
-    float _e258 = a_19.x_h;
-    cuts_4 = airlight_type_12 {{_e242, (_e246 > 0u) ? _e245 : _e244, (_e253 > 1u) ? _e252 : _e251, _e258}};
-    float _e265 = a_19.lobes.y;
-    if (_e265 > 0.0) {
-        float _e268 = scale_1;
-        float _e271 = a_19.lobes.y;
-        scale_1 = metal::min(_e268, _e271);
+    AirlightArea _e242 = a_19;
+    float _e244 = airlight_area_theta(_e242, t0_2, false);
+    AirlightArea _e245 = a_19;
+    float _e246 = t_end_1;
+    bool _e247 = end_infinite;
+    float _e248 = airlight_area_theta(_e245, _e246, _e247);
+    float _e250 = a_19.x_h;
+    float _e252 = a_19.x_h;
+    float _e253 = cut0_;
+    uint _e254 = cut_count;
+    float _e259 = a_19.x_h;
+    float _e260 = cut1_;
+    uint _e261 = cut_count;
+    float _e266 = a_19.x_h;
+    cuts_4 = airlight_type_12 {{_e250, (_e254 > 0u) ? _e253 : _e252, (_e261 > 1u) ? _e260 : _e259, _e266}};
+    float _e273 = a_19.lobes.y;
+    if (_e273 > 0.0) {
+        float _e276 = scale_1;
+        float _e279 = a_19.lobes.y;
+        scale_1 = metal::min(_e276, _e279);
     }
-    float _e275 = a_19.lobes.w;
-    if (_e275 > 0.0) {
-        float _e278 = scale_1;
-        float _e281 = a_19.lobes.w;
-        scale_1 = metal::min(_e278, _e281);
+    float _e283 = a_19.lobes.w;
+    if (_e283 > 0.0) {
+        float _e286 = scale_1;
+        float _e289 = a_19.lobes.w;
+        scale_1 = metal::min(_e286, _e289);
     }
-    uint _e283 = cut_count;
-    if (_e283 == 1u) {
-        float _e288 = scale_1;
-        local_174 = _e288 < 1.0;
+    uint _e291 = cut_count;
+    if (_e291 == 1u) {
+        float _e296 = scale_1;
+        local_174 = _e296 < 1.0;
     } else {
         local_174 = false;
     }
-    bool _e292 = local_174;
-    if (_e292) {
-        float _e295 = cut0_;
-        local_175 = _e295 >= t0_2;
+    bool _e300 = local_174;
+    if (_e300) {
+        float _e303 = cut0_;
+        local_175 = _e303 >= t0_2;
     } else {
         local_175 = false;
     }
-    bool _e298 = local_175;
-    if (_e298) {
-        bool _e301 = end_infinite;
-        if (!(_e301)) {
-            float _e305 = cut0_;
-            float _e306 = t_end_1;
-            local_177 = _e305 <= _e306;
+    bool _e306 = local_175;
+    if (_e306) {
+        bool _e309 = end_infinite;
+        if (!(_e309)) {
+            float _e313 = cut0_;
+            float _e314 = t_end_1;
+            local_177 = _e313 <= _e314;
         } else {
             local_177 = true;
         }
-        bool _e309 = local_177;
-        local_176 = _e309;
+        bool _e317 = local_177;
+        local_176 = _e317;
     } else {
         local_176 = false;
     }
-    bool _e311 = local_176;
-    if (_e311) {
+    bool _e319 = local_176;
+    if (_e319) {
         uint2 loop_bound_33 = uint2(4294967295u);
         bool loop_init_32 = true;
         while(true) {
             if (metal::all(loop_bound_33 == uint2(0u))) { break; }
             loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
             if (!loop_init_32) {
-                uint _e336 = i_28;
-                i_28 = _e336 + 1u;
+                uint _e344 = i_28;
+                i_28 = _e344 + 1u;
             }
             loop_init_32 = false;
-            uint _e314 = i_28;
-            if (_e314 < 2u) {
+            uint _e322 = i_28;
+            if (_e322 < 2u) {
             } else {
                 break;
             }
             {
-                uint _e318 = i_28;
-                float _e320 = distances[metal::min(unsigned(_e318), 1u)];
-                float _e322 = scale_1;
-                float reach_2 = (AIRLIGHT_CROSSING_REACH * _e320) / _e322;
-                float _e325 = a_19.h_eff;
-                if (reach_2 < _e325) {
-                    uint _e327 = i_28;
-                    float _e331 = cut0_;
-                    float _e332 = front;
-                    cuts_4.inner[metal::min(unsigned(_e327 + 2u), 3u)] = _e331 + (_e332 * reach_2);
+                uint _e326 = i_28;
+                float _e328 = distances[metal::min(unsigned(_e326), 1u)];
+                float _e330 = scale_1;
+                float reach_2 = (AIRLIGHT_CROSSING_REACH * _e328) / _e330;
+                float _e333 = a_19.h_eff;
+                if (reach_2 < _e333) {
+                    uint _e335 = i_28;
+                    float _e339 = cut0_;
+                    float _e340 = front;
+                    cuts_4.inner[metal::min(unsigned(_e335 + 2u), 3u)] = _e339 + (_e340 * reach_2);
                 }
             }
         }
@@ -7170,55 +7180,55 @@ AirlightArea airlight_area(
         if (metal::all(loop_bound_34 == uint2(0u))) { break; }
         loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_33) {
-            uint _e372 = i_29;
-            i_29 = _e372 + 1u;
+            uint _e380 = i_29;
+            i_29 = _e380 + 1u;
         }
         loop_init_33 = false;
-        uint _e340 = i_29;
-        if (_e340 < 4u) {
+        uint _e348 = i_29;
+        if (_e348 < 4u) {
         } else {
             break;
         }
         {
-            uint _e343 = i_29;
-            float t_10 = cuts_4.inner[metal::min(unsigned(_e343), 3u)];
-            uint _e346 = i_29;
-            cuts_4.inner[metal::min(unsigned(_e346), 3u)] = _e236;
-            bool _e348 = airlight_is_finite(t_10);
-            if (_e348) {
+            uint _e351 = i_29;
+            float t_10 = cuts_4.inner[metal::min(unsigned(_e351), 3u)];
+            uint _e354 = i_29;
+            cuts_4.inner[metal::min(unsigned(_e354), 3u)] = _e244;
+            bool _e356 = airlight_is_finite(t_10);
+            if (_e356) {
                 local_178 = t_10 >= t0_2;
             } else {
                 local_178 = false;
             }
-            bool _e353 = local_178;
-            if (_e353) {
-                bool _e356 = end_infinite;
-                if (!(_e356)) {
-                    float _e360 = t_end_1;
-                    local_180 = t_10 <= _e360;
+            bool _e361 = local_178;
+            if (_e361) {
+                bool _e364 = end_infinite;
+                if (!(_e364)) {
+                    float _e368 = t_end_1;
+                    local_180 = t_10 <= _e368;
                 } else {
                     local_180 = true;
                 }
-                bool _e363 = local_180;
-                local_179 = _e363;
+                bool _e371 = local_180;
+                local_179 = _e371;
             } else {
                 local_179 = false;
             }
-            bool _e365 = local_179;
-            if (_e365) {
-                uint _e366 = i_29;
-                AirlightArea _e368 = a_19;
-                float _e370 = airlight_area_theta(_e368, t_10, false);
-                cuts_4.inner[metal::min(unsigned(_e366), 3u)] = _e370;
+            bool _e373 = local_179;
+            if (_e373) {
+                uint _e374 = i_29;
+                AirlightArea _e376 = a_19;
+                float _e378 = airlight_area_theta(_e376, t_10, false);
+                cuts_4.inner[metal::min(unsigned(_e374), 3u)] = _e378;
             }
         }
     }
-    airlight_type_12 _e374 = cuts_4;
-    AirlightEdges _e375 = airlight_edges_between(_e236, _e240, _e374);
-    a_19.edges = _e375.at;
-    a_19.panels = _e375.panels;
-    AirlightArea _e380 = a_19;
-    return _e380;
+    airlight_type_12 _e382 = cuts_4;
+    AirlightEdges _e383 = airlight_edges_between(_e244, _e248, _e382);
+    a_19.edges = _e383.at;
+    a_19.panels = _e383.panels;
+    AirlightArea _e388 = a_19;
+    return _e388;
 }
 
 AirlightAbove airlight_above(
@@ -7241,11 +7251,11 @@ float airlight_flat_node(
     float r_13 = (above_1.rho0_ * _e8.y) / _e8.x;
     float dr = above_1.rho0_ / (_e8.x * _e8.x);
     metal::float2 p_5 = above_1.off + (r_13 * e_3);
-    float z_19 = above_1.z;
-    float dist = metal::sqrt(((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y));
+    float z_20 = above_1.z;
+    float dist = metal::sqrt(((z_20 * z_20) + (p_5.x * p_5.x)) + (p_5.y * p_5.y));
     float inv_5 = 1.0 / dist;
-    float cos = z_19 * inv_5;
-    float _e50 = airlight_area_phase(s_37, (((p_5.x * a_20.dirs[0]) + (p_5.y * a_20.dirs[1])) - (z_19 * a_20.dirs[2])) * inv_5);
+    float cos = z_20 * inv_5;
+    float _e50 = airlight_area_phase(s_37, (((p_5.x * a_20.dirs[0]) + (p_5.y * a_20.dirs[1])) - (z_20 * a_20.dirs[2])) * inv_5);
     float _e52 = airlight_emitted(s_37, cos);
     return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_37.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_13) * dr;
 }
@@ -7347,9 +7357,9 @@ metal::float3 airlight_outline_boundary(
         }
         {
             uint _e40 = i_30;
-            metal::float2 a_47 = o_1.corners.inner[metal::min(unsigned(_e40), 3u)];
+            metal::float2 a_46 = o_1.corners.inner[metal::min(unsigned(_e40), 3u)];
             uint _e43 = i_30;
-            metal::float2 e_16 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_47;
+            metal::float2 e_16 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_46;
             bool _e50 = inside;
             if (_e50) {
                 local_181 = (((q_4.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_16.y) - ((q_4.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_16.x)) <= 0.0;
@@ -7359,7 +7369,7 @@ metal::float3 airlight_outline_boundary(
             bool _e67 = local_181;
             inside = _e67;
             float t_11 = metal::clamp((((q_4.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_16.x) + ((q_4.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y)), 0.0, 1.0);
-            metal::float2 p_6 = a_47 + (t_11 * e_16);
+            metal::float2 p_6 = a_46 + (t_11 * e_16);
             float dd = ((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y));
             float _e107 = best;
             if (dd < _e107) {
@@ -7388,7 +7398,7 @@ AirlightFlatLobe airlight_flat_lobe(
     metal::float2 centre_1,
     float size_1
 ) {
-    uint j_5 = 0u;
+    uint j_6 = 0u;
     bool local_182 = {};
     bool local_183 = {};
     bool local_184 = {};
@@ -7399,27 +7409,27 @@ AirlightFlatLobe airlight_flat_lobe(
         if (metal::all(loop_bound_36 == uint2(0u))) { break; }
         loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
         if (!loop_init_35) {
-            uint _e80 = j_5;
-            j_5 = _e80 + 1u;
+            uint _e80 = j_6;
+            j_6 = _e80 + 1u;
         }
         loop_init_35 = false;
-        uint _e13 = j_5;
+        uint _e13 = j_6;
         if (_e13 < 2u) {
         } else {
             break;
         }
         {
-            uint _e20 = j_5;
-            metal::float2 lobe_4 = (_e20 == 1u) ? a_22.lobes.zw : a_22.lobes.xy;
-            metal::float3 p_7 = lobe_4.x * a_22.dirs;
-            if (lobe_4.y > 0.0) {
+            uint _e20 = j_6;
+            metal::float2 lobe_5 = (_e20 == 1u) ? a_22.lobes.zw : a_22.lobes.xy;
+            metal::float3 p_7 = lobe_5.x * a_22.dirs;
+            if (lobe_5.y > 0.0) {
                 local_182 = p_7.z < 0.0;
             } else {
                 local_182 = false;
             }
             bool _e36 = local_182;
             if (_e36) {
-                local_183 = lobe_4.y < (_e10 + _e10);
+                local_183 = lobe_5.y < (_e10 + _e10);
             } else {
                 local_183 = false;
             }
@@ -7433,13 +7443,13 @@ AirlightFlatLobe airlight_flat_lobe(
                 bool on_emitter = metal::length(_e49 - q_13) <= (0.0000019073486 * ((metal::length(q_13) + size_1) + z_11));
                 if (!(on_emitter)) {
                     float _e69 = airlight_acos(cos_1);
-                    local_184 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y);
+                    local_184 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y);
                 } else {
                     local_184 = true;
                 }
                 bool _e75 = local_184;
                 if (_e75) {
-                    return AirlightFlatLobe {p_7, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter};
+                    return AirlightFlatLobe {p_7, lobe_5.x, lobe_5.y, l_4, q_13, on_emitter};
                 }
             }
         }
@@ -7450,8 +7460,8 @@ AirlightFlatLobe airlight_flat_lobe(
 metal::float2 airlight_radial_rule(
     uint i_31
 ) {
-    airlight_type_22 rule_4 = airlight_type_22 {{metal::float2(-0.09501251, 0.1894506), metal::float2(0.09501251, 0.1894506), metal::float2(-0.28160354, 0.18260342), metal::float2(0.28160354, 0.18260342), metal::float2(-0.45801678, 0.16915652), metal::float2(0.45801678, 0.16915652), metal::float2(-0.61787623, 0.14959599), metal::float2(0.61787623, 0.14959599), metal::float2(-0.7554044, 0.12462897), metal::float2(0.7554044, 0.12462897), metal::float2(-0.8656312, 0.09515851), metal::float2(0.8656312, 0.09515851), metal::float2(-0.944575, 0.062253524), metal::float2(0.944575, 0.062253524), metal::float2(-0.9894009, 0.02715246), metal::float2(0.9894009, 0.02715246)}};
-    return rule_4.inner[metal::min(unsigned(i_31), 15u)];
+    airlight_type_22 rule_6 = airlight_type_22 {{metal::float2(-0.09501251, 0.1894506), metal::float2(0.09501251, 0.1894506), metal::float2(-0.28160354, 0.18260342), metal::float2(0.28160354, 0.18260342), metal::float2(-0.45801678, 0.16915652), metal::float2(0.45801678, 0.16915652), metal::float2(-0.61787623, 0.14959599), metal::float2(0.61787623, 0.14959599), metal::float2(-0.7554044, 0.12462897), metal::float2(0.7554044, 0.12462897), metal::float2(-0.8656312, 0.09515851), metal::float2(0.8656312, 0.09515851), metal::float2(-0.944575, 0.062253524), metal::float2(0.944575, 0.062253524), metal::float2(-0.9894009, 0.02715246), metal::float2(0.9894009, 0.02715246)}};
+    return rule_6.inner[metal::min(unsigned(i_31), 15u)];
 }
 
 metal::float4 airlight_edge_at(
@@ -7496,17 +7506,17 @@ metal::float2 airlight_outline_chord(
     metal::float2 chord_1 = metal::float2(0.0, 340282350000000000000000000000000000000.0);
     if (o_4.radius > 0.0) {
         metal::float2 qc_1 = q_7 - o_4.corners.inner[0];
-        float a_48 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
-        float b_23 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
+        float a_47 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
+        float b_22 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
         float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
         float k_13 = (dq_1 - o_4.radius) * (dq_1 + o_4.radius);
-        float disc_3 = (b_23 * b_23) - (a_48 * k_13);
+        float disc_3 = (b_22 * b_22) - (a_47 * k_13);
         if (!((disc_3 > 0.0))) {
             return metal::float2(0.0);
         }
         float root_3 = metal::sqrt(disc_3);
-        float t_12 = -(b_23) - (((as_type<uint>(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3);
-        float r1_2 = t_12 / a_48;
+        float t_12 = -(b_22) - (((as_type<uint>(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3);
+        float r1_2 = t_12 / a_47;
         float r2_4 = k_13 / t_12;
         float hi_8 = metal::max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
@@ -7682,9 +7692,9 @@ AirlightEdgeRule airlight_edge_rule(
 
 metal::float4 airlight_edge_node(
     AirlightEdgeRule rule_2,
-    uint j_6
+    uint j_7
 ) {
-    metal::float2 _e2 = airlight_triangle_rule(j_6);
+    metal::float2 _e2 = airlight_triangle_rule(j_7);
     float hw_4 = 0.5 * (rule_2.last - rule_2.first);
     metal::float4 _e16 = airlight_edge_at(rule_2, (0.5 * (rule_2.first + rule_2.last)) + (hw_4 * _e2.x));
     return metal::float4(_e16.xyz, (_e2.y * hw_4) * _e16.w);
@@ -7693,9 +7703,9 @@ metal::float4 airlight_edge_node(
 metal::float4 airlight_sort4_(
     metal::float4 x_25
 ) {
-    metal::float4 a_49 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
-    metal::float4 b_24 = metal::float4(metal::min(a_49.x, a_49.z), metal::min(a_49.y, a_49.w), metal::max(a_49.x, a_49.z), metal::max(a_49.y, a_49.w));
-    return metal::float4(b_24.x, metal::min(b_24.y, b_24.z), metal::max(b_24.y, b_24.z), b_24.w);
+    metal::float4 a_48 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
+    metal::float4 b_23 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
+    return metal::float4(b_23.x, metal::min(b_23.y, b_23.z), metal::max(b_23.y, b_23.z), b_23.w);
 }
 
 AirlightChordEdges airlight_chord_edges(
@@ -7725,9 +7735,9 @@ AirlightChordEdges airlight_chord_edges(
         }
         {
             uint _e18 = i_32;
-            metal::float2 a_50 = y_6.inner[metal::min(unsigned(_e18), 3u)];
+            metal::float2 a_49 = y_6.inner[metal::min(unsigned(_e18), 3u)];
             uint _e20 = i_32;
-            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_50;
+            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_49;
             float den_1 = (e_8.x * d_5.y) - (e_8.y * d_5.x);
             if (den_1 == 0.0) {
                 continue;
@@ -7747,9 +7757,9 @@ AirlightChordEdges airlight_chord_edges(
             }
             bool _e65 = local_186;
             if (_e65) {
-                metal::float2 n_7 = metal::float2(d_5.y, -(d_5.x)) / metal::float2(metal::sqrt(metal::dot(d_5, d_5)));
-                float h_10 = metal::dot(n_7, a_50);
-                metal::float2 outward = (h_10 < 0.0) ? -(n_7) : n_7;
+                metal::float2 n_8 = metal::float2(d_5.y, -(d_5.x)) / metal::float2(metal::sqrt(metal::dot(d_5, d_5)));
+                float h_10 = metal::dot(n_8, a_49);
+                metal::float2 outward = (h_10 < 0.0) ? -(n_8) : n_8;
                 float _e79 = nearest_2;
                 if (r_15 < _e79) {
                     nearest_2 = r_15;
@@ -7768,6 +7778,15 @@ AirlightChordEdges airlight_chord_edges(
     return _e90;
 }
 
+float airlight_line_beta(
+    AirlightEdgeRule rule_3,
+    metal::float2 cs_2
+) {
+    metal::float2 m_14 = metal::float2(rule_3.t.y, -(rule_3.t.x));
+    float _e17 = airlight_atan2_(metal::dot(cs_2, rule_3.t) * rule_3.h, metal::max(metal::dot(cs_2, m_14), 0.0) * rule_3.reach);
+    return _e17;
+}
+
 float airlight_mercator_cut(
     uint k_8
 ) {
@@ -7777,24 +7796,102 @@ float airlight_mercator_cut(
 
 float airlight_mercator(
     metal::float2 n_3,
-    metal::float2 cs_2
+    metal::float2 cs_3
 ) {
     float _e3 = airlight_mercator_cut(7u);
-    float tangent = ((cs_2.y * n_3.x) - (cs_2.x * n_3.y)) / metal::max((cs_2.x * n_3.x) + (cs_2.y * n_3.y), 0.000000000000000000000000000001);
+    float tangent = ((cs_3.y * n_3.x) - (cs_3.x * n_3.y)) / metal::max((cs_3.x * n_3.x) + (cs_3.y * n_3.y), 0.000000000000000000000000000001);
     float _e21 = airlight_asinh(tangent);
     return metal::clamp(_e21, -(_e3), _e3);
 }
 
-float airlight_flat_about_lobe(
+float airlight_mercator_wedge(
     AirlightScene s_41,
     float z_14,
     AirlightOutline o_6,
-    AirlightFlatLobe lobe_3
+    AirlightFlatLobe lobe_3,
+    metal::float3 u_6,
+    metal::float3 v_8,
+    metal::float2 n_4,
+    metal::float2 first_1,
+    metal::float2 last
 ) {
     float sum_9 = 0.0;
+    uint k_9 = 0u;
+    uint j_8 = {};
+    metal::float2 t_14 = metal::float2(-(n_4.y), n_4.x);
+    float _e13 = airlight_mercator(n_4, first_1);
+    float _e14 = airlight_mercator(n_4, last);
+    uint2 loop_bound_38 = uint2(4294967295u);
+    bool loop_init_37 = true;
+    while(true) {
+        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_37) {
+            uint _e80 = k_9;
+            k_9 = _e80 + 1u;
+        }
+        loop_init_37 = false;
+        uint _e19 = k_9;
+        if (_e19 < 7u) {
+        } else {
+            break;
+        }
+        {
+            uint _e22 = k_9;
+            float _e23 = airlight_mercator_cut(_e22);
+            float lo_8 = metal::max(_e13, _e23);
+            uint _e25 = k_9;
+            float _e28 = airlight_mercator_cut(_e25 + 1u);
+            float hi_9 = metal::min(_e14, _e28);
+            if (!((lo_8 < hi_9))) {
+                continue;
+            }
+            float c_22 = (lo_8 + hi_9) * 0.5;
+            float hw_5 = (hi_9 - lo_8) * 0.5;
+            j_8 = 0u;
+            uint2 loop_bound_39 = uint2(4294967295u);
+            bool loop_init_38 = true;
+            while(true) {
+                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (!loop_init_38) {
+                    uint _e77 = j_8;
+                    j_8 = _e77 + 1u;
+                }
+                loop_init_38 = false;
+                uint _e40 = j_8;
+                if (_e40 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e43 = j_8;
+                    metal::float2 _e44 = airlight_triangle_rule(_e43);
+                    float x_38 = c_22 + (hw_5 * _e44.x);
+                    float e_18 = metal::exp(-(metal::abs(x_38)));
+                    float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
+                    float th = (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18));
+                    float _e66 = sum_9;
+                    float _e73 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, (n_4 * sech) + (t_14 * th));
+                    sum_9 = _e66 + (((_e44.y * hw_5) * sech) * _e73);
+                }
+            }
+        }
+    }
+    float _e82 = sum_9;
+    return _e82;
+}
+
+float airlight_flat_about_lobe(
+    AirlightScene s_42,
+    float z_15,
+    AirlightOutline o_7,
+    AirlightFlatLobe lobe_4
+) {
+    float sum_10 = 0.0;
     metal::float2 m_4 = metal::float2(1.0, 0.0);
     metal::float2 t_4 = {};
-    uint j_7 = 0u;
+    uint j_9 = 0u;
     uint i_33 = 0u;
     uint i_34 = 0u;
     metal::float4 area = metal::float4(0.0);
@@ -7802,40 +7899,37 @@ float airlight_flat_about_lobe(
     uint i_36 = 0u;
     metal::float2 ya = {};
     metal::float2 yb = {};
-    uint j_8 = {};
-    uint i_37 = 0u;
-    uint j_9 = {};
-    float merc_first = {};
-    float merc_last = {};
-    bool local_187 = {};
-    float a_25 = {};
-    float b_15 = {};
     uint j_10 = {};
-    uint k_9 = {};
+    uint i_37 = 0u;
     uint j_11 = {};
-    metal::float3 _e5 = airlight_basis_e1_(lobe_3.p);
-    metal::float3 v_9 = metal::cross(lobe_3.p, _e5);
-    metal::float2 q_14 = lobe_3.q;
-    if (o_6.radius > 0.0) {
-        if (lobe_3.on_emitter) {
-            metal::float2 dq_2 = q_14 - o_6.corners.inner[0];
+    metal::float2 merc_first = {};
+    metal::float2 merc_last = {};
+    bool local_187 = {};
+    AirlightEdgeRule rule_4 = {};
+    uint j_12 = {};
+    metal::float3 _e5 = airlight_basis_e1_(lobe_4.p);
+    metal::float3 v_10 = metal::cross(lobe_4.p, _e5);
+    metal::float2 q_14 = lobe_4.q;
+    if (o_7.radius > 0.0) {
+        if (lobe_4.on_emitter) {
+            metal::float2 dq_2 = q_14 - o_7.corners.inner[0];
             float d_6 = metal::sqrt(metal::dot(dq_2, dq_2));
             if (d_6 > 0.0) {
                 m_4 = dq_2 / metal::float2(d_6);
             }
             metal::float2 _e31 = m_4;
-            metal::float2 rim_e = (o_6.corners.inner[0] + (o_6.radius * _e31)) - q_14;
-            metal::float2 rim = metal::float2(metal::dot(rim_e, _e5.xy), metal::dot(rim_e, v_9.xy));
+            metal::float2 rim_e = (o_7.corners.inner[0] + (o_7.radius * _e31)) - q_14;
+            metal::float2 rim = metal::float2(metal::dot(rim_e, _e5.xy), metal::dot(rim_e, v_10.xy));
             float _e41 = m_4.y;
             float _e46 = m_4.x;
             float _e51 = m_4.y;
             float _e56 = m_4.x;
-            metal::float2 along_rim = metal::float2((-(_e41) * _e5.x) + (_e46 * _e5.y), (-(_e51) * v_9.x) + (_e56 * v_9.y));
+            metal::float2 along_rim = metal::float2((-(_e41) * _e5.x) + (_e46 * _e5.y), (-(_e51) * v_10.x) + (_e56 * v_10.y));
             float tl = metal::sqrt(metal::dot(along_rim, along_rim));
             t_4 = along_rim / metal::float2(tl);
             metal::float2 _e66 = m_4;
             metal::float2 _e69 = m_4;
-            metal::float2 outward_1 = metal::float2(metal::dot(_e66, _e5.xy), metal::dot(_e69, v_9.xy));
+            metal::float2 outward_1 = metal::float2(metal::dot(_e66, _e5.xy), metal::dot(_e69, v_10.xy));
             float _e74 = t_4.y;
             float _e78 = t_4.x;
             if (((_e74 * outward_1.x) - (_e78 * outward_1.y)) < 0.0) {
@@ -7845,21 +7939,21 @@ float airlight_flat_about_lobe(
             float _e87 = t_4.y;
             float _e91 = t_4.x;
             float h_11 = (_e87 * rim.x) - (_e91 * rim.y);
-            float half_chord = tl * metal::sqrt(metal::max((o_6.radius - d_6) * (o_6.radius + d_6), 0.0));
-            float width_5 = metal::min(lobe_3.l * lobe_3.scale, half_chord);
+            float half_chord = tl * metal::sqrt(metal::max((o_7.radius - d_6) * (o_7.radius + d_6), 0.0));
+            float width_5 = metal::min(lobe_4.l * lobe_4.scale, half_chord);
             metal::float2 _e108 = t_4;
-            AirlightEdgeRule rule_5 = AirlightEdgeRule {h_11, {}, _e108, metal::sqrt((h_11 * h_11) + (width_5 * width_5)), -1.5707964, 1.5707964};
-            uint2 loop_bound_38 = uint2(4294967295u);
-            bool loop_init_37 = true;
+            AirlightEdgeRule rule_7 = AirlightEdgeRule {h_11, {}, _e108, metal::sqrt((h_11 * h_11) + (width_5 * width_5)), -1.5707964, 1.5707964};
+            uint2 loop_bound_40 = uint2(4294967295u);
+            bool loop_init_39 = true;
             while(true) {
-                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                if (!loop_init_37) {
-                    uint _e143 = j_7;
-                    j_7 = _e143 + 1u;
+                if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (!loop_init_39) {
+                    uint _e143 = j_9;
+                    j_9 = _e143 + 1u;
                 }
-                loop_init_37 = false;
-                uint _e118 = j_7;
+                loop_init_39 = false;
+                uint _e118 = j_9;
                 if (_e118 < 16u) {
                 } else {
                     break;
@@ -7868,27 +7962,27 @@ float airlight_flat_about_lobe(
                     if (!((h_11 > 0.0))) {
                         break;
                     }
-                    uint _e124 = j_7;
+                    uint _e124 = j_9;
                     metal::float2 _e125 = airlight_radial_rule(_e124);
-                    metal::float4 _e129 = airlight_edge_at(rule_5, 1.5707964 * _e125.x);
-                    float _e130 = sum_9;
-                    float _e139 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e129.xy);
-                    sum_9 = _e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139);
+                    metal::float4 _e129 = airlight_edge_at(rule_7, 1.5707964 * _e125.x);
+                    float _e130 = sum_10;
+                    float _e139 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    sum_10 = _e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139);
                 }
             }
             float _e146 = t_4.y;
             float _e148 = t_4.x;
-            metal::float2 n_8 = metal::float2(_e146, -(_e148));
-            uint2 loop_bound_39 = uint2(4294967295u);
-            bool loop_init_38 = true;
+            metal::float2 n_9 = metal::float2(_e146, -(_e148));
+            uint2 loop_bound_41 = uint2(4294967295u);
+            bool loop_init_40 = true;
             while(true) {
-                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-                if (!loop_init_38) {
+                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                if (!loop_init_40) {
                     uint _e172 = i_33;
                     i_33 = _e172 + 1u;
                 }
-                loop_init_38 = false;
+                loop_init_40 = false;
                 uint _e153 = i_33;
                 if (_e153 < 32u) {
                 } else {
@@ -7897,36 +7991,36 @@ float airlight_flat_about_lobe(
                 {
                     uint _e157 = i_33;
                     metal::float3 _e158 = airlight_azimuths(false, _e157);
-                    float _e159 = sum_9;
+                    float _e159 = sum_10;
                     metal::float2 _e163 = t_4;
-                    float _e168 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
-                    sum_9 = _e159 + (_e158.z * _e168);
+                    float _e168 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    sum_10 = _e159 + (_e158.z * _e168);
                 }
             }
-            float _e174 = sum_9;
+            float _e174 = sum_10;
             return _e174;
         }
-        metal::float2 d_7 = o_6.corners.inner[0] - q_14;
+        metal::float2 d_7 = o_7.corners.inner[0] - q_14;
         float dq_3 = metal::sqrt((d_7.x * d_7.x) + (d_7.y * d_7.y));
-        float sb_1 = o_6.radius / dq_3;
-        float cb = metal::sqrt((dq_3 - o_6.radius) * (dq_3 + o_6.radius)) / dq_3;
-        float _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
-        float _e207 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_7.x * cb) - (d_7.y * sb_1), (d_7.y * cb) + (d_7.x * sb_1)));
+        float sb_1 = o_7.radius / dq_3;
+        float cb = metal::sqrt((dq_3 - o_7.radius) * (dq_3 + o_7.radius)) / dq_3;
+        float _e195 = airlight_lobe_azimuth(_e5, v_10, d_7);
+        float _e207 = airlight_lobe_azimuth(_e5, v_10, metal::float2((d_7.x * cb) - (d_7.y * sb_1), (d_7.y * cb) + (d_7.x * sb_1)));
         float _e209 = airlight_wrap_turn(_e207 - _e195);
-        float _e221 = airlight_lobe_azimuth(_e5, v_9, metal::float2((d_7.x * cb) + (d_7.y * sb_1), (d_7.y * cb) - (d_7.x * sb_1)));
+        float _e221 = airlight_lobe_azimuth(_e5, v_10, metal::float2((d_7.x * cb) + (d_7.y * sb_1), (d_7.y * cb) - (d_7.x * sb_1)));
         float _e223 = airlight_wrap_turn(_e221 - _e195);
         float centre_2 = _e195 + ((_e209 + _e223) * 0.5);
         float half_19 = metal::abs(_e209 - _e223) * 0.5;
-        uint2 loop_bound_40 = uint2(4294967295u);
-        bool loop_init_39 = true;
+        uint2 loop_bound_42 = uint2(4294967295u);
+        bool loop_init_41 = true;
         while(true) {
-            if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-            loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-            if (!loop_init_39) {
+            if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+            loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+            if (!loop_init_41) {
                 uint _e253 = i_34;
                 i_34 = _e253 + 1u;
             }
-            loop_init_39 = false;
+            loop_init_41 = false;
             uint _e234 = i_34;
             if (_e234 < 32u) {
             } else {
@@ -7935,27 +8029,27 @@ float airlight_flat_about_lobe(
             {
                 uint _e238 = i_34;
                 metal::float3 _e239 = airlight_azimuths(false, _e238);
-                float _e240 = sum_9;
+                float _e240 = sum_10;
                 metal::float2 _e248 = airlight_cos_sin_turns(centre_2 + (half_19 * _e239.y));
-                float _e249 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e248);
-                sum_9 = _e240 + (((_e239.z * half_19) * _e239.x) * _e249);
+                float _e249 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                sum_10 = _e240 + (((_e239.z * half_19) * _e239.x) * _e249);
             }
         }
-        float _e255 = sum_9;
+        float _e255 = sum_10;
         return _e255;
     }
-    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_6.corners.inner[0] - q_14, _e5.xy), metal::dot(o_6.corners.inner[0] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[1] - q_14, _e5.xy), metal::dot(o_6.corners.inner[1] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[2] - q_14, _e5.xy), metal::dot(o_6.corners.inner[2] - q_14, v_9.xy)), metal::float2(metal::dot(o_6.corners.inner[3] - q_14, _e5.xy), metal::dot(o_6.corners.inner[3] - q_14, v_9.xy))}};
-    if (lobe_3.on_emitter) {
-        uint2 loop_bound_41 = uint2(4294967295u);
-        bool loop_init_40 = true;
+    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_7.corners.inner[0] - q_14, _e5.xy), metal::dot(o_7.corners.inner[0] - q_14, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[1] - q_14, _e5.xy), metal::dot(o_7.corners.inner[1] - q_14, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[2] - q_14, _e5.xy), metal::dot(o_7.corners.inner[2] - q_14, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[3] - q_14, _e5.xy), metal::dot(o_7.corners.inner[3] - q_14, v_10.xy))}};
+    if (lobe_4.on_emitter) {
+        uint2 loop_bound_43 = uint2(4294967295u);
+        bool loop_init_42 = true;
         while(true) {
-            if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-            loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-            if (!loop_init_40) {
+            if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+            loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+            if (!loop_init_42) {
                 uint _e330 = i_35;
                 i_35 = _e330 + 1u;
             }
-            loop_init_40 = false;
+            loop_init_42 = false;
             uint _e307 = i_35;
             if (_e307 < 4u) {
             } else {
@@ -7963,7 +8057,7 @@ float airlight_flat_about_lobe(
             }
             {
                 uint _e310 = i_35;
-                metal::float2 b_25 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
+                metal::float2 b_24 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
                 uint _e316 = i_35;
                 uint _e318 = i_35;
                 uint _e323 = i_35;
@@ -7975,16 +8069,16 @@ float airlight_flat_about_lobe(
         float _e338 = area.z;
         float _e341 = area.w;
         float turn = ((_e333 + _e335) + _e338) + _e341;
-        uint2 loop_bound_42 = uint2(4294967295u);
-        bool loop_init_41 = true;
+        uint2 loop_bound_44 = uint2(4294967295u);
+        bool loop_init_43 = true;
         while(true) {
-            if (metal::all(loop_bound_42 == uint2(0u))) { break; }
-            loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-            if (!loop_init_41) {
+            if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+            loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+            if (!loop_init_43) {
                 uint _e398 = i_36;
                 i_36 = _e398 + 1u;
             }
-            loop_init_41 = false;
+            loop_init_43 = false;
             uint _e345 = i_36;
             if (_e345 < 4u) {
             } else {
@@ -8008,56 +8102,56 @@ float airlight_flat_about_lobe(
                 }
                 metal::float2 _e375 = ya;
                 metal::float2 _e376 = yb;
-                AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, lobe_3.l * lobe_3.scale);
-                j_8 = 0u;
-                uint2 loop_bound_43 = uint2(4294967295u);
-                bool loop_init_42 = true;
+                AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, lobe_4.l * lobe_4.scale);
+                j_10 = 0u;
+                uint2 loop_bound_45 = uint2(4294967295u);
+                bool loop_init_44 = true;
                 while(true) {
-                    if (metal::all(loop_bound_43 == uint2(0u))) { break; }
-                    loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                    if (!loop_init_42) {
-                        uint _e395 = j_8;
-                        j_8 = _e395 + 1u;
+                    if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+                    loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                    if (!loop_init_44) {
+                        uint _e395 = j_10;
+                        j_10 = _e395 + 1u;
                     }
-                    loop_init_42 = false;
-                    uint _e383 = j_8;
+                    loop_init_44 = false;
+                    uint _e383 = j_10;
                     if (_e383 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        uint _e386 = j_8;
+                        uint _e386 = j_10;
                         metal::float4 _e387 = airlight_edge_node(_e380, _e386);
-                        float _e388 = sum_9;
-                        float _e391 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e387.xy);
-                        sum_9 = _e388 + (_e387.w * _e391);
+                        float _e388 = sum_10;
+                        float _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        sum_10 = _e388 + (_e387.w * _e391);
                     }
                 }
             }
         }
-        float _e400 = sum_9;
+        float _e400 = sum_10;
         return _e400;
     }
-    float _e409 = airlight_lobe_azimuth(_e5, v_9, (0.5 * (o_6.corners.inner[0] + o_6.corners.inner[2])) - q_14);
-    float _e413 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[0] - q_14);
+    float _e409 = airlight_lobe_azimuth(_e5, v_10, (0.5 * (o_7.corners.inner[0] + o_7.corners.inner[2])) - q_14);
+    float _e413 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[0] - q_14);
     float _e415 = airlight_wrap_turn(_e413 - _e409);
-    float _e419 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[1] - q_14);
+    float _e419 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[1] - q_14);
     float _e421 = airlight_wrap_turn(_e419 - _e409);
-    float _e425 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[2] - q_14);
+    float _e425 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[2] - q_14);
     float _e427 = airlight_wrap_turn(_e425 - _e409);
-    float _e431 = airlight_lobe_azimuth(_e5, v_9, o_6.corners.inner[3] - q_14);
+    float _e431 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[3] - q_14);
     float _e433 = airlight_wrap_turn(_e431 - _e409);
     metal::float4 _e435 = airlight_sort4_(metal::float4(_e415, _e421, _e427, _e433));
-    uint2 loop_bound_44 = uint2(4294967295u);
-    bool loop_init_43 = true;
+    uint2 loop_bound_46 = uint2(4294967295u);
+    bool loop_init_45 = true;
     while(true) {
-        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
-        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_43) {
-            uint _e639 = i_37;
-            i_37 = _e639 + 1u;
+        if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+        if (!loop_init_45) {
+            uint _e558 = i_37;
+            i_37 = _e558 + 1u;
         }
-        loop_init_43 = false;
+        loop_init_45 = false;
         uint _e438 = i_37;
         if (_e438 < 3u) {
         } else {
@@ -8065,201 +8159,146 @@ float airlight_flat_about_lobe(
         }
         {
             uint _e441 = i_37;
-            float first_2 = _e409 + _e435[metal::min(unsigned(_e441), 3u)];
+            float first_3 = _e409 + _e435[metal::min(unsigned(_e441), 3u)];
             uint _e444 = i_37;
-            float last_1 = _e409 + _e435[metal::min(unsigned(_e444 + 1u), 3u)];
-            metal::float2 _e452 = airlight_cos_sin_turns(0.5 * (first_2 + last_1));
+            float last_2 = _e409 + _e435[metal::min(unsigned(_e444 + 1u), 3u)];
+            metal::float2 _e452 = airlight_cos_sin_turns(0.5 * (first_3 + last_2));
             AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
-            metal::float2 n_9 = _e453.entry;
-            if (metal::all(n_9 == metal::float2(0.0))) {
-                float c_22 = (first_2 + last_1) * 0.5;
-                float hw_5 = (last_1 - first_2) * 0.5;
-                j_9 = 0u;
-                uint2 loop_bound_45 = uint2(4294967295u);
-                bool loop_init_44 = true;
+            metal::float2 n_10 = _e453.entry;
+            if (metal::all(n_10 == metal::float2(0.0))) {
+                float c_23 = (first_3 + last_2) * 0.5;
+                float hw_6 = (last_2 - first_3) * 0.5;
+                j_11 = 0u;
+                uint2 loop_bound_47 = uint2(4294967295u);
+                bool loop_init_46 = true;
                 while(true) {
-                    if (metal::all(loop_bound_45 == uint2(0u))) { break; }
-                    loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                    if (!loop_init_44) {
-                        uint _e483 = j_9;
-                        j_9 = _e483 + 1u;
+                    if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+                    loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                    if (!loop_init_46) {
+                        uint _e483 = j_11;
+                        j_11 = _e483 + 1u;
                     }
-                    loop_init_44 = false;
-                    uint _e467 = j_9;
+                    loop_init_46 = false;
+                    uint _e467 = j_11;
                     if (_e467 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        uint _e470 = j_9;
+                        uint _e470 = j_11;
                         metal::float2 _e471 = airlight_triangle_rule(_e470);
-                        float _e472 = sum_9;
-                        metal::float2 _e478 = airlight_cos_sin_turns(c_22 + (hw_5 * _e471.x));
-                        float _e479 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e478);
-                        sum_9 = _e472 + ((_e471.y * hw_5) * _e479);
+                        float _e472 = sum_10;
+                        metal::float2 _e478 = airlight_cos_sin_turns(c_23 + (hw_6 * _e471.x));
+                        float _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        sum_10 = _e472 + ((_e471.y * hw_6) * _e479);
                     }
                 }
                 continue;
             }
-            merc_first = first_2;
-            merc_last = last_1;
+            metal::float2 _e485 = airlight_cos_sin_turns(first_3);
+            merc_first = _e485;
+            metal::float2 _e487 = airlight_cos_sin_turns(last_2);
+            merc_last = _e487;
             float exit_h = _e453.exit_h;
+            float width_6 = lobe_4.l * lobe_4.scale;
             if (exit_h > 0.0) {
-                local_187 = exit_h < (lobe_3.l * lobe_3.scale);
+                local_187 = exit_h < width_6;
             } else {
                 local_187 = false;
             }
-            bool _e497 = local_187;
-            if (_e497) {
-                float half_20 = 0.5 * (first_2 + last_1);
-                a_25 = first_2;
-                b_15 = half_20;
-                metal::float2 _e503 = airlight_cos_sin_turns(first_2);
-                metal::float2 _e506 = airlight_cos_sin_turns(last_1);
-                if (metal::dot(_e503, _e453.exit) < metal::dot(_e506, _e453.exit)) {
-                    merc_first = half_20;
+            bool _e499 = local_187;
+            if (_e499) {
+                rule_4 = AirlightEdgeRule {exit_h, {}, metal::float2(-(_e453.exit.y), _e453.exit.x), metal::sqrt((exit_h * exit_h) + (width_6 * width_6)), 0.0, 0.0};
+                metal::float2 _e514 = merc_first;
+                metal::float2 _e517 = merc_last;
+                if (metal::dot(_e514, _e453.exit) < metal::dot(_e517, _e453.exit)) {
+                    AirlightEdgeRule _e522 = rule_4;
+                    metal::float2 _e523 = merc_first;
+                    float _e524 = airlight_line_beta(_e522, _e523);
+                    rule_4.first = _e524;
+                    AirlightEdgeRule _e526 = rule_4;
+                    float _e527 = airlight_line_beta(_e526, _e452);
+                    rule_4.last = _e527;
+                    merc_first = _e452;
                 } else {
-                    a_25 = half_20;
-                    b_15 = last_1;
-                    merc_last = half_20;
+                    AirlightEdgeRule _e529 = rule_4;
+                    float _e530 = airlight_line_beta(_e529, _e452);
+                    rule_4.first = _e530;
+                    AirlightEdgeRule _e532 = rule_4;
+                    metal::float2 _e533 = merc_last;
+                    float _e534 = airlight_line_beta(_e532, _e533);
+                    rule_4.last = _e534;
+                    merc_last = _e452;
                 }
-                metal::float2 t2_ = metal::float2(-(_e453.exit.y), _e453.exit.x);
-                float reach_4 = metal::sqrt((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale));
-                float _e526 = a_25;
-                metal::float2 _e527 = airlight_cos_sin_turns(_e526);
-                float _e528 = b_15;
-                metal::float2 _e529 = airlight_cos_sin_turns(_e528);
-                float _e537 = airlight_atan2_(metal::dot(_e527, t2_) * exit_h, metal::max(metal::dot(_e527, _e453.exit), 0.0) * reach_4);
-                float _e545 = airlight_atan2_(metal::dot(_e529, t2_) * exit_h, metal::max(metal::dot(_e529, _e453.exit), 0.0) * reach_4);
-                AirlightEdgeRule rule_6 = AirlightEdgeRule {exit_h, {}, t2_, reach_4, _e537, _e545};
-                j_10 = 0u;
-                uint2 loop_bound_46 = uint2(4294967295u);
-                bool loop_init_45 = true;
+                j_12 = 0u;
+                uint2 loop_bound_48 = uint2(4294967295u);
+                bool loop_init_47 = true;
                 while(true) {
-                    if (metal::all(loop_bound_46 == uint2(0u))) { break; }
-                    loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                    if (!loop_init_45) {
-                        uint _e561 = j_10;
-                        j_10 = _e561 + 1u;
+                    if (metal::all(loop_bound_48 == uint2(0u))) { break; }
+                    loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                    if (!loop_init_47) {
+                        uint _e550 = j_12;
+                        j_12 = _e550 + 1u;
                     }
-                    loop_init_45 = false;
-                    uint _e549 = j_10;
-                    if (_e549 < 12u) {
+                    loop_init_47 = false;
+                    uint _e537 = j_12;
+                    if (_e537 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        uint _e552 = j_10;
-                        metal::float4 _e553 = airlight_edge_node(rule_6, _e552);
-                        float _e554 = sum_9;
-                        float _e557 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e553.xy);
-                        sum_9 = _e554 + (_e553.w * _e557);
+                        AirlightEdgeRule _e540 = rule_4;
+                        uint _e541 = j_12;
+                        metal::float4 _e542 = airlight_edge_node(_e540, _e541);
+                        float _e543 = sum_10;
+                        float _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        sum_10 = _e543 + (_e542.w * _e546);
                     }
                 }
             }
-            metal::float2 t_14 = metal::float2(-(_e453.entry.y), _e453.entry.x);
-            float _e567 = merc_first;
-            metal::float2 _e568 = airlight_cos_sin_turns(_e567);
-            float _e569 = airlight_mercator(n_9, _e568);
-            float _e570 = merc_last;
-            metal::float2 _e571 = airlight_cos_sin_turns(_e570);
-            float _e572 = airlight_mercator(n_9, _e571);
-            k_9 = 0u;
-            uint2 loop_bound_47 = uint2(4294967295u);
-            bool loop_init_46 = true;
-            while(true) {
-                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
-                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_46) {
-                    uint _e636 = k_9;
-                    k_9 = _e636 + 1u;
-                }
-                loop_init_46 = false;
-                uint _e575 = k_9;
-                if (_e575 < 7u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e578 = k_9;
-                    float _e579 = airlight_mercator_cut(_e578);
-                    float lo_8 = metal::max(_e569, _e579);
-                    uint _e581 = k_9;
-                    float _e584 = airlight_mercator_cut(_e581 + 1u);
-                    float hi_9 = metal::min(_e572, _e584);
-                    if (!((lo_8 < hi_9))) {
-                        continue;
-                    }
-                    float c_23 = (lo_8 + hi_9) * 0.5;
-                    float hw_6 = (hi_9 - lo_8) * 0.5;
-                    j_11 = 0u;
-                    uint2 loop_bound_48 = uint2(4294967295u);
-                    bool loop_init_47 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_48 == uint2(0u))) { break; }
-                        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                        if (!loop_init_47) {
-                            uint _e633 = j_11;
-                            j_11 = _e633 + 1u;
-                        }
-                        loop_init_47 = false;
-                        uint _e596 = j_11;
-                        if (_e596 < 12u) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e599 = j_11;
-                            metal::float2 _e600 = airlight_triangle_rule(_e599);
-                            float x_38 = c_23 + (hw_6 * _e600.x);
-                            float e_18 = metal::exp(-(metal::abs(x_38)));
-                            float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
-                            float th = (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18));
-                            float _e622 = sum_9;
-                            float _e629 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, (n_9 * sech) + (t_14 * th));
-                            sum_9 = _e622 + (((_e600.y * hw_6) * sech) * _e629);
-                        }
-                    }
-                }
-            }
+            float _e552 = sum_10;
+            metal::float2 _e553 = merc_first;
+            metal::float2 _e554 = merc_last;
+            float _e555 = airlight_mercator_wedge(s_42, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            sum_10 = _e552 + _e555;
         }
     }
-    float _e641 = sum_9;
-    return _e641;
+    float _e560 = sum_10;
+    return _e560;
 }
 
 float airlight_disc(
-    AirlightScene s_42,
-    AirlightArea a_26,
+    AirlightScene s_43,
+    AirlightArea a_25,
     metal::float3 x_26
 ) {
     bool local_188 = {};
     bool local_189 = {};
-    metal::float2 u_6 = metal::float2(0.0);
+    metal::float2 u_7 = metal::float2(0.0);
     AirlightAbove above_3 = {};
-    float sum_10 = 0.0;
+    float sum_11 = 0.0;
     uint i_38 = 0u;
     metal::float2 e_9 = {};
     float r_max_1 = {};
-    metal::float3 rel_1 = x_26 - a_26.c;
-    float z_20 = metal::dot(rel_1, a_26.n);
-    if (!((z_20 > 0.0))) {
+    metal::float3 rel_1 = x_26 - a_25.c;
+    float z_21 = metal::dot(rel_1, a_25.n);
+    if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    float fx = metal::dot(rel_1, a_26.a1_);
-    float fy_1 = metal::dot(rel_1, a_26.a2_);
+    float fx = metal::dot(rel_1, a_25.a1_);
+    float fy_1 = metal::dot(rel_1, a_25.a2_);
     float rf = metal::sqrt((fx * fx) + (fy_1 * fy_1));
-    float radius_2 = a_26.radius;
+    float radius_2 = a_25.radius;
     metal::float2 zero_2 = metal::float2(0.0);
     AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2}}, radius_2};
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_25, z_21, outline, metal::float2(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0.0) {
-        float _e34 = airlight_flat_about_lobe(s_42, z_20, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_42, radius_2 - rf, z_20);
+            bool _e44 = airlight_far_from_edge(s_43, radius_2 - rf, z_21);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -8270,12 +8309,12 @@ float airlight_disc(
         local_188 = false;
     }
     bool inside_2 = local_188;
-    AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
+    AirlightAbove _e54 = airlight_above(z_21, metal::float2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
-        u_6 = metal::float2(-(fx) / rf, -(fy_1) / rf);
-        metal::float2 _e63 = u_6;
-        AirlightAbove _e65 = airlight_above(z_20, (rf - radius_2) * _e63);
+        u_7 = metal::float2(-(fx) / rf, -(fy_1) / rf);
+        metal::float2 _e63 = u_7;
+        AirlightAbove _e65 = airlight_above(z_21, (rf - radius_2) * _e63);
         above_3 = _e65;
     }
     float k_15 = (rf - radius_2) * (rf + radius_2);
@@ -8297,61 +8336,61 @@ float airlight_disc(
         {
             uint _e76 = i_38;
             metal::float3 _e77 = airlight_azimuths(inside_2, _e76);
-            float _e80 = u_6.x;
-            float _e84 = u_6.y;
-            float _e89 = u_6.y;
-            float _e93 = u_6.x;
+            float _e80 = u_7.x;
+            float _e84 = u_7.y;
+            float _e89 = u_7.y;
+            float _e93 = u_7.x;
             e_9 = metal::float2((_e77.x * _e80) - (_e77.y * _e84), (_e77.x * _e89) + (_e77.y * _e93));
             r_max_1 = (radius_2 + radius_2) * _e77.x;
             if (inside_2) {
                 e_9 = _e77.xy;
-                float b_26 = (fx * _e77.x) + (fy_1 * _e77.y);
-                float root_4 = metal::sqrt((b_26 * b_26) - k_15);
-                r_max_1 = (b_26 > 0.0) ? (-(k_15) / (b_26 + root_4)) : (root_4 - b_26);
+                float b_25 = (fx * _e77.x) + (fy_1 * _e77.y);
+                float root_4 = metal::sqrt((b_25 * b_25) - k_15);
+                r_max_1 = (b_25 > 0.0) ? (-(k_15) / (b_25 + root_4)) : (root_4 - b_25);
             }
-            float _e118 = sum_10;
+            float _e118 = sum_11;
             AirlightAbove _e120 = above_3;
             metal::float2 _e121 = e_9;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_42, a_26, _e120, _e121, _e122);
-            sum_10 = _e118 + (_e77.z * _e123);
+            float _e123 = airlight_flat_radial(s_43, a_25, _e120, _e121, _e122);
+            sum_11 = _e118 + (_e77.z * _e123);
         }
     }
-    float _e129 = sum_10;
+    float _e129 = sum_11;
     return _e129;
 }
 
 float airlight_parallelogram(
-    AirlightScene s_43,
-    AirlightArea a_27,
+    AirlightScene s_44,
+    AirlightArea a_26,
     metal::float3 x_27
 ) {
     metal::float2 q_8 = {};
     bool local_190 = {};
-    float sum_11 = 0.0;
+    float sum_12 = 0.0;
     uint i_39 = 0u;
-    uint j_12 = {};
-    metal::float3 rel_2 = x_27 - a_27.c;
-    float z_21 = metal::dot(rel_2, a_27.n);
-    if (!((z_21 > 0.0))) {
+    uint j_13 = {};
+    metal::float3 rel_2 = x_27 - a_26.c;
+    float z_22 = metal::dot(rel_2, a_26.n);
+    if (!((z_22 > 0.0))) {
         return 0.0;
     }
-    metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_27.a1_), metal::dot(rel_2, a_27.a2_));
-    metal::float2 u2_1 = metal::float2(metal::dot(a_27.eu, a_27.a1_), metal::dot(a_27.eu, a_27.a2_));
-    metal::float2 v2_1 = metal::float2(metal::dot(a_27.ev, a_27.a1_), metal::dot(a_27.ev, a_27.a2_));
+    metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_26.a1_), metal::dot(rel_2, a_26.a2_));
+    metal::float2 u2_1 = metal::float2(metal::dot(a_26.eu, a_26.a1_), metal::dot(a_26.eu, a_26.a2_));
+    metal::float2 v2_1 = metal::float2(metal::dot(a_26.ev, a_26.a1_), metal::dot(a_26.ev, a_26.a2_));
     airlight_type_17 corners = airlight_type_17 {{metal::float2(0.0), u2_1, u2_1 + v2_1, v2_1, metal::float2(0.0)}};
     float det = (u2_1.x * v2_1.y) - (u2_1.y * v2_1.x);
     AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot_1, corners.inner[1] - foot_1, corners.inner[2] - foot_1, corners.inner[3] - foot_1}}, 0.0};
     float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_1 + v2_1, u2_1 + v2_1)), metal::sqrt(metal::dot(u2_1 - v2_1, u2_1 - v2_1)));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_26, z_22, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
     if (_e69.scale > 0.0) {
-        float _e73 = airlight_flat_about_lobe(s_43, z_21, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
         return _e73;
     }
     metal::float3 _e76 = airlight_outline_boundary(about_foot, metal::float2(0.0));
     q_8 = _e76.xy + foot_1;
     if (_e76.z > 0.0) {
-        bool _e89 = airlight_far_from_edge(s_43, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
+        bool _e89 = airlight_far_from_edge(s_44, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_22);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -8361,9 +8400,9 @@ float airlight_parallelogram(
         q_8 = foot_1;
     }
     metal::float2 _e92 = q_8;
-    AirlightAbove _e94 = airlight_above(z_21, _e92 - foot_1);
+    AirlightAbove _e94 = airlight_above(z_22, _e92 - foot_1);
     float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
-    float _e99 = airlight_narrowed(s_43, _e94.rho0_);
+    float _e99 = airlight_narrowed(s_44, _e94.rho0_);
     uint2 loop_bound_50 = uint2(4294967295u);
     bool loop_init_49 = true;
     while(true) {
@@ -8390,38 +8429,38 @@ float airlight_parallelogram(
                 continue;
             }
             AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_12 = 0u;
+            j_13 = 0u;
             uint2 loop_bound_51 = uint2(4294967295u);
             bool loop_init_50 = true;
             while(true) {
                 if (metal::all(loop_bound_51 == uint2(0u))) { break; }
                 loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
                 if (!loop_init_50) {
-                    uint _e142 = j_12;
-                    j_12 = _e142 + 1u;
+                    uint _e142 = j_13;
+                    j_13 = _e142 + 1u;
                 }
                 loop_init_50 = false;
-                uint _e129 = j_12;
+                uint _e129 = j_13;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_12;
+                    uint _e132 = j_13;
                     metal::float4 _e133 = airlight_edge_node(_e126, _e132);
-                    float _e134 = sum_11;
-                    float _e138 = airlight_flat_radial(s_43, a_27, _e94, _e133.xy, _e133.z);
-                    sum_11 = _e134 + (_e133.w * _e138);
+                    float _e134 = sum_12;
+                    float _e138 = airlight_flat_radial(s_44, a_26, _e94, _e133.xy, _e133.z);
+                    sum_12 = _e134 + (_e133.w * _e138);
                 }
             }
         }
     }
-    float _e147 = sum_11;
+    float _e147 = sum_12;
     return _e147;
 }
 
 metal::float3 airlight_cap_row(
-    AirlightScene s_44,
+    AirlightScene s_45,
     AirlightCap cap,
     float graded_4,
     float node_2,
@@ -8433,113 +8472,113 @@ metal::float3 airlight_cap_row(
     float sb_2 = cap.sin_a * _e9.y;
     float cb_2 = metal::sqrt((1.0 - sb_2) * (1.0 + sb_2));
     float dist_1 = metal::max((cap.dc * cb_2) - (cap.radius * _e9.x), 0.0);
-    float _e28 = airlight_emitted(s_44, _e9.x);
-    float factor = ((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * metal::exp(metal::min(-(s_44.sigma_t) * dist_1, 0.0));
+    float _e28 = airlight_emitted(s_45, _e9.x);
+    float factor = ((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * metal::exp(metal::min(-(s_45.sigma_t) * dist_1, 0.0));
     return metal::float3(factor, cb_2, sb_2);
 }
 
 float airlight_sphere_cap(
-    AirlightScene s_45,
-    AirlightArea a_28,
+    AirlightScene s_46,
+    AirlightArea a_27,
     AirlightCap cap_1
 ) {
     airlight_type_23 rows = airlight_type_23 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
-    float sum_12 = 0.0;
+    float sum_13 = 0.0;
     uint i_40 = 0u;
     float at_2 = {};
     metal::float3 _e4 = airlight_basis_e1_(cap_1.a);
     metal::float3 e2_2 = metal::cross(cap_1.a, _e4);
-    float ad = metal::dot(cap_1.a, a_28.d);
-    float e1d = metal::dot(_e4, a_28.d);
-    float e2d = metal::dot(e2_2, a_28.d);
-    metal::float2 _e15 = airlight_graded_range(s_45, 1.5707964);
+    float ad = metal::dot(cap_1.a, a_27.d);
+    float e1d = metal::dot(_e4, a_27.d);
+    float e2d = metal::dot(e2_2, a_27.d);
+    metal::float2 _e15 = airlight_graded_range(s_46, 1.5707964);
     float graded_9 = _e15.y;
     float c_24 = 0.5 * _e15.x;
     float hw_7 = 0.5 * _e15.x;
-    metal::float3 _e63 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e63 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[0] = _e63;
-    metal::float3 _e70 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e70 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[1] = _e70;
-    metal::float3 _e77 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e77 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[2] = _e77;
-    metal::float3 _e84 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e84 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[3] = _e84;
-    metal::float3 _e91 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e91 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[4] = _e91;
-    metal::float3 _e98 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e98 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[5] = _e98;
-    metal::float3 _e105 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e105 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[6] = _e105;
-    metal::float3 _e112 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e112 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[7] = _e112;
-    metal::float3 _e119 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e119 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[8] = _e119;
-    metal::float3 _e126 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e126 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[9] = _e126;
-    metal::float3 _e133 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e133 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[10] = _e133;
-    metal::float3 _e140 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e140 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[11] = _e140;
-    metal::float3 _e147 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e147 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[12] = _e147;
-    metal::float3 _e154 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e154 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[13] = _e154;
-    metal::float3 _e161 = airlight_cap_row(s_45, cap_1, graded_9, c_24 - (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e161 = airlight_cap_row(s_46, cap_1, graded_9, c_24 - (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[14] = _e161;
-    metal::float3 _e168 = airlight_cap_row(s_45, cap_1, graded_9, c_24 + (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e168 = airlight_cap_row(s_46, cap_1, graded_9, c_24 + (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[15] = _e168;
-    if (a_28.isotropic) {
-        float _e174 = airlight_area_phase(s_45, 0.0);
+    if (a_27.isotropic) {
+        float _e174 = airlight_area_phase(s_46, 0.0);
         float around_1 = 6.2831855 * _e174;
-        float _e176 = sum_12;
+        float _e176 = sum_13;
         float _e179 = rows.inner[0].x;
-        sum_12 = _e176 + (_e179 * around_1);
-        float _e182 = sum_12;
+        sum_13 = _e176 + (_e179 * around_1);
+        float _e182 = sum_13;
         float _e185 = rows.inner[1].x;
-        sum_12 = _e182 + (_e185 * around_1);
-        float _e188 = sum_12;
+        sum_13 = _e182 + (_e185 * around_1);
+        float _e188 = sum_13;
         float _e191 = rows.inner[2].x;
-        sum_12 = _e188 + (_e191 * around_1);
-        float _e194 = sum_12;
+        sum_13 = _e188 + (_e191 * around_1);
+        float _e194 = sum_13;
         float _e197 = rows.inner[3].x;
-        sum_12 = _e194 + (_e197 * around_1);
-        float _e200 = sum_12;
+        sum_13 = _e194 + (_e197 * around_1);
+        float _e200 = sum_13;
         float _e203 = rows.inner[4].x;
-        sum_12 = _e200 + (_e203 * around_1);
-        float _e206 = sum_12;
+        sum_13 = _e200 + (_e203 * around_1);
+        float _e206 = sum_13;
         float _e209 = rows.inner[5].x;
-        sum_12 = _e206 + (_e209 * around_1);
-        float _e212 = sum_12;
+        sum_13 = _e206 + (_e209 * around_1);
+        float _e212 = sum_13;
         float _e215 = rows.inner[6].x;
-        sum_12 = _e212 + (_e215 * around_1);
-        float _e218 = sum_12;
+        sum_13 = _e212 + (_e215 * around_1);
+        float _e218 = sum_13;
         float _e221 = rows.inner[7].x;
-        sum_12 = _e218 + (_e221 * around_1);
-        float _e224 = sum_12;
+        sum_13 = _e218 + (_e221 * around_1);
+        float _e224 = sum_13;
         float _e227 = rows.inner[8].x;
-        sum_12 = _e224 + (_e227 * around_1);
-        float _e230 = sum_12;
+        sum_13 = _e224 + (_e227 * around_1);
+        float _e230 = sum_13;
         float _e233 = rows.inner[9].x;
-        sum_12 = _e230 + (_e233 * around_1);
-        float _e236 = sum_12;
+        sum_13 = _e230 + (_e233 * around_1);
+        float _e236 = sum_13;
         float _e239 = rows.inner[10].x;
-        sum_12 = _e236 + (_e239 * around_1);
-        float _e242 = sum_12;
+        sum_13 = _e236 + (_e239 * around_1);
+        float _e242 = sum_13;
         float _e245 = rows.inner[11].x;
-        sum_12 = _e242 + (_e245 * around_1);
-        float _e248 = sum_12;
+        sum_13 = _e242 + (_e245 * around_1);
+        float _e248 = sum_13;
         float _e251 = rows.inner[12].x;
-        sum_12 = _e248 + (_e251 * around_1);
-        float _e254 = sum_12;
+        sum_13 = _e248 + (_e251 * around_1);
+        float _e254 = sum_13;
         float _e257 = rows.inner[13].x;
-        sum_12 = _e254 + (_e257 * around_1);
-        float _e260 = sum_12;
+        sum_13 = _e254 + (_e257 * around_1);
+        float _e260 = sum_13;
         float _e263 = rows.inner[14].x;
-        sum_12 = _e260 + (_e263 * around_1);
-        float _e266 = sum_12;
+        sum_13 = _e260 + (_e263 * around_1);
+        float _e266 = sum_13;
         float _e269 = rows.inner[15].x;
-        sum_12 = _e266 + (_e269 * around_1);
-        float _e272 = sum_12;
+        sum_13 = _e266 + (_e269 * around_1);
+        float _e272 = sum_13;
         return _e272;
     }
     uint2 loop_bound_52 = uint2(4294967295u);
@@ -8566,109 +8605,109 @@ float airlight_sphere_cap(
             float _e291 = rows.inner[0].x;
             float _e294 = rows.inner[0].y;
             float _e298 = rows.inner[0].z;
-            float _e301 = airlight_area_phase(s_45, (_e294 * ad) + (_e298 * across_1));
+            float _e301 = airlight_area_phase(s_46, (_e294 * ad) + (_e298 * across_1));
             at_2 = _e288 + (_e291 * _e301);
             float _e304 = at_2;
             float _e307 = rows.inner[1].x;
             float _e310 = rows.inner[1].y;
             float _e314 = rows.inner[1].z;
-            float _e317 = airlight_area_phase(s_45, (_e310 * ad) + (_e314 * across_1));
+            float _e317 = airlight_area_phase(s_46, (_e310 * ad) + (_e314 * across_1));
             at_2 = _e304 + (_e307 * _e317);
             float _e320 = at_2;
             float _e323 = rows.inner[2].x;
             float _e326 = rows.inner[2].y;
             float _e330 = rows.inner[2].z;
-            float _e333 = airlight_area_phase(s_45, (_e326 * ad) + (_e330 * across_1));
+            float _e333 = airlight_area_phase(s_46, (_e326 * ad) + (_e330 * across_1));
             at_2 = _e320 + (_e323 * _e333);
             float _e336 = at_2;
             float _e339 = rows.inner[3].x;
             float _e342 = rows.inner[3].y;
             float _e346 = rows.inner[3].z;
-            float _e349 = airlight_area_phase(s_45, (_e342 * ad) + (_e346 * across_1));
+            float _e349 = airlight_area_phase(s_46, (_e342 * ad) + (_e346 * across_1));
             at_2 = _e336 + (_e339 * _e349);
             float _e352 = at_2;
             float _e355 = rows.inner[4].x;
             float _e358 = rows.inner[4].y;
             float _e362 = rows.inner[4].z;
-            float _e365 = airlight_area_phase(s_45, (_e358 * ad) + (_e362 * across_1));
+            float _e365 = airlight_area_phase(s_46, (_e358 * ad) + (_e362 * across_1));
             at_2 = _e352 + (_e355 * _e365);
             float _e368 = at_2;
             float _e371 = rows.inner[5].x;
             float _e374 = rows.inner[5].y;
             float _e378 = rows.inner[5].z;
-            float _e381 = airlight_area_phase(s_45, (_e374 * ad) + (_e378 * across_1));
+            float _e381 = airlight_area_phase(s_46, (_e374 * ad) + (_e378 * across_1));
             at_2 = _e368 + (_e371 * _e381);
             float _e384 = at_2;
             float _e387 = rows.inner[6].x;
             float _e390 = rows.inner[6].y;
             float _e394 = rows.inner[6].z;
-            float _e397 = airlight_area_phase(s_45, (_e390 * ad) + (_e394 * across_1));
+            float _e397 = airlight_area_phase(s_46, (_e390 * ad) + (_e394 * across_1));
             at_2 = _e384 + (_e387 * _e397);
             float _e400 = at_2;
             float _e403 = rows.inner[7].x;
             float _e406 = rows.inner[7].y;
             float _e410 = rows.inner[7].z;
-            float _e413 = airlight_area_phase(s_45, (_e406 * ad) + (_e410 * across_1));
+            float _e413 = airlight_area_phase(s_46, (_e406 * ad) + (_e410 * across_1));
             at_2 = _e400 + (_e403 * _e413);
             float _e416 = at_2;
             float _e419 = rows.inner[8].x;
             float _e422 = rows.inner[8].y;
             float _e426 = rows.inner[8].z;
-            float _e429 = airlight_area_phase(s_45, (_e422 * ad) + (_e426 * across_1));
+            float _e429 = airlight_area_phase(s_46, (_e422 * ad) + (_e426 * across_1));
             at_2 = _e416 + (_e419 * _e429);
             float _e432 = at_2;
             float _e435 = rows.inner[9].x;
             float _e438 = rows.inner[9].y;
             float _e442 = rows.inner[9].z;
-            float _e445 = airlight_area_phase(s_45, (_e438 * ad) + (_e442 * across_1));
+            float _e445 = airlight_area_phase(s_46, (_e438 * ad) + (_e442 * across_1));
             at_2 = _e432 + (_e435 * _e445);
             float _e448 = at_2;
             float _e451 = rows.inner[10].x;
             float _e454 = rows.inner[10].y;
             float _e458 = rows.inner[10].z;
-            float _e461 = airlight_area_phase(s_45, (_e454 * ad) + (_e458 * across_1));
+            float _e461 = airlight_area_phase(s_46, (_e454 * ad) + (_e458 * across_1));
             at_2 = _e448 + (_e451 * _e461);
             float _e464 = at_2;
             float _e467 = rows.inner[11].x;
             float _e470 = rows.inner[11].y;
             float _e474 = rows.inner[11].z;
-            float _e477 = airlight_area_phase(s_45, (_e470 * ad) + (_e474 * across_1));
+            float _e477 = airlight_area_phase(s_46, (_e470 * ad) + (_e474 * across_1));
             at_2 = _e464 + (_e467 * _e477);
             float _e480 = at_2;
             float _e483 = rows.inner[12].x;
             float _e486 = rows.inner[12].y;
             float _e490 = rows.inner[12].z;
-            float _e493 = airlight_area_phase(s_45, (_e486 * ad) + (_e490 * across_1));
+            float _e493 = airlight_area_phase(s_46, (_e486 * ad) + (_e490 * across_1));
             at_2 = _e480 + (_e483 * _e493);
             float _e496 = at_2;
             float _e499 = rows.inner[13].x;
             float _e502 = rows.inner[13].y;
             float _e506 = rows.inner[13].z;
-            float _e509 = airlight_area_phase(s_45, (_e502 * ad) + (_e506 * across_1));
+            float _e509 = airlight_area_phase(s_46, (_e502 * ad) + (_e506 * across_1));
             at_2 = _e496 + (_e499 * _e509);
             float _e512 = at_2;
             float _e515 = rows.inner[14].x;
             float _e518 = rows.inner[14].y;
             float _e522 = rows.inner[14].z;
-            float _e525 = airlight_area_phase(s_45, (_e518 * ad) + (_e522 * across_1));
+            float _e525 = airlight_area_phase(s_46, (_e518 * ad) + (_e522 * across_1));
             at_2 = _e512 + (_e515 * _e525);
             float _e528 = at_2;
             float _e531 = rows.inner[15].x;
             float _e534 = rows.inner[15].y;
             float _e538 = rows.inner[15].z;
-            float _e541 = airlight_area_phase(s_45, (_e534 * ad) + (_e538 * across_1));
+            float _e541 = airlight_area_phase(s_46, (_e534 * ad) + (_e538 * across_1));
             at_2 = _e528 + (_e531 * _e541);
-            float _e544 = sum_12;
+            float _e544 = sum_13;
             float _e546 = at_2;
-            sum_12 = _e544 + (_e280.z * _e546);
+            sum_13 = _e544 + (_e280.z * _e546);
         }
     }
-    float _e552 = sum_12;
+    float _e552 = sum_13;
     return _e552;
 }
 
 float airlight_sphere_lobe_node(
-    AirlightScene s_46,
+    AirlightScene s_47,
     AirlightCap cap_2,
     float sign_1,
     float cos_p,
@@ -8681,14 +8720,14 @@ float airlight_sphere_lobe_node(
     float toward_a = (_e8.x * cos_p) + (_e8.y * big_b);
     float root_5 = metal::sqrt(metal::max((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a)), 0.0));
     float dist_2 = metal::max((cap_2.dc * toward_a) - root_5, 0.0);
-    float _e37 = airlight_emitted(s_46, root_5 / cap_2.radius);
-    float _e47 = airlight_area_phase(s_46, sign_1 * _e8.x);
-    return (((_e37 * metal::exp(metal::min(-(s_46.sigma_t) * dist_2, 0.0))) * _e47) * _e8.y) * _e8.z;
+    float _e37 = airlight_emitted(s_47, root_5 / cap_2.radius);
+    float _e47 = airlight_area_phase(s_47, sign_1 * _e8.x);
+    return (((_e37 * metal::exp(metal::min(-(s_47.sigma_t) * dist_2, 0.0))) * _e47) * _e8.y) * _e8.z;
 }
 
 float airlight_sphere_about_lobe(
-    AirlightScene s_47,
-    AirlightArea a_29,
+    AirlightScene s_48,
+    AirlightArea a_28,
     AirlightCap cap_3,
     float sign_2,
     float cos_p_1,
@@ -8696,17 +8735,18 @@ float airlight_sphere_about_lobe(
 ) {
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
-    float sum_13 = 0.0;
+    float sum_14 = 0.0;
     uint i_41 = 0u;
     float big_b_1 = {};
     float wpsi = {};
+    bool local_191 = {};
     float start_5 = {};
     float around = {};
-    metal::float3 p_8 = sign_2 * a_29.d;
+    metal::float3 p_8 = sign_2 * a_28.d;
     metal::float3 _e8 = airlight_basis_e1_(p_8);
-    metal::float3 v_10 = metal::cross(p_8, _e8);
+    metal::float3 v_11 = metal::cross(p_8, _e8);
     float au = metal::dot(cap_3.a, _e8);
-    float av = metal::dot(cap_3.a, v_10);
+    float av = metal::dot(cap_3.a, v_11);
     bool inside_3 = cos_p_1 > cap_3.cos_a;
     float sin_p = metal::sqrt((au * au) + (av * av));
     if (sin_p > 0.0) {
@@ -8714,161 +8754,191 @@ float airlight_sphere_about_lobe(
         float _e42 = airlight_acos(metal::min(metal::sqrt(metal::max((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1), 0.0)) / sin_p, 1.0));
         half_15 = _e42;
     }
+    float _e43 = airlight_atan2_(sin_p, cos_p_1);
+    float _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
+    float eps = _e46 - _e43;
+    float width_7 = metal::min(scale_3, metal::sqrt(metal::max((_e46 - _e43) * (_e46 + _e43), 0.0)));
+    float _e56 = axis_2.y;
+    float _e58 = axis_2.x;
+    AirlightEdgeRule rim_1 = AirlightEdgeRule {eps, {}, metal::float2(_e56, -(_e58)), metal::sqrt((eps * eps) + (width_7 * width_7)), -1.5707964, 1.5707964};
+    uint count_4 = inside_3 ? 24u : 16u;
     uint2 loop_bound_53 = uint2(4294967295u);
     bool loop_init_52 = true;
     while(true) {
         if (metal::all(loop_bound_53 == uint2(0u))) { break; }
         loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
         if (!loop_init_52) {
-            uint _e290 = i_41;
-            i_41 = _e290 + 1u;
+            uint _e347 = i_41;
+            i_41 = _e347 + 1u;
         }
         loop_init_52 = false;
-        uint _e47 = i_41;
-        if (_e47 < 32u) {
+        uint _e75 = i_41;
+        if (_e75 < count_4) {
         } else {
             break;
         }
         {
-            uint _e50 = i_41;
-            metal::float3 _e51 = airlight_azimuths(inside_3, _e50);
-            float _e54 = axis_2.x;
-            float _e58 = axis_2.y;
-            big_b_1 = sin_p * ((_e51.x * _e54) + (_e51.y * _e58));
-            wpsi = _e51.z;
-            if (!(inside_3)) {
-                float _e66 = half_15;
-                metal::float2 _e69 = airlight_cos_sin(_e66 * _e51.y);
-                big_b_1 = sin_p * _e69.x;
-                float _e73 = half_15;
-                wpsi = (_e51.z * _e73) * _e51.x;
+            big_b_1 = 0.0;
+            wpsi = 0.0;
+            if (inside_3) {
+                uint _e83 = i_41;
+                local_191 = _e83 < 8u;
+            } else {
+                local_191 = false;
             }
-            float _e77 = big_b_1;
-            float _e78 = airlight_atan2_(_e77, cos_p_1);
-            float _e81 = big_b_1;
-            float _e82 = big_b_1;
-            float _e89 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e81 * _e82)), 1.0));
+            bool _e87 = local_191;
+            if (_e87) {
+                if (!((eps > 0.0))) {
+                    continue;
+                }
+                uint _e92 = i_41;
+                metal::float2 _e96 = airlight_radial_rule((2u * _e92) + 1u);
+                metal::float4 _e100 = airlight_edge_at(rim_1, 1.5707964 * _e96.x);
+                metal::float2 _e102 = axis_2;
+                big_b_1 = sin_p * metal::dot(_e100.xy, _e102);
+                wpsi = (((2.0 * _e96.y) * 0.5) * AIRLIGHT_PI) * _e100.w;
+            } else {
+                if (inside_3) {
+                    uint _e114 = i_41;
+                    metal::float3 _e117 = airlight_azimuths_even(_e114 - 8u);
+                    big_b_1 = sin_p * _e117.x;
+                    wpsi = _e117.z;
+                } else {
+                    uint _e121 = i_41;
+                    metal::float3 _e122 = airlight_azimuths_even(_e121);
+                    float _e123 = half_15;
+                    metal::float2 _e126 = airlight_cos_sin(_e123 * _e122.y);
+                    big_b_1 = sin_p * _e126.x;
+                    float _e130 = half_15;
+                    wpsi = (_e122.z * _e130) * _e122.x;
+                }
+            }
+            float _e134 = big_b_1;
+            float _e135 = airlight_atan2_(_e134, cos_p_1);
+            float _e138 = big_b_1;
+            float _e139 = big_b_1;
+            float _e146 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e138 * _e139)), 1.0));
             start_5 = 0.0;
             if (!(inside_3)) {
-                start_5 = metal::max(_e78 - _e89, 0.0);
+                start_5 = metal::max(_e135 - _e146, 0.0);
             }
-            float _e96 = start_5;
-            metal::float2 _e98 = airlight_graded_from(scale_3, _e96, _e78 + _e89);
-            float graded_10 = _e98.x;
-            float c_25 = 0.5 * _e98.y;
-            float hw_8 = 0.5 * _e98.y;
+            float _e153 = start_5;
+            metal::float2 _e155 = airlight_graded_from(scale_3, _e153, _e135 + _e146);
+            float graded_10 = _e155.x;
+            float c_25 = 0.5 * _e155.y;
+            float hw_8 = 0.5 * _e155.y;
             around = 0.0;
-            float _e108 = around;
-            float _e111 = big_b_1;
-            float _e112 = start_5;
-            float _e116 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, c_25 - (0.09501251 * hw_8));
-            around = _e108 + ((0.1894506 * hw_8) * _e116);
-            float _e119 = around;
-            float _e122 = big_b_1;
-            float _e123 = start_5;
-            float _e127 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, c_25 + (0.09501251 * hw_8));
-            around = _e119 + ((0.1894506 * hw_8) * _e127);
-            float _e130 = around;
-            float _e133 = big_b_1;
-            float _e134 = start_5;
-            float _e138 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, c_25 - (0.28160354 * hw_8));
-            around = _e130 + ((0.18260342 * hw_8) * _e138);
-            float _e141 = around;
-            float _e144 = big_b_1;
-            float _e145 = start_5;
-            float _e149 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, c_25 + (0.28160354 * hw_8));
-            around = _e141 + ((0.18260342 * hw_8) * _e149);
-            float _e152 = around;
-            float _e155 = big_b_1;
-            float _e156 = start_5;
-            float _e160 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, c_25 - (0.45801678 * hw_8));
-            around = _e152 + ((0.16915652 * hw_8) * _e160);
-            float _e163 = around;
-            float _e166 = big_b_1;
-            float _e167 = start_5;
-            float _e171 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, c_25 + (0.45801678 * hw_8));
-            around = _e163 + ((0.16915652 * hw_8) * _e171);
-            float _e174 = around;
-            float _e177 = big_b_1;
-            float _e178 = start_5;
-            float _e182 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, c_25 - (0.61787623 * hw_8));
-            around = _e174 + ((0.14959599 * hw_8) * _e182);
-            float _e185 = around;
-            float _e188 = big_b_1;
-            float _e189 = start_5;
-            float _e193 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, c_25 + (0.61787623 * hw_8));
-            around = _e185 + ((0.14959599 * hw_8) * _e193);
-            float _e196 = around;
-            float _e199 = big_b_1;
-            float _e200 = start_5;
-            float _e204 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, c_25 - (0.7554044 * hw_8));
-            around = _e196 + ((0.12462897 * hw_8) * _e204);
-            float _e207 = around;
-            float _e210 = big_b_1;
-            float _e211 = start_5;
-            float _e215 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, c_25 + (0.7554044 * hw_8));
-            around = _e207 + ((0.12462897 * hw_8) * _e215);
-            float _e218 = around;
-            float _e221 = big_b_1;
-            float _e222 = start_5;
-            float _e226 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, c_25 - (0.8656312 * hw_8));
-            around = _e218 + ((0.09515851 * hw_8) * _e226);
-            float _e229 = around;
-            float _e232 = big_b_1;
-            float _e233 = start_5;
-            float _e237 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, c_25 + (0.8656312 * hw_8));
-            around = _e229 + ((0.09515851 * hw_8) * _e237);
-            float _e240 = around;
-            float _e243 = big_b_1;
-            float _e244 = start_5;
-            float _e248 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, c_25 - (0.944575 * hw_8));
-            around = _e240 + ((0.062253524 * hw_8) * _e248);
-            float _e251 = around;
-            float _e254 = big_b_1;
-            float _e255 = start_5;
-            float _e259 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, c_25 + (0.944575 * hw_8));
-            around = _e251 + ((0.062253524 * hw_8) * _e259);
-            float _e262 = around;
-            float _e265 = big_b_1;
-            float _e266 = start_5;
-            float _e270 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, c_25 - (0.9894009 * hw_8));
-            around = _e262 + ((0.02715246 * hw_8) * _e270);
-            float _e273 = around;
-            float _e276 = big_b_1;
-            float _e277 = start_5;
-            float _e281 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, c_25 + (0.9894009 * hw_8));
-            around = _e273 + ((0.02715246 * hw_8) * _e281);
-            float _e284 = sum_13;
-            float _e285 = wpsi;
+            float _e165 = around;
+            float _e168 = big_b_1;
+            float _e169 = start_5;
+            float _e173 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e168, _e169, graded_10, c_25 - (0.09501251 * hw_8));
+            around = _e165 + ((0.1894506 * hw_8) * _e173);
+            float _e176 = around;
+            float _e179 = big_b_1;
+            float _e180 = start_5;
+            float _e184 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e179, _e180, graded_10, c_25 + (0.09501251 * hw_8));
+            around = _e176 + ((0.1894506 * hw_8) * _e184);
+            float _e187 = around;
+            float _e190 = big_b_1;
+            float _e191 = start_5;
+            float _e195 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e190, _e191, graded_10, c_25 - (0.28160354 * hw_8));
+            around = _e187 + ((0.18260342 * hw_8) * _e195);
+            float _e198 = around;
+            float _e201 = big_b_1;
+            float _e202 = start_5;
+            float _e206 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e201, _e202, graded_10, c_25 + (0.28160354 * hw_8));
+            around = _e198 + ((0.18260342 * hw_8) * _e206);
+            float _e209 = around;
+            float _e212 = big_b_1;
+            float _e213 = start_5;
+            float _e217 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e212, _e213, graded_10, c_25 - (0.45801678 * hw_8));
+            around = _e209 + ((0.16915652 * hw_8) * _e217);
+            float _e220 = around;
+            float _e223 = big_b_1;
+            float _e224 = start_5;
+            float _e228 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e223, _e224, graded_10, c_25 + (0.45801678 * hw_8));
+            around = _e220 + ((0.16915652 * hw_8) * _e228);
+            float _e231 = around;
+            float _e234 = big_b_1;
+            float _e235 = start_5;
+            float _e239 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e234, _e235, graded_10, c_25 - (0.61787623 * hw_8));
+            around = _e231 + ((0.14959599 * hw_8) * _e239);
+            float _e242 = around;
+            float _e245 = big_b_1;
+            float _e246 = start_5;
+            float _e250 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e245, _e246, graded_10, c_25 + (0.61787623 * hw_8));
+            around = _e242 + ((0.14959599 * hw_8) * _e250);
+            float _e253 = around;
+            float _e256 = big_b_1;
+            float _e257 = start_5;
+            float _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e256, _e257, graded_10, c_25 - (0.7554044 * hw_8));
+            around = _e253 + ((0.12462897 * hw_8) * _e261);
+            float _e264 = around;
+            float _e267 = big_b_1;
+            float _e268 = start_5;
+            float _e272 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, _e268, graded_10, c_25 + (0.7554044 * hw_8));
+            around = _e264 + ((0.12462897 * hw_8) * _e272);
+            float _e275 = around;
+            float _e278 = big_b_1;
+            float _e279 = start_5;
+            float _e283 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e278, _e279, graded_10, c_25 - (0.8656312 * hw_8));
+            around = _e275 + ((0.09515851 * hw_8) * _e283);
             float _e286 = around;
-            sum_13 = _e284 + (_e285 * _e286);
+            float _e289 = big_b_1;
+            float _e290 = start_5;
+            float _e294 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e289, _e290, graded_10, c_25 + (0.8656312 * hw_8));
+            around = _e286 + ((0.09515851 * hw_8) * _e294);
+            float _e297 = around;
+            float _e300 = big_b_1;
+            float _e301 = start_5;
+            float _e305 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e300, _e301, graded_10, c_25 - (0.944575 * hw_8));
+            around = _e297 + ((0.062253524 * hw_8) * _e305);
+            float _e308 = around;
+            float _e311 = big_b_1;
+            float _e312 = start_5;
+            float _e316 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e311, _e312, graded_10, c_25 + (0.944575 * hw_8));
+            around = _e308 + ((0.062253524 * hw_8) * _e316);
+            float _e319 = around;
+            float _e322 = big_b_1;
+            float _e323 = start_5;
+            float _e327 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e322, _e323, graded_10, c_25 - (0.9894009 * hw_8));
+            around = _e319 + ((0.02715246 * hw_8) * _e327);
+            float _e330 = around;
+            float _e333 = big_b_1;
+            float _e334 = start_5;
+            float _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e333, _e334, graded_10, c_25 + (0.9894009 * hw_8));
+            around = _e330 + ((0.02715246 * hw_8) * _e338);
+            float _e341 = sum_14;
+            float _e342 = wpsi;
+            float _e343 = around;
+            sum_14 = _e341 + (_e342 * _e343);
         }
     }
-    float _e292 = sum_13;
-    return _e292;
+    float _e349 = sum_14;
+    return _e349;
 }
 
 float airlight_sphere(
-    AirlightScene s_48,
-    AirlightArea a_30,
+    AirlightScene s_49,
+    AirlightArea a_29,
     metal::float3 x_28
 ) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_13 = 0u;
-    bool local_191 = {};
+    uint j_14 = 0u;
     bool local_192 = {};
     bool local_193 = {};
     bool local_194 = {};
     bool local_195 = {};
-    metal::float3 v_11 = a_30.c - x_28;
-    float _e5 = airlight_safe_length(v_11);
-    if (!((_e5 > a_30.radius))) {
+    bool local_196 = {};
+    metal::float3 v_12 = a_29.c - x_28;
+    float _e5 = airlight_safe_length(v_12);
+    if (!((_e5 > a_29.radius))) {
         return 0.0;
     }
-    float sin_a_2 = a_30.radius / _e5;
-    AirlightCap cap_4 = AirlightCap {v_11 / metal::float3(_e5), _e5, a_30.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
+    float sin_a_2 = a_29.radius / _e5;
+    AirlightCap cap_4 = AirlightCap {v_12 / metal::float3(_e5), _e5, a_29.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     uint2 loop_bound_54 = uint2(4294967295u);
     bool loop_init_53 = true;
@@ -8876,54 +8946,54 @@ float airlight_sphere(
         if (metal::all(loop_bound_54 == uint2(0u))) { break; }
         loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
         if (!loop_init_53) {
-            uint _e92 = j_13;
-            j_13 = _e92 + 1u;
+            uint _e92 = j_14;
+            j_14 = _e92 + 1u;
         }
         loop_init_53 = false;
-        uint _e32 = j_13;
+        uint _e32 = j_14;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            uint _e39 = j_13;
-            metal::float2 lobe_5 = (_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
-            float c_26 = metal::dot(cap_4.a, lobe_5.x * a_30.d);
+            uint _e39 = j_14;
+            metal::float2 lobe_6 = (_e39 == 1u) ? a_29.lobes.zw : a_29.lobes.xy;
+            float c_26 = metal::dot(cap_4.a, lobe_6.x * a_29.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_191 = lobe_5.y > 0.0;
-            } else {
-                local_191 = false;
-            }
-            bool _e57 = local_191;
-            if (_e57) {
-                local_192 = lobe_5.y < (_e23 + _e23);
+                local_192 = lobe_6.y > 0.0;
             } else {
                 local_192 = false;
             }
-            bool _e64 = local_192;
+            bool _e57 = local_192;
+            if (_e57) {
+                local_193 = lobe_6.y < (_e23 + _e23);
+            } else {
+                local_193 = false;
+            }
+            bool _e64 = local_193;
             if (_e64) {
                 if (!((c_26 > cap_4.cos_a))) {
                     if (c_26 > -(cap_4.cos_a)) {
                         float _e77 = airlight_acos(c_26);
-                        local_195 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y);
+                        local_196 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y);
                     } else {
-                        local_195 = false;
+                        local_196 = false;
                     }
-                    bool _e84 = local_195;
-                    local_194 = _e84;
+                    bool _e84 = local_196;
+                    local_195 = _e84;
                 } else {
-                    local_194 = true;
+                    local_195 = true;
                 }
-                bool _e86 = local_194;
-                local_193 = _e86;
+                bool _e86 = local_195;
+                local_194 = _e86;
             } else {
-                local_193 = false;
+                local_194 = false;
             }
-            bool _e88 = local_193;
+            bool _e88 = local_194;
             if (_e88) {
-                chosen = lobe_5.y;
-                sign_3 = lobe_5.x;
+                chosen = lobe_6.y;
+                sign_3 = lobe_6.x;
                 cos_p_2 = c_26;
             }
         }
@@ -8933,57 +9003,57 @@ float airlight_sphere(
         float _e97 = sign_3;
         float _e98 = cos_p_2;
         float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_48, a_30, cap_4, _e97, _e98, _e99);
+        float _e100 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    float _e101 = airlight_sphere_cap(s_48, a_30, cap_4);
+    float _e101 = airlight_sphere_cap(s_49, a_29, cap_4);
     return _e101;
 }
 
 float airlight_emitter_radiance(
-    AirlightScene s_49,
-    AirlightArea a_31,
+    AirlightScene s_50,
+    AirlightArea a_30,
     metal::float3 x_29
 ) {
-    switch(s_49.light_shape) {
+    switch(s_50.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_49, a_31, x_29);
+            float _e4 = airlight_disc(s_50, a_30, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_49, a_31, x_29);
+            float _e5 = airlight_parallelogram(s_50, a_30, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_49, a_31, x_29);
+            float _e6 = airlight_sphere(s_50, a_30, x_29);
             return _e6;
         }
     }
 }
 
 float airlight_area_node(
-    AirlightScene s_50,
-    AirlightArea a_32,
+    AirlightScene s_51,
+    AirlightArea a_31,
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
-    float along_1 = (a_32.h_eff * _e3.y) / _e3.x;
-    float t_15 = a_32.x_h + along_1;
-    float fade = metal::exp(metal::min(-(s_50.sigma_t) * metal::max((a_32.x_h - s_50.t_min) + along_1, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_50, a_32, s_50.origin + (t_15 * a_32.d));
-    return ((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
+    float along_1 = (a_31.h_eff * _e3.y) / _e3.x;
+    float t_15 = a_31.x_h + along_1;
+    float fade = metal::exp(metal::min(-(s_51.sigma_t) * metal::max((a_31.x_h - s_51.t_min) + along_1, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_51, a_31, s_51.origin + (t_15 * a_31.d));
+    return ((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
 AirlightResult airlight_area_light(
-    AirlightScene s_51
+    AirlightScene s_52
 ) {
     AirlightAdaptive st_1 = {};
     uint step_2 = 0u;
     float k_10 = {};
     float gauss_1 = {};
-    uint j_14 = {};
-    bool local_196 = {};
-    AirlightArea _e1 = airlight_area(s_51);
+    uint j_15 = {};
+    bool local_197 = {};
+    AirlightArea _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -9016,35 +9086,35 @@ AirlightResult airlight_area_light(
             float hw_9 = 0.5 * (_e34 - _e36);
             k_10 = 0.0;
             gauss_1 = 0.0;
-            j_14 = 0u;
+            j_15 = 0u;
             uint2 loop_bound_56 = uint2(4294967295u);
             bool loop_init_55 = true;
             while(true) {
                 if (metal::all(loop_bound_56 == uint2(0u))) { break; }
                 loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
                 if (!loop_init_55) {
-                    uint _e82 = j_14;
-                    j_14 = _e82 + 1u;
+                    uint _e82 = j_15;
+                    j_15 = _e82 + 1u;
                 }
                 loop_init_55 = false;
-                uint _e46 = j_14;
+                uint _e46 = j_15;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_14;
+                    uint _e49 = j_15;
                     metal::float3 node_4 = _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_14;
+                    uint _e59 = j_15;
                     if ((_e59 & 1u) == 0u) {
-                        uint _e66 = j_14;
-                        local_196 = _e66 < 14u;
+                        uint _e66 = j_15;
+                        local_197 = _e66 < 14u;
                     } else {
-                        local_196 = false;
+                        local_197 = false;
                     }
-                    bool _e70 = local_196;
+                    bool _e70 = local_197;
                     float x_39 = _e70 ? (c_27 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_51, _e1, x_39);
+                    float _e72 = airlight_area_node(s_52, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -9070,45 +9140,45 @@ AirlightResult airlight_area_light(
     if (!(_e105)) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
-    return AirlightResult {s_51.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
+    return AirlightResult {s_52.sigma_s * metal::max(total_4, 0.0), AIRLIGHT_STATUS_OK};
 }
 
 AirlightResult airlight_in_scatter_area(
-    AirlightScene s_52
+    AirlightScene s_53
 ) {
-    bool local_197 = {};
     bool local_198 = {};
-    bool _e1 = airlight_valid(s_52);
+    bool local_199 = {};
+    bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_197 = s_52.light_shape < AIRLIGHT_SHAPE_DISC;
-    } else {
-        local_197 = true;
-    }
-    bool _e10 = local_197;
-    if (!(_e10)) {
-        local_198 = s_52.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_198 = s_53.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
         local_198 = true;
     }
-    bool _e18 = local_198;
+    bool _e10 = local_198;
+    if (!(_e10)) {
+        local_199 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_199 = true;
+    }
+    bool _e18 = local_199;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_area_light(s_52);
+    AirlightResult _e22 = airlight_area_light(s_53);
     return _e22;
 }
 
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_199 = {};
+    bool local_200 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_199 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_200 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_199 = true;
+        local_200 = true;
     }
-    bool _e11 = local_199;
+    bool _e11 = local_200;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9116,23 +9186,23 @@ AirlightResult airlight_overflowed(
 }
 
 AirlightResult airlight_node_integral(
-    AirlightNode n_4
+    AirlightNode n_5
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_200 = {};
+    bool local_201 = {};
     AirlightCanonical g_29 = {};
-    AirlightScene p_9 = n_4.scene;
-    bool _e7 = airlight_vec_finite(n_4.scene.light_position);
+    AirlightScene p_9 = n_5.scene;
+    bool _e7 = airlight_vec_finite(n_5.scene.light_position);
     if (_e7) {
-        bool _e11 = airlight_vec_finite(n_4.scene.dir);
-        local_200 = _e11;
+        bool _e11 = airlight_vec_finite(n_5.scene.dir);
+        local_201 = _e11;
     } else {
-        local_200 = false;
+        local_201 = false;
     }
-    bool _e13 = local_200;
+    bool _e13 = local_201;
     if (_e13) {
-        g_29 = n_4.canonical;
-        if (!(n_4.exact)) {
+        g_29 = n_5.canonical;
+        if (!(n_5.exact)) {
             AirlightCanonical _e18 = airlight_canonical(p_9);
             AirlightCanonical _e19 = airlight_refined(p_9, _e18);
             g_29 = _e19;
@@ -9155,61 +9225,61 @@ AirlightResult airlight_point_integral(
 }
 
 AirlightResult airlight_in_scatter_point(
-    AirlightScene s_53
+    AirlightScene s_54
 ) {
-    bool local_201 = {};
     bool local_202 = {};
-    bool _e1 = airlight_valid(s_53);
+    bool local_203 = {};
+    bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_201 = s_53.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_201 = true;
-    }
-    bool _e10 = local_201;
-    if (!(_e10)) {
-        local_202 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_202 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_202 = true;
     }
-    bool _e18 = local_202;
+    bool _e10 = local_202;
+    if (!(_e10)) {
+        local_203 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_203 = true;
+    }
+    bool _e18 = local_203;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightResult _e22 = airlight_point_integral(s_53);
+    AirlightResult _e22 = airlight_point_integral(s_54);
     return _e22;
 }
 
 AirlightResult airlight_in_scatter_route(
-    AirlightScene s_54
+    AirlightScene s_55
 ) {
-    bool local_203 = {};
     bool local_204 = {};
-    bool _e1 = airlight_valid(s_54);
+    bool local_205 = {};
+    bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_203 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_203 = true;
-    }
-    bool _e10 = local_203;
-    if (!(_e10)) {
-        local_204 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_204 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_204 = true;
     }
-    bool _e18 = local_204;
+    bool _e10 = local_204;
+    if (!(_e10)) {
+        local_205 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_205 = true;
+    }
+    bool _e18 = local_205;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightCanonical _e22 = airlight_canonical(s_54);
-    AirlightCanonical _e23 = airlight_refined(s_54, _e22);
-    AirlightResult _e24 = airlight_limits(s_54, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_55);
+    AirlightCanonical _e23 = airlight_refined(s_55, _e22);
+    AirlightResult _e24 = airlight_limits(s_55, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_54);
+    bool _e29 = airlight_isotropic_scene(s_55);
     if (!(_e29)) {
-        metal::float2 _e31 = airlight_angle_route(s_54, _e23);
+        metal::float2 _e31 = airlight_angle_route(s_55, _e23);
         if (_e31.x > 0.5) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult {metal::max(_e31.y, 0.0), AIRLIGHT_STATUS_OK});
             return _e40;
@@ -9219,24 +9289,24 @@ AirlightResult airlight_in_scatter_route(
 }
 
 AirlightResult airlight_in_scatter(
-    AirlightScene s_55
+    AirlightScene s_56
 ) {
     AirlightAdaptive st_2 = {};
     uint step_3 = 0u;
     float k_11 = {};
     float gauss_2 = {};
-    uint j_15 = {};
-    bool local_205 = {};
-    float f = {};
+    uint j_16 = {};
     bool local_206 = {};
-    bool _e1 = airlight_valid(s_55);
+    float f = {};
+    bool local_207 = {};
+    bool _e1 = airlight_valid(s_56);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
     }
-    if (s_55.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_56.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult {0.0, 1u};
     }
-    AirlightOuter _e12 = airlight_outer(s_55);
+    AirlightOuter _e12 = airlight_outer(s_56);
     if (_e12.outcome == 1u) {
         return AirlightResult {0.0, 0u};
     }
@@ -9271,47 +9341,47 @@ AirlightResult airlight_in_scatter(
             float hw_10 = 0.5 * (_e49 - _e51);
             k_11 = 0.0;
             gauss_2 = 0.0;
-            j_15 = 0u;
+            j_16 = 0u;
             uint2 loop_bound_58 = uint2(4294967295u);
             bool loop_init_57 = true;
             while(true) {
                 if (metal::all(loop_bound_58 == uint2(0u))) { break; }
                 loop_bound_58 -= uint2(loop_bound_58.y == 0u, 1u);
                 if (!loop_init_57) {
-                    uint _e121 = j_15;
-                    j_15 = _e121 + 1u;
+                    uint _e121 = j_16;
+                    j_16 = _e121 + 1u;
                 }
                 loop_init_57 = false;
-                uint _e61 = j_15;
+                uint _e61 = j_16;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_15;
+                    uint _e64 = j_16;
                     metal::float3 node_5 = _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_15;
+                    uint _e74 = j_16;
                     if ((_e74 & 1u) == 0u) {
-                        uint _e81 = j_15;
-                        local_205 = _e81 < 6u;
+                        uint _e81 = j_16;
+                        local_206 = _e81 < 6u;
                     } else {
-                        local_205 = false;
+                        local_206 = false;
                     }
-                    bool _e85 = local_205;
+                    bool _e85 = local_206;
                     float w_11 = _e85 ? (c_28 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
-                    AirlightNode _e87 = airlight_outer_node(s_55, _e12, w_11);
+                    AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_55.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_206 = s_55.surface_kind == AIRLIGHT_SURFACE_NONE;
+                        if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_207 = s_56.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_206 = false;
+                            local_207 = false;
                         }
-                        bool _e106 = local_206;
+                        bool _e106 = local_207;
                         if (_e106) {
                             return _e93;
                         }

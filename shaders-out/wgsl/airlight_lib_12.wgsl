@@ -465,10 +465,10 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
-    let z_15 = (x * x);
-    let c_8 = (1f + (z_15 * (-0.5f + (z_15 * (0.041666668f + (z_15 * (-0.0013888889f + (z_15 * (0.000024801588f + (z_15 * (-0.0000002755732f + (z_15 * (0.0000000020876756f + (z_15 * (-0.000000000011470745f + (z_15 * 0.000000000000047794773f))))))))))))))));
-    let s_56 = (1f + (z_15 * (-0.16666667f + (z_15 * (0.008333334f + (z_15 * (-0.0001984127f + (z_15 * (0.0000027557319f + (z_15 * (-0.000000025052108f + (z_15 * (0.00000000016059044f + (z_15 * (-0.00000000000076471636f + (z_15 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_56 * x));
+    let z_16 = (x * x);
+    let c_8 = (1f + (z_16 * (-0.5f + (z_16 * (0.041666668f + (z_16 * (-0.0013888889f + (z_16 * (0.000024801588f + (z_16 * (-0.0000002755732f + (z_16 * (0.0000000020876756f + (z_16 * (-0.000000000011470745f + (z_16 * 0.000000000000047794773f))))))))))))))));
+    let s_57 = (1f + (z_16 * (-0.16666667f + (z_16 * (0.008333334f + (z_16 * (-0.0001984127f + (z_16 * (0.0000027557319f + (z_16 * (-0.000000025052108f + (z_16 * (0.00000000016059044f + (z_16 * (-0.00000000000076471636f + (z_16 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_57 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -493,11 +493,11 @@ fn airlight_atan(x_1: f32) -> f32 {
     }
     let _e17 = t;
     let _e18 = t;
-    let z_16 = (_e17 * _e18);
+    let z_17 = (_e17 * _e18);
     let _e20 = y;
     let _e32 = t;
     let _e34 = t;
-    return (_e20 + (((((((((0.080537446f * z_16) - 0.13877685f) * z_16) + 0.19977711f) * z_16) - 0.3333295f) * z_16) * _e32) + _e34));
+    return (_e20 + (((((((((0.080537446f * z_17) - 0.13877685f) * z_17) + 0.19977711f) * z_17) - 0.3333295f) * z_17) * _e32) + _e34));
 }
 
 fn airlight_cln(z_3: vec2<f32>) -> vec2<f32> {
@@ -525,10 +525,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_57 = (x_2 / (2f + x_2));
-    let z_17 = (s_57 * s_57);
-    let sum_14 = ((((((((((((((((z_17 / 17f) + 0.06666667f) * z_17) + 0.07692308f) * z_17) + 0.09090909f) * z_17) + 0.11111111f) * z_17) + 0.14285715f) * z_17) + 0.2f) * z_17) + 0.33333334f) * z_17) + 1f);
-    return ((2f * s_57) * sum_14);
+    let s_58 = (x_2 / (2f + x_2));
+    let z_18 = (s_58 * s_58);
+    let sum_15 = ((((((((((((((((z_18 / 17f) + 0.06666667f) * z_18) + 0.07692308f) * z_18) + 0.09090909f) * z_18) + 0.11111111f) * z_18) + 0.14285715f) * z_18) + 0.2f) * z_18) + 0.33333334f) * z_18) + 1f);
+    return ((2f * s_58) * sum_15);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -674,8 +674,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_16 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_16);
+    let b_15 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_15);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -685,7 +685,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_16, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_15, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -752,12 +752,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_7 = f32(_e2);
-    let b_17 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
-    let a_33 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
-    let disc = (1f - ((4f * a_33) / (b_17 * b_17)));
-    t_2 = b_17;
+    let b_16 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
+    let a_32 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
+    let disc = (1f - ((4f * a_32) / (b_16 * b_16)));
+    t_2 = b_16;
     if (disc > 0f) {
-        t_2 = ((b_17 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_16 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -931,11 +931,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 14> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_34 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_34 * a_34));
+        let a_33 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_33 * a_33));
     }
-    let b_18 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
+    let b_17 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -1049,11 +1049,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_35 = abs(g_4);
-    if !((a_35 > 0f)) {
+    let a_34 = abs(g_4);
+    if !((a_34 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_35) * (1f - a_35)) / (a_35 + a_35));
+    return (((1f - a_34) * (1f - a_34)) / (a_34 + a_34));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1067,8 +1067,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_36 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_36) / a_36), (a_36 > 0f)), sigma_1);
+            let a_35 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_35) / a_35), (a_35 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -2010,10 +2010,10 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     if !((m_1[0] > 0f)) {
         return 1f;
     }
-    let last = (abs(c_2[11]) + abs(c_2[10]));
+    let last_1 = (abs(c_2[11]) + abs(c_2[10]));
     let before = (abs(c_2[9]) + abs(c_2[8]));
     if !(!((before > 0f))) {
-        local_16 = !((last < before));
+        local_16 = !((last_1 < before));
     } else {
         local_16 = true;
     }
@@ -2021,7 +2021,7 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
     if _e27 {
         return 1f;
     }
-    let measured = sqrt((last / before));
+    let measured = sqrt((last_1 / before));
     let q_9 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[11]), abs(m_1[10]));
     if (q_9 < 1f) {
@@ -2111,8 +2111,8 @@ fn airlight_error_factor(c_2: array<f32, 12>, m_1: array<f32, 12>, floor_: f32) 
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_37 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_37 + sqrt(max(((a_37 * a_37) - 1f), 0f)));
+    let a_36 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_36 + sqrt(max(((a_36 * a_36) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2187,8 +2187,8 @@ fn airlight_v_panel(s_6: AirlightScene, g_8: AirlightCanonical, sigma_4: f32, ha
             let _e40 = r_2;
             let _e41 = i_6;
             let _e42 = airlight_node(_e8, _e41);
-            let v_8 = (_e39 + (_e40 * _e42));
-            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_8);
+            let v_9 = (_e39 + (_e40 * _e42));
+            let _e48 = airlight_integrand_over(s_6, g_8, select(sigma_4, -(sigma_4), half_6.second), v_9);
             let fy = _e48.x;
             let over = _e48.y;
             let _e51 = i_6;
@@ -3344,9 +3344,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_38 = abs(p0_4);
+            let a_37 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_38) / a_38), (a_38 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_37) / a_37), (a_37 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -3408,15 +3408,15 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let below_1 = (lower <= 1.5707964f);
             let _e248 = psi1_1;
             let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
-            let cs_3 = _e254.y;
+            let cs_4 = _e254.y;
             let sn = select(_e254.x, -(_e254.x), below_1);
             let near_pole = (1f + _e254.x);
-            let far_pole = ((cs_3 * cs_3) / near_pole);
+            let far_pole = ((cs_4 * cs_4) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_11 = select((near_pole / cs_3), (cs_3 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_11 - _e26)), 0f))), (cs_3 > 0f));
-            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_3)));
+            let y_11 = select((near_pole / cs_4), (cs_4 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_11 - _e26)), 0f))), (cs_4 > 0f));
+            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_4)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
             let gw = (weight_3 * f_2);
@@ -3493,23 +3493,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_39 = (a0_ / scale_4);
-    let b_19 = (b0_ / scale_4);
+    let a_38 = (a0_ / scale_4);
+    let b_18 = (b0_ / scale_4);
     let c_10 = (c0_ / scale_4);
-    let disc_1 = ((b_19 * b_19) - ((4f * a_39) * c_10));
+    let disc_1 = ((b_18 * b_18) - ((4f * a_38) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_19 < 0f) {
+    if (b_18 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_10 = (-0.5f * (b_19 + (_e47 * sqrt(disc_1))));
+    let q_10 = (-0.5f * (b_18 + (_e47 * sqrt(disc_1))));
     if (q_10 != 0f) {
         r1_ = (c_10 / q_10);
     }
-    if (a_39 != 0f) {
-        r2_2 = (q_10 / a_39);
+    if (a_38 != 0f) {
+        r2_2 = (q_10 / a_38);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3554,15 +3554,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_40 = (sigma_11 * g_15.d_el);
+    let a_39 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_40) / d_3);
-    if (a_40 > 0f) {
-        y1_1 = (d_3 / (a_40 + root_1));
+    let root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_39) / d_3);
+    if (a_39 > 0f) {
+        y1_1 = (d_3 / (a_39 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -4344,8 +4344,8 @@ fn airlight_normalisable(v_2: vec3<f32>) -> bool {
 
 fn airlight_normalize(v_3: vec3<f32>) -> vec3<f32> {
     let m_9 = max(abs(v_3.x), max(abs(v_3.y), abs(v_3.z)));
-    let u_7 = (v_3 / vec3(m_9));
-    return (u_7 / vec3(length(u_7)));
+    let u_8 = (v_3 / vec3(m_9));
+    return (u_8 / vec3(length(u_8)));
 }
 
 fn airlight_valid(s_19: AirlightScene) -> bool {
@@ -4956,10 +4956,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     let _e113 = airlight_normalize(dir_2);
     let _e114 = airlight_normalize(w_6);
-    let n_5 = -(cross(_e113, _e114));
+    let n_6 = -(cross(_e113, _e114));
     out_2.h = h_7;
     let _e119 = a_16;
-    out_2.d_c = dot(n_5, _e119);
+    out_2.d_c = dot(n_6, _e119);
     let _e121 = out_2;
     return _e121;
 }
@@ -5476,10 +5476,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_41 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
-    if (a_41 <= 4096f) {
-        let _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1f + sqrt((1f + (a_41 * a_41)))))));
+    let a_40 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
+    if (a_40 <= 4096f) {
+        let _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1f + sqrt((1f + (a_40 * a_40)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5497,15 +5497,15 @@ fn airlight_to_w(g_21: AirlightOuter, s_22: f32) -> f32 {
 
 fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
     let r_12 = (x_17 - 1.5707964f);
-    let z_18 = (r_12 * r_12);
-    let cos_r = (1f - ((z_18 / 2f) * (1f - ((z_18 / 12f) * (1f - ((z_18 / 30f) * (1f - ((z_18 / 56f) * (1f - ((z_18 / 90f) * (1f - ((z_18 / 132f) * (1f - (z_18 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_18 / 6f) * (1f - ((z_18 / 20f) * (1f - ((z_18 / 42f) * (1f - ((z_18 / 72f) * (1f - ((z_18 / 110f) * (1f - ((z_18 / 156f) * (1f - (z_18 / 210f)))))))))))))));
+    let z_19 = (r_12 * r_12);
+    let cos_r = (1f - ((z_19 / 2f) * (1f - ((z_19 / 12f) * (1f - ((z_19 / 30f) * (1f - ((z_19 / 56f) * (1f - ((z_19 / 90f) * (1f - ((z_19 / 132f) * (1f - (z_19 / 182f))))))))))))));
+    let sin_r = (r_12 * (1f - ((z_19 / 6f) * (1f - ((z_19 / 20f) * (1f - ((z_19 / 42f) * (1f - ((z_19 / 72f) * (1f - ((z_19 / 110f) * (1f - ((z_19 / 156f) * (1f - (z_19 / 210f)))))))))))))));
     return vec2<f32>(-(sin_r), cos_r);
 }
 
 fn airlight_acos(x_18: f32) -> f32 {
-    let a_42 = abs(x_18);
-    let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
+    let a_41 = abs(x_18);
+    let _e8 = airlight_atan(sqrt(((1f - a_41) / (1f + a_41))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
@@ -5515,12 +5515,12 @@ fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_43 = (cos_a * cos_g);
-    let b_20 = (sin_a * sin_g);
-    if (b_20 <= abs(a_43)) {
-        return select(0f, AIRLIGHT_PI, (a_43 > 0f));
+    let a_42 = (cos_a * cos_g);
+    let b_19 = (sin_a * sin_g);
+    if (b_19 <= abs(a_42)) {
+        return select(0f, AIRLIGHT_PI, (a_42 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_43) / b_20), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_42) / b_19), -1f, 1f));
     return _e18;
 }
 
@@ -5595,9 +5595,9 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     g_22.cos_a = cos_a_1;
     g_22.sin_a = _e41;
     let _e92 = airlight_angle(cos_a_1, _e41);
-    let first_1 = abs((1.5707964f - _e92));
-    cuts_2[0] = first_1;
-    cuts_2[1] = (AIRLIGHT_PI - first_1);
+    let first_2 = abs((1.5707964f - _e92));
+    cuts_2[0] = first_2;
+    cuts_2[1] = (AIRLIGHT_PI - first_2);
     if (s_25.surface_kind == AIRLIGHT_SURFACE_PHONG) {
         g_22.max_panels = AIRLIGHT_PHONG_PANELS;
         let _e105 = airlight_normalize(s_25.brdf_view);
@@ -5694,8 +5694,8 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_7 = select((AIRLIGHT_PI - first_1), AIRLIGHT_PI, (cos_a_1 < 0f));
-    g_22.gamma[0] = select(0f, first_1, (cos_a_1 < 0f));
+    let hi_7 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
+    g_22.gamma[0] = select(0f, first_2, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
         if (_e276 < 11u) {
@@ -6253,14 +6253,14 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_42 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
         let t_9 = (x_21 - f32(i_42));
-        let a_44 = g_25.gamma[i_42];
-        let b_21 = g_25.gamma[(i_42 + 1u)];
-        let w_8 = (b_21 - a_44);
-        let u_8 = (1f - t_9);
+        let a_43 = g_25.gamma[i_42];
+        let b_20 = g_25.gamma[(i_42 + 1u)];
+        let w_8 = (b_20 - a_43);
+        let u_9 = (1f - t_9);
         let smooth_a = (((g_25.smooth_edges >> i_42) & 1u) != 0u);
         let smooth_b = (((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
-        jacobian = (((w_8 * 6f) * t_9) * u_8);
+        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        jacobian = (((w_8 * 6f) * t_9) * u_9);
         let _e58 = gamma_1;
         if smooth_b {
             local_163 = !(smooth_a);
@@ -6268,7 +6268,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_44 + ((w_8 * t_9) * t_9)), _e66);
+        gamma_1 = select(_e58, (a_43 + ((w_8 * t_9) * t_9)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -6284,7 +6284,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_165 = false;
         }
         let _e85 = local_165;
-        gamma_1 = select(_e77, (b_21 - ((w_8 * u_8) * u_8)), _e85);
+        gamma_1 = select(_e77, (b_20 - ((w_8 * u_9) * u_9)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_166 = !(smooth_b);
@@ -6292,7 +6292,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_166 = false;
         }
         let _e94 = local_166;
-        jacobian = select(_e87, (w_8 * (u_8 + u_8)), _e94);
+        jacobian = select(_e87, (w_8 * (u_9 + u_9)), _e94);
         let _e96 = gamma_1;
         if smooth_a {
             local_167 = smooth_b;
@@ -6300,7 +6300,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_44 + (w_8 * t_9)), _e102);
+        gamma_1 = select(_e96, (a_43 + (w_8 * t_9)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -6326,10 +6326,10 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             let arc = (2f * (((g_25.cos_a * _e119.x) * _e124) + ((g_25.sin_a * _e119.y) * _e144.y)));
             weight = ((s_27.brdf_scale * 0.31830987f) * arc);
         } else {
-            let n_6 = s_27.brdf_exponent;
+            let n_7 = s_27.brdf_exponent;
             let _e161 = gamma_1;
-            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_6);
-            weight = (((s_27.brdf_scale * (n_6 + 2f)) * 0.15915494f) * _e162);
+            let _e162 = airlight_lobe_arcs(g_25, _e119, _e161, _e124, n_7);
+            weight = (((s_27.brdf_scale * (n_7 + 2f)) * 0.15915494f) * _e162);
         }
         p.dir = ((_e119.x * g_25.l) + (_e119.y * g_25.u));
         p.t_min = 0f;
@@ -6370,9 +6370,14 @@ fn airlight_azimuths(circle: bool, i_25: u32) -> vec3<f32> {
     return select(half_18[i_25], full[i_25], circle);
 }
 
+fn airlight_azimuths_even(j_5: u32) -> vec3<f32> {
+    let _e6 = airlight_azimuths(false, ((2u * j_5) + 1u));
+    return vec3<f32>(_e6.xy, (2f * _e6.z));
+}
+
 fn airlight_triangle_rule(i_26: u32) -> vec2<f32> {
-    let rule_3 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
-    return rule_3[i_26];
+    let rule_5 = array<vec2<f32>, 12>(vec2<f32>(-0.12523341f, 0.24914704f), vec2<f32>(0.12523341f, 0.24914704f), vec2<f32>(-0.3678315f, 0.23349254f), vec2<f32>(0.3678315f, 0.23349254f), vec2<f32>(-0.58731794f, 0.20316742f), vec2<f32>(0.58731794f, 0.20316742f), vec2<f32>(-0.76990265f, 0.16007833f), vec2<f32>(0.76990265f, 0.16007833f), vec2<f32>(-0.9041172f, 0.10693932f), vec2<f32>(0.9041172f, 0.10693932f), vec2<f32>(-0.98156065f, 0.047175337f), vec2<f32>(0.98156065f, 0.047175337f));
+    return rule_5[i_26];
 }
 
 fn airlight_area_phase(s_28: AirlightScene, mu_2: f32) -> f32 {
@@ -6575,8 +6580,8 @@ fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_45 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_45) / a_45), (a_45 > 0f)));
+            let a_44 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_44) / a_44), (a_44 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6642,10 +6647,10 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
         }
         {
             let _e28 = i_27;
-            let a_46 = o.corners[_e28];
+            let a_45 = o.corners[_e28];
             let _e31 = i_27;
-            let e_15 = (o.corners[((_e31 + 1u) % 4u)] - a_46);
-            let p_4 = (a_46 + (clamp((-(((a_46.x * e_15.x) + (a_46.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
+            let e_15 = (o.corners[((_e31 + 1u) % 4u)] - a_45);
+            let p_4 = (a_45 + (clamp((-(((a_45.x * e_15.x) + (a_45.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
             let distance_ = sqrt(((p_4.x * p_4.x) + (p_4.y * p_4.y)));
             let _e68 = nearest.x;
             if (distance_ < _e68) {
@@ -6720,7 +6725,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
         let _e42 = a_19;
         return _e42;
     }
-    let o_7 = s_36.origin;
+    let o_8 = s_36.origin;
     let _e45 = airlight_normalize(s_36.dir);
     a_19.d = _e45;
     let infinite_6 = ((s_36.flags & 1u) != 0u);
@@ -6729,233 +6734,236 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
     size = s_36.light_param_a;
     if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e72 = a_19.c;
-        let oc = (o_7 - _e72);
-        let b_22 = dot(oc, _e45);
+        let oc = (o_8 - _e72);
+        let b_21 = dot(oc, _e45);
         let _e77 = a_19.radius;
         let _e79 = a_19.radius;
         let k_12 = (dot(oc, oc) - (_e77 * _e79));
-        let disc_2 = ((b_22 * b_22) - k_12);
+        let _e84 = airlight_safe_length((oc - (b_21 * _e45)));
+        let _e86 = a_19.radius;
+        let _e89 = a_19.radius;
+        let disc_2 = ((_e86 - _e84) * (_e89 + _e84));
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_12 = (-(b_22) - select(root_2, -(root_2), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+            let q_12 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
             cut0_ = q_12;
             cut1_ = (k_12 / q_12);
             cut_count = 2u;
         }
     } else {
         if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e103 = airlight_normalize(s_36.light_axis);
-            a_19.n = _e103;
-            let _e106 = a_19.n;
-            let _e107 = airlight_basis_e1_(_e106);
-            a_19.a1_ = _e107;
+            let _e111 = airlight_normalize(s_36.light_axis);
+            a_19.n = _e111;
+            let _e114 = a_19.n;
+            let _e115 = airlight_basis_e1_(_e114);
+            a_19.a1_ = _e115;
         } else {
             a_19.eu = s_36.light_axis;
             a_19.ev = s_36.light_end;
-            let _e114 = a_19.eu;
-            let _e116 = a_19.ev;
-            let _e118 = airlight_normalize(cross(_e114, _e116));
-            a_19.n = _e118;
-            let _e121 = a_19.eu;
-            let _e122 = airlight_normalize(_e121);
-            a_19.a1_ = _e122;
-            let _e124 = a_19.eu;
-            let _e126 = a_19.ev;
-            let diagonal = (_e124 + _e126);
-            let _e129 = a_19.c;
-            centre = (_e129 + (0.5f * diagonal));
-            let _e133 = airlight_safe_length(diagonal);
-            let _e135 = a_19.eu;
-            let _e137 = a_19.ev;
-            let _e139 = airlight_safe_length((_e135 - _e137));
-            size = (0.5f * max(_e133, _e139));
+            let _e122 = a_19.eu;
+            let _e124 = a_19.ev;
+            let _e126 = airlight_normalize(cross(_e122, _e124));
+            a_19.n = _e126;
+            let _e129 = a_19.eu;
+            let _e130 = airlight_normalize(_e129);
+            a_19.a1_ = _e130;
+            let _e132 = a_19.eu;
+            let _e134 = a_19.ev;
+            let diagonal = (_e132 + _e134);
+            let _e137 = a_19.c;
+            centre = (_e137 + (0.5f * diagonal));
+            let _e141 = airlight_safe_length(diagonal);
+            let _e143 = a_19.eu;
+            let _e145 = a_19.ev;
+            let _e147 = airlight_safe_length((_e143 - _e145));
+            size = (0.5f * max(_e141, _e147));
         }
-        let _e145 = a_19.n;
-        let _e147 = a_19.a1_;
-        a_19.a2_ = cross(_e145, _e147);
-        let _e151 = a_19.a1_;
-        let _e154 = a_19.a2_;
-        let _e157 = a_19.n;
-        a_19.dirs = vec3<f32>(dot(_e151, _e45), dot(_e154, _e45), dot(_e157, _e45));
-        let _e161 = a_19.c;
-        let _e164 = a_19.n;
-        let _e167 = a_19.n;
-        cut0_ = (dot((_e161 - o_7), _e164) / dot(_e45, _e167));
+        let _e153 = a_19.n;
+        let _e155 = a_19.a1_;
+        a_19.a2_ = cross(_e153, _e155);
+        let _e159 = a_19.a1_;
+        let _e162 = a_19.a2_;
+        let _e165 = a_19.n;
+        a_19.dirs = vec3<f32>(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
+        let _e169 = a_19.c;
+        let _e172 = a_19.n;
+        let _e175 = a_19.n;
+        cut0_ = (dot((_e169 - o_8), _e172) / dot(_e45, _e175));
         cut_count = 1u;
-        let _e171 = a_19;
-        let _e172 = cut0_;
-        let _e175 = airlight_outline_at(s_36, _e171, (o_7 + (_e172 * _e45)));
-        let _e176 = airlight_outline_distances(_e175);
-        distances = _e176;
-        let _e178 = a_19.n;
-        front = select(1f, -1f, (dot(_e45, _e178) < 0f));
+        let _e179 = a_19;
+        let _e180 = cut0_;
+        let _e183 = airlight_outline_at(s_36, _e179, (o_8 + (_e180 * _e45)));
+        let _e184 = airlight_outline_distances(_e183);
+        distances = _e184;
+        let _e186 = a_19.n;
+        front = select(1f, -1f, (dot(_e45, _e186) < 0f));
     }
-    let _e185 = size;
-    if !((_e185 > 0f)) {
+    let _e193 = size;
+    if !((_e193 > 0f)) {
         a_19.outcome = 1u;
-        let _e191 = a_19;
-        return _e191;
+        let _e199 = a_19;
+        return _e199;
     }
-    let _e192 = centre;
-    let to_centre = (_e192 - o_7);
+    let _e200 = centre;
+    let to_centre = (_e200 - o_8);
     a_19.x_h = dot(to_centre, _e45);
-    let _e197 = a_19.x_h;
-    let _e200 = airlight_safe_length((to_centre - (_e197 * _e45)));
-    let _e203 = size;
-    let _e204 = size;
-    a_19.h_eff = sqrt(((_e200 * _e200) + (_e203 * _e204)));
+    let _e205 = a_19.x_h;
+    let _e208 = airlight_safe_length((to_centre - (_e205 * _e45)));
+    let _e211 = size;
+    let _e212 = size;
+    a_19.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
     t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
     if (s_36.sigma_t > 0f) {
-        let _e214 = centre;
-        let _e218 = airlight_safe_length((_e214 - (o_7 + (t0_2 * _e45))));
-        let _e220 = size;
-        let reach_1 = (((t0_2 + _e218) + _e220) - (-15.942385f / s_36.sigma_t));
+        let _e222 = centre;
+        let _e226 = airlight_safe_length((_e222 - (o_8 + (t0_2 * _e45))));
+        let _e228 = size;
+        let reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385f / s_36.sigma_t));
         if !(infinite_6) {
-            let _e229 = t_end_1;
-            local_173 = (reach_1 < _e229);
+            let _e237 = t_end_1;
+            local_173 = (reach_1 < _e237);
         } else {
             local_173 = true;
         }
-        let _e232 = local_173;
-        if _e232 {
+        let _e240 = local_173;
+        if _e240 {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    let _e234 = a_19;
-    let _e236 = airlight_area_theta(_e234, t0_2, false);
-    let _e237 = a_19;
-    let _e238 = t_end_1;
-    let _e239 = end_infinite;
-    let _e240 = airlight_area_theta(_e237, _e238, _e239);
-    let _e242 = a_19.x_h;
-    let _e244 = a_19.x_h;
-    let _e245 = cut0_;
-    let _e246 = cut_count;
-    let _e251 = a_19.x_h;
-    let _e252 = cut1_;
-    let _e253 = cut_count;
-    let _e258 = a_19.x_h;
-    cuts_4 = array<f32, 4>(_e242, select(_e244, _e245, (_e246 > 0u)), select(_e251, _e252, (_e253 > 1u)), _e258);
-    let _e265 = a_19.lobes.y;
-    if (_e265 > 0f) {
-        let _e268 = scale_1;
-        let _e271 = a_19.lobes.y;
-        scale_1 = min(_e268, _e271);
+    let _e242 = a_19;
+    let _e244 = airlight_area_theta(_e242, t0_2, false);
+    let _e245 = a_19;
+    let _e246 = t_end_1;
+    let _e247 = end_infinite;
+    let _e248 = airlight_area_theta(_e245, _e246, _e247);
+    let _e250 = a_19.x_h;
+    let _e252 = a_19.x_h;
+    let _e253 = cut0_;
+    let _e254 = cut_count;
+    let _e259 = a_19.x_h;
+    let _e260 = cut1_;
+    let _e261 = cut_count;
+    let _e266 = a_19.x_h;
+    cuts_4 = array<f32, 4>(_e250, select(_e252, _e253, (_e254 > 0u)), select(_e259, _e260, (_e261 > 1u)), _e266);
+    let _e273 = a_19.lobes.y;
+    if (_e273 > 0f) {
+        let _e276 = scale_1;
+        let _e279 = a_19.lobes.y;
+        scale_1 = min(_e276, _e279);
     }
-    let _e275 = a_19.lobes.w;
-    if (_e275 > 0f) {
-        let _e278 = scale_1;
-        let _e281 = a_19.lobes.w;
-        scale_1 = min(_e278, _e281);
+    let _e283 = a_19.lobes.w;
+    if (_e283 > 0f) {
+        let _e286 = scale_1;
+        let _e289 = a_19.lobes.w;
+        scale_1 = min(_e286, _e289);
     }
-    let _e283 = cut_count;
-    if (_e283 == 1u) {
-        let _e288 = scale_1;
-        local_174 = (_e288 < 1f);
+    let _e291 = cut_count;
+    if (_e291 == 1u) {
+        let _e296 = scale_1;
+        local_174 = (_e296 < 1f);
     } else {
         local_174 = false;
     }
-    let _e292 = local_174;
-    if _e292 {
-        let _e295 = cut0_;
-        local_175 = (_e295 >= t0_2);
+    let _e300 = local_174;
+    if _e300 {
+        let _e303 = cut0_;
+        local_175 = (_e303 >= t0_2);
     } else {
         local_175 = false;
     }
-    let _e298 = local_175;
-    if _e298 {
-        let _e301 = end_infinite;
-        if !(_e301) {
-            let _e305 = cut0_;
-            let _e306 = t_end_1;
-            local_177 = (_e305 <= _e306);
+    let _e306 = local_175;
+    if _e306 {
+        let _e309 = end_infinite;
+        if !(_e309) {
+            let _e313 = cut0_;
+            let _e314 = t_end_1;
+            local_177 = (_e313 <= _e314);
         } else {
             local_177 = true;
         }
-        let _e309 = local_177;
-        local_176 = _e309;
+        let _e317 = local_177;
+        local_176 = _e317;
     } else {
         local_176 = false;
     }
-    let _e311 = local_176;
-    if _e311 {
+    let _e319 = local_176;
+    if _e319 {
         loop {
-            let _e314 = i_28;
-            if (_e314 < 2u) {
+            let _e322 = i_28;
+            if (_e322 < 2u) {
             } else {
                 break;
             }
             {
-                let _e318 = i_28;
-                let _e320 = distances[_e318];
-                let _e322 = scale_1;
-                let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e320) / _e322);
-                let _e325 = a_19.h_eff;
-                if (reach_2 < _e325) {
-                    let _e327 = i_28;
-                    let _e331 = cut0_;
-                    let _e332 = front;
-                    cuts_4[(_e327 + 2u)] = (_e331 + (_e332 * reach_2));
+                let _e326 = i_28;
+                let _e328 = distances[_e326];
+                let _e330 = scale_1;
+                let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e328) / _e330);
+                let _e333 = a_19.h_eff;
+                if (reach_2 < _e333) {
+                    let _e335 = i_28;
+                    let _e339 = cut0_;
+                    let _e340 = front;
+                    cuts_4[(_e335 + 2u)] = (_e339 + (_e340 * reach_2));
                 }
             }
             continuing {
-                let _e336 = i_28;
-                i_28 = (_e336 + 1u);
+                let _e344 = i_28;
+                i_28 = (_e344 + 1u);
             }
         }
     }
     loop {
-        let _e340 = i_29;
-        if (_e340 < 4u) {
+        let _e348 = i_29;
+        if (_e348 < 4u) {
         } else {
             break;
         }
         {
-            let _e343 = i_29;
-            let t_10 = cuts_4[_e343];
-            let _e346 = i_29;
-            cuts_4[_e346] = _e236;
-            let _e348 = airlight_is_finite(t_10);
-            if _e348 {
+            let _e351 = i_29;
+            let t_10 = cuts_4[_e351];
+            let _e354 = i_29;
+            cuts_4[_e354] = _e244;
+            let _e356 = airlight_is_finite(t_10);
+            if _e356 {
                 local_178 = (t_10 >= t0_2);
             } else {
                 local_178 = false;
             }
-            let _e353 = local_178;
-            if _e353 {
-                let _e356 = end_infinite;
-                if !(_e356) {
-                    let _e360 = t_end_1;
-                    local_180 = (t_10 <= _e360);
+            let _e361 = local_178;
+            if _e361 {
+                let _e364 = end_infinite;
+                if !(_e364) {
+                    let _e368 = t_end_1;
+                    local_180 = (t_10 <= _e368);
                 } else {
                     local_180 = true;
                 }
-                let _e363 = local_180;
-                local_179 = _e363;
+                let _e371 = local_180;
+                local_179 = _e371;
             } else {
                 local_179 = false;
             }
-            let _e365 = local_179;
-            if _e365 {
-                let _e366 = i_29;
-                let _e368 = a_19;
-                let _e370 = airlight_area_theta(_e368, t_10, false);
-                cuts_4[_e366] = _e370;
+            let _e373 = local_179;
+            if _e373 {
+                let _e374 = i_29;
+                let _e376 = a_19;
+                let _e378 = airlight_area_theta(_e376, t_10, false);
+                cuts_4[_e374] = _e378;
             }
         }
         continuing {
-            let _e372 = i_29;
-            i_29 = (_e372 + 1u);
+            let _e380 = i_29;
+            i_29 = (_e380 + 1u);
         }
     }
-    let _e374 = cuts_4;
-    let _e375 = airlight_edges_between(_e236, _e240, _e374);
-    a_19.edges = _e375.at;
-    a_19.panels = _e375.panels;
-    let _e380 = a_19;
-    return _e380;
+    let _e382 = cuts_4;
+    let _e383 = airlight_edges_between(_e244, _e248, _e382);
+    a_19.edges = _e383.at;
+    a_19.panels = _e383.panels;
+    let _e388 = a_19;
+    return _e388;
 }
 
 fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
@@ -6968,11 +6976,11 @@ fn airlight_flat_node(s_37: AirlightScene, a_20: AirlightArea, above_1: Airlight
     let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     let dr = (above_1.rho0_ / (_e8.x * _e8.x));
     let p_5 = (above_1.off + (r_13 * e_3));
-    let z_19 = above_1.z;
-    let dist = sqrt((((z_19 * z_19) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
+    let z_20 = above_1.z;
+    let dist = sqrt((((z_20 * z_20) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
     let inv_5 = (1f / dist);
-    let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_19 * a_20.dirs.z)) * inv_5));
+    let cos_ = (z_20 * inv_5);
+    let _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_20 * a_20.dirs.z)) * inv_5));
     let _e52 = airlight_emitted(s_37, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
@@ -7058,19 +7066,19 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> 
         }
         {
             let _e40 = i_30;
-            let a_47 = o_1.corners[_e40];
+            let a_46 = o_1.corners[_e40];
             let _e43 = i_30;
-            let e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_47);
+            let e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_46);
             let _e50 = inside;
             if _e50 {
-                local_181 = ((((q_4.x - a_47.x) * e_16.y) - ((q_4.y - a_47.y) * e_16.x)) <= 0f);
+                local_181 = ((((q_4.x - a_46.x) * e_16.y) - ((q_4.y - a_46.y) * e_16.x)) <= 0f);
             } else {
                 local_181 = false;
             }
             let _e67 = local_181;
             inside = _e67;
-            let t_11 = clamp(((((q_4.x - a_47.x) * e_16.x) + ((q_4.y - a_47.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0f, 1f);
-            let p_6 = (a_47 + (t_11 * e_16));
+            let t_11 = clamp(((((q_4.x - a_46.x) * e_16.x) + ((q_4.y - a_46.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0f, 1f);
+            let p_6 = (a_46 + (t_11 * e_16));
             let dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
             let _e107 = best;
             if (dd < _e107) {
@@ -7094,30 +7102,30 @@ fn airlight_outline_nearest(o_2: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
 }
 
 fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
-    var j_5: u32 = 0u;
+    var j_6: u32 = 0u;
     var local_182: bool;
     var local_183: bool;
     var local_184: bool;
 
     let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
-        let _e13 = j_5;
+        let _e13 = j_6;
         if (_e13 < 2u) {
         } else {
             break;
         }
         {
-            let _e20 = j_5;
-            let lobe_4 = select(a_22.lobes.xy, a_22.lobes.zw, (_e20 == 1u));
-            let p_7 = (lobe_4.x * a_22.dirs);
-            if (lobe_4.y > 0f) {
+            let _e20 = j_6;
+            let lobe_5 = select(a_22.lobes.xy, a_22.lobes.zw, (_e20 == 1u));
+            let p_7 = (lobe_5.x * a_22.dirs);
+            if (lobe_5.y > 0f) {
                 local_182 = (p_7.z < 0f);
             } else {
                 local_182 = false;
             }
             let _e36 = local_182;
             if _e36 {
-                local_183 = (lobe_4.y < (_e10 + _e10));
+                local_183 = (lobe_5.y < (_e10 + _e10));
             } else {
                 local_183 = false;
             }
@@ -7131,27 +7139,27 @@ fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centr
                 let on_emitter = (length((_e49 - q_13)) <= (0.0000019073486f * ((length(q_13) + size_1) + z_11)));
                 if !(on_emitter) {
                     let _e69 = airlight_acos(cos_1);
-                    local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_4.y));
+                    local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                 } else {
                     local_184 = true;
                 }
                 let _e75 = local_184;
                 if _e75 {
-                    return AirlightFlatLobe(p_7, lobe_4.x, lobe_4.y, l_4, q_13, on_emitter);
+                    return AirlightFlatLobe(p_7, lobe_5.x, lobe_5.y, l_4, q_13, on_emitter);
                 }
             }
         }
         continuing {
-            let _e80 = j_5;
-            j_5 = (_e80 + 1u);
+            let _e80 = j_6;
+            j_6 = (_e80 + 1u);
         }
     }
     return AirlightFlatLobe(vec3(0f), 1f, 0f, 0f, vec2(0f), false);
 }
 
 fn airlight_radial_rule(i_31: u32) -> vec2<f32> {
-    let rule_4 = array<vec2<f32>, 16>(vec2<f32>(-0.09501251f, 0.1894506f), vec2<f32>(0.09501251f, 0.1894506f), vec2<f32>(-0.28160354f, 0.18260342f), vec2<f32>(0.28160354f, 0.18260342f), vec2<f32>(-0.45801678f, 0.16915652f), vec2<f32>(0.45801678f, 0.16915652f), vec2<f32>(-0.61787623f, 0.14959599f), vec2<f32>(0.61787623f, 0.14959599f), vec2<f32>(-0.7554044f, 0.12462897f), vec2<f32>(0.7554044f, 0.12462897f), vec2<f32>(-0.8656312f, 0.09515851f), vec2<f32>(0.8656312f, 0.09515851f), vec2<f32>(-0.944575f, 0.062253524f), vec2<f32>(0.944575f, 0.062253524f), vec2<f32>(-0.9894009f, 0.02715246f), vec2<f32>(0.9894009f, 0.02715246f));
-    return rule_4[i_31];
+    let rule_6 = array<vec2<f32>, 16>(vec2<f32>(-0.09501251f, 0.1894506f), vec2<f32>(0.09501251f, 0.1894506f), vec2<f32>(-0.28160354f, 0.18260342f), vec2<f32>(0.28160354f, 0.18260342f), vec2<f32>(-0.45801678f, 0.16915652f), vec2<f32>(0.45801678f, 0.16915652f), vec2<f32>(-0.61787623f, 0.14959599f), vec2<f32>(0.61787623f, 0.14959599f), vec2<f32>(-0.7554044f, 0.12462897f), vec2<f32>(0.7554044f, 0.12462897f), vec2<f32>(-0.8656312f, 0.09515851f), vec2<f32>(0.8656312f, 0.09515851f), vec2<f32>(-0.944575f, 0.062253524f), vec2<f32>(0.944575f, 0.062253524f), vec2<f32>(-0.9894009f, 0.02715246f), vec2<f32>(0.9894009f, 0.02715246f));
+    return rule_6[i_31];
 }
 
 fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
@@ -7184,17 +7192,17 @@ fn airlight_outline_chord(o_4: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
 
     if (o_4.radius > 0f) {
         let qc_1 = (q_7 - o_4.corners[0]);
-        let a_48 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        let a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        let b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
         let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        let disc_3 = ((b_23 * b_23) - (a_48 * k_13));
+        let disc_3 = ((b_22 * b_22) - (a_47 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_12 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
-        let r1_2 = (t_12 / a_48);
+        let t_12 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+        let r1_2 = (t_12 / a_47);
         let r2_4 = (k_13 / t_12);
         let hi_8 = max(r1_2, r2_4);
         if !((hi_8 > 0f)) {
@@ -7333,17 +7341,17 @@ fn airlight_edge_rule(a_24: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> Airligh
     return AirlightEdgeRule(h_9, t_13, reach_3, _e27, _e29);
 }
 
-fn airlight_edge_node(rule_2: AirlightEdgeRule, j_6: u32) -> vec4<f32> {
-    let _e2 = airlight_triangle_rule(j_6);
+fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
+    let _e2 = airlight_triangle_rule(j_7);
     let hw_4 = (0.5f * (rule_2.last - rule_2.first));
     let _e16 = airlight_edge_at(rule_2, ((0.5f * (rule_2.first + rule_2.last)) + (hw_4 * _e2.x)));
     return vec4<f32>(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
 fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
-    let a_49 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
-    let b_24 = vec4<f32>(min(a_49.x, a_49.z), min(a_49.y, a_49.w), max(a_49.x, a_49.z), max(a_49.y, a_49.w));
-    return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
+    let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+    let b_23 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
+    return vec4<f32>(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
 }
 
 fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
@@ -7362,15 +7370,15 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
         }
         {
             let _e18 = i_32;
-            let a_50 = y_6[_e18];
+            let a_49 = y_6[_e18];
             let _e20 = i_32;
-            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_50);
+            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_49);
             let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if (den_1 == 0f) {
                 continue;
             }
-            let r_15 = (((a_50.x * d_5.y) - (a_50.y * d_5.x)) / den_1);
-            let along = (((a_50.x * e_8.y) - (a_50.y * e_8.x)) / den_1);
+            let r_15 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
+            let along = (((a_49.x * e_8.y) - (a_49.y * e_8.x)) / den_1);
             if (r_15 > 0f) {
                 local_185 = (along >= 0f);
             } else {
@@ -7384,9 +7392,9 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
             }
             let _e65 = local_186;
             if _e65 {
-                let n_7 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
-                let h_10 = dot(n_7, a_50);
-                let outward = select(n_7, -(n_7), (h_10 < 0f));
+                let n_8 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
+                let h_10 = dot(n_8, a_49);
+                let outward = select(n_8, -(n_8), (h_10 < 0f));
                 let _e79 = nearest_2;
                 if (r_15 < _e79) {
                     nearest_2 = r_15;
@@ -7409,23 +7417,88 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
     return _e90;
 }
 
+fn airlight_line_beta(rule_3: AirlightEdgeRule, cs_2: vec2<f32>) -> f32 {
+    let m_14 = vec2<f32>(rule_3.t.y, -(rule_3.t.x));
+    let _e17 = airlight_atan2_((dot(cs_2, rule_3.t) * rule_3.h), (max(dot(cs_2, m_14), 0f) * rule_3.reach));
+    return _e17;
+}
+
 fn airlight_mercator_cut(k_8: u32) -> f32 {
     let cuts_5 = array<f32, 8>(-30f, -14f, -6f, -2f, 2f, 6f, 14f, 30f);
     return cuts_5[k_8];
 }
 
-fn airlight_mercator(n_3: vec2<f32>, cs_2: vec2<f32>) -> f32 {
+fn airlight_mercator(n_3: vec2<f32>, cs_3: vec2<f32>) -> f32 {
     let _e3 = airlight_mercator_cut(7u);
-    let tangent = (((cs_2.y * n_3.x) - (cs_2.x * n_3.y)) / max(((cs_2.x * n_3.x) + (cs_2.y * n_3.y)), 0.000000000000000000000000000001f));
+    let tangent = (((cs_3.y * n_3.x) - (cs_3.x * n_3.y)) / max(((cs_3.x * n_3.x) + (cs_3.y * n_3.y)), 0.000000000000000000000000000001f));
     let _e21 = airlight_asinh(tangent);
     return clamp(_e21, -(_e3), _e3);
 }
 
-fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe) -> f32 {
+fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
     var sum_9: f32 = 0f;
+    var k_9: u32 = 0u;
+    var j_8: u32;
+
+    let t_14 = vec2<f32>(-(n_4.y), n_4.x);
+    let _e13 = airlight_mercator(n_4, first_1);
+    let _e14 = airlight_mercator(n_4, last);
+    loop {
+        let _e19 = k_9;
+        if (_e19 < 7u) {
+        } else {
+            break;
+        }
+        {
+            let _e22 = k_9;
+            let _e23 = airlight_mercator_cut(_e22);
+            let lo_8 = max(_e13, _e23);
+            let _e25 = k_9;
+            let _e28 = airlight_mercator_cut((_e25 + 1u));
+            let hi_9 = min(_e14, _e28);
+            if !((lo_8 < hi_9)) {
+                continue;
+            }
+            let c_22 = ((lo_8 + hi_9) * 0.5f);
+            let hw_5 = ((hi_9 - lo_8) * 0.5f);
+            j_8 = 0u;
+            loop {
+                let _e40 = j_8;
+                if (_e40 < 12u) {
+                } else {
+                    break;
+                }
+                {
+                    let _e43 = j_8;
+                    let _e44 = airlight_triangle_rule(_e43);
+                    let x_38 = (c_22 + (hw_5 * _e44.x));
+                    let e_18 = exp(-(abs(x_38)));
+                    let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
+                    let th = ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18)));
+                    let _e66 = sum_9;
+                    let _e73 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * sech) + (t_14 * th)));
+                    sum_9 = (_e66 + (((_e44.y * hw_5) * sech) * _e73));
+                }
+                continuing {
+                    let _e77 = j_8;
+                    j_8 = (_e77 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e80 = k_9;
+            k_9 = (_e80 + 1u);
+        }
+    }
+    let _e82 = sum_9;
+    return _e82;
+}
+
+fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
+    var sum_10: f32 = 0f;
     var m_4: vec2<f32> = vec2<f32>(1f, 0f);
     var t_4: vec2<f32>;
-    var j_7: u32 = 0u;
+    var j_9: u32 = 0u;
     var i_33: u32 = 0u;
     var i_34: u32 = 0u;
     var area: vec4<f32> = vec4(0f);
@@ -7433,41 +7506,38 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
     var i_36: u32 = 0u;
     var ya: vec2<f32>;
     var yb: vec2<f32>;
-    var j_8: u32;
-    var i_37: u32 = 0u;
-    var j_9: u32;
-    var merc_first: f32;
-    var merc_last: f32;
-    var local_187: bool;
-    var a_25: f32;
-    var b_15: f32;
     var j_10: u32;
-    var k_9: u32;
+    var i_37: u32 = 0u;
     var j_11: u32;
+    var merc_first: vec2<f32>;
+    var merc_last: vec2<f32>;
+    var local_187: bool;
+    var rule_4: AirlightEdgeRule;
+    var j_12: u32;
 
-    let _e5 = airlight_basis_e1_(lobe_3.p);
-    let v_9 = cross(lobe_3.p, _e5);
-    let q_14 = lobe_3.q;
-    if (o_6.radius > 0f) {
-        if lobe_3.on_emitter {
-            let dq_2 = (q_14 - o_6.corners[0]);
+    let _e5 = airlight_basis_e1_(lobe_4.p);
+    let v_10 = cross(lobe_4.p, _e5);
+    let q_14 = lobe_4.q;
+    if (o_7.radius > 0f) {
+        if lobe_4.on_emitter {
+            let dq_2 = (q_14 - o_7.corners[0]);
             let d_6 = sqrt(dot(dq_2, dq_2));
             if (d_6 > 0f) {
                 m_4 = (dq_2 / vec2(d_6));
             }
             let _e31 = m_4;
-            let rim_e = ((o_6.corners[0] + (o_6.radius * _e31)) - q_14);
-            let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_9.xy));
+            let rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_14);
+            let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_10.xy));
             let _e41 = m_4.y;
             let _e46 = m_4.x;
             let _e51 = m_4.y;
             let _e56 = m_4.x;
-            let along_rim = vec2<f32>(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_9.x) + (_e56 * v_9.y)));
+            let along_rim = vec2<f32>(((-(_e41) * _e5.x) + (_e46 * _e5.y)), ((-(_e51) * v_10.x) + (_e56 * v_10.y)));
             let tl = sqrt(dot(along_rim, along_rim));
             t_4 = (along_rim / vec2(tl));
             let _e66 = m_4;
             let _e69 = m_4;
-            let outward_1 = vec2<f32>(dot(_e66, _e5.xy), dot(_e69, v_9.xy));
+            let outward_1 = vec2<f32>(dot(_e66, _e5.xy), dot(_e69, v_10.xy));
             let _e74 = t_4.y;
             let _e78 = t_4.x;
             if (((_e74 * outward_1.x) - (_e78 * outward_1.y)) < 0f) {
@@ -7477,12 +7547,12 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
             let _e87 = t_4.y;
             let _e91 = t_4.x;
             let h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
-            let half_chord = (tl * sqrt(max(((o_6.radius - d_6) * (o_6.radius + d_6)), 0f)));
-            let width_5 = min((lobe_3.l * lobe_3.scale), half_chord);
+            let half_chord = (tl * sqrt(max(((o_7.radius - d_6) * (o_7.radius + d_6)), 0f)));
+            let width_5 = min((lobe_4.l * lobe_4.scale), half_chord);
             let _e108 = t_4;
-            let rule_5 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
+            let rule_7 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
             loop {
-                let _e118 = j_7;
+                let _e118 = j_9;
                 if (_e118 < 16u) {
                 } else {
                     break;
@@ -7491,21 +7561,21 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
                     if !((h_11 > 0f)) {
                         break;
                     }
-                    let _e124 = j_7;
+                    let _e124 = j_9;
                     let _e125 = airlight_radial_rule(_e124);
-                    let _e129 = airlight_edge_at(rule_5, (1.5707964f * _e125.x));
-                    let _e130 = sum_9;
-                    let _e139 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e129.xy);
-                    sum_9 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
+                    let _e129 = airlight_edge_at(rule_7, (1.5707964f * _e125.x));
+                    let _e130 = sum_10;
+                    let _e139 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    sum_10 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
-                    let _e143 = j_7;
-                    j_7 = (_e143 + 1u);
+                    let _e143 = j_9;
+                    j_9 = (_e143 + 1u);
                 }
             }
             let _e146 = t_4.y;
             let _e148 = t_4.x;
-            let n_8 = vec2<f32>(_e146, -(_e148));
+            let n_9 = vec2<f32>(_e146, -(_e148));
             loop {
                 let _e153 = i_33;
                 if (_e153 < 32u) {
@@ -7515,27 +7585,27 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
                 {
                     let _e157 = i_33;
                     let _e158 = airlight_azimuths(false, _e157);
-                    let _e159 = sum_9;
+                    let _e159 = sum_10;
                     let _e163 = t_4;
-                    let _e168 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, -(((n_8 * _e158.x) + (_e163 * _e158.y))));
-                    sum_9 = (_e159 + (_e158.z * _e168));
+                    let _e168 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    sum_10 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
                     let _e172 = i_33;
                     i_33 = (_e172 + 1u);
                 }
             }
-            let _e174 = sum_9;
+            let _e174 = sum_10;
             return _e174;
         }
-        let d_7 = (o_6.corners[0] - q_14);
+        let d_7 = (o_7.corners[0] - q_14);
         let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
-        let sb_1 = (o_6.radius / dq_3);
-        let cb = (sqrt(((dq_3 - o_6.radius) * (dq_3 + o_6.radius))) / dq_3);
-        let _e195 = airlight_lobe_azimuth(_e5, v_9, d_7);
-        let _e207 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
+        let sb_1 = (o_7.radius / dq_3);
+        let cb = (sqrt(((dq_3 - o_7.radius) * (dq_3 + o_7.radius))) / dq_3);
+        let _e195 = airlight_lobe_azimuth(_e5, v_10, d_7);
+        let _e207 = airlight_lobe_azimuth(_e5, v_10, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
         let _e209 = airlight_wrap_turn((_e207 - _e195));
-        let _e221 = airlight_lobe_azimuth(_e5, v_9, vec2<f32>(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
+        let _e221 = airlight_lobe_azimuth(_e5, v_10, vec2<f32>(((d_7.x * cb) + (d_7.y * sb_1)), ((d_7.y * cb) - (d_7.x * sb_1))));
         let _e223 = airlight_wrap_turn((_e221 - _e195));
         let centre_2 = (_e195 + ((_e209 + _e223) * 0.5f));
         let half_19 = (abs((_e209 - _e223)) * 0.5f);
@@ -7548,21 +7618,21 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
             {
                 let _e238 = i_34;
                 let _e239 = airlight_azimuths(false, _e238);
-                let _e240 = sum_9;
+                let _e240 = sum_10;
                 let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                let _e249 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e248);
-                sum_9 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
+                let _e249 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                sum_10 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
                 let _e253 = i_34;
                 i_34 = (_e253 + 1u);
             }
         }
-        let _e255 = sum_9;
+        let _e255 = sum_10;
         return _e255;
     }
-    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_6.corners[0] - q_14), _e5.xy), dot((o_6.corners[0] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[1] - q_14), _e5.xy), dot((o_6.corners[1] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[2] - q_14), _e5.xy), dot((o_6.corners[2] - q_14), v_9.xy)), vec2<f32>(dot((o_6.corners[3] - q_14), _e5.xy), dot((o_6.corners[3] - q_14), v_9.xy)));
-    if lobe_3.on_emitter {
+    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_7.corners[0] - q_14), _e5.xy), dot((o_7.corners[0] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[1] - q_14), _e5.xy), dot((o_7.corners[1] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[2] - q_14), _e5.xy), dot((o_7.corners[2] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[3] - q_14), _e5.xy), dot((o_7.corners[3] - q_14), v_10.xy)));
+    if lobe_4.on_emitter {
         loop {
             let _e307 = i_35;
             if (_e307 < 4u) {
@@ -7571,11 +7641,11 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
             }
             {
                 let _e310 = i_35;
-                let b_25 = y_14[((_e310 + 1u) % 4u)];
+                let b_24 = y_14[((_e310 + 1u) % 4u)];
                 let _e316 = i_35;
                 let _e318 = i_35;
                 let _e323 = i_35;
-                area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
+                area[_e316] = ((y_14[_e318].x * b_24.y) - (y_14[_e323].y * b_24.x));
             }
             continuing {
                 let _e330 = i_35;
@@ -7611,24 +7681,24 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
                 }
                 let _e375 = ya;
                 let _e376 = yb;
-                let _e380 = airlight_edge_rule(_e375, _e376, (lobe_3.l * lobe_3.scale));
-                j_8 = 0u;
+                let _e380 = airlight_edge_rule(_e375, _e376, (lobe_4.l * lobe_4.scale));
+                j_10 = 0u;
                 loop {
-                    let _e383 = j_8;
+                    let _e383 = j_10;
                     if (_e383 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e386 = j_8;
+                        let _e386 = j_10;
                         let _e387 = airlight_edge_node(_e380, _e386);
-                        let _e388 = sum_9;
-                        let _e391 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e387.xy);
-                        sum_9 = (_e388 + (_e387.w * _e391));
+                        let _e388 = sum_10;
+                        let _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        sum_10 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
-                        let _e395 = j_8;
-                        j_8 = (_e395 + 1u);
+                        let _e395 = j_10;
+                        j_10 = (_e395 + 1u);
                     }
                 }
             }
@@ -7637,17 +7707,17 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
                 i_36 = (_e398 + 1u);
             }
         }
-        let _e400 = sum_9;
+        let _e400 = sum_10;
         return _e400;
     }
-    let _e409 = airlight_lobe_azimuth(_e5, v_9, ((0.5f * (o_6.corners[0] + o_6.corners[2])) - q_14));
-    let _e413 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[0] - q_14));
+    let _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5f * (o_7.corners[0] + o_7.corners[2])) - q_14));
+    let _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_14));
     let _e415 = airlight_wrap_turn((_e413 - _e409));
-    let _e419 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[1] - q_14));
+    let _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_14));
     let _e421 = airlight_wrap_turn((_e419 - _e409));
-    let _e425 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[2] - q_14));
+    let _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_14));
     let _e427 = airlight_wrap_turn((_e425 - _e409));
-    let _e431 = airlight_lobe_azimuth(_e5, v_9, (o_6.corners[3] - q_14));
+    let _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_14));
     let _e433 = airlight_wrap_turn((_e431 - _e409));
     let _e435 = airlight_sort4_(vec4<f32>(_e415, _e421, _e427, _e433));
     loop {
@@ -7658,182 +7728,137 @@ fn airlight_flat_about_lobe(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline
         }
         {
             let _e441 = i_37;
-            let first_2 = (_e409 + _e435[_e441]);
+            let first_3 = (_e409 + _e435[_e441]);
             let _e444 = i_37;
-            let last_1 = (_e409 + _e435[(_e444 + 1u)]);
-            let _e452 = airlight_cos_sin_turns((0.5f * (first_2 + last_1)));
+            let last_2 = (_e409 + _e435[(_e444 + 1u)]);
+            let _e452 = airlight_cos_sin_turns((0.5f * (first_3 + last_2)));
             let _e453 = airlight_chord_edges(y_14, _e452);
-            let n_9 = _e453.entry;
-            if all((n_9 == vec2(0f))) {
-                let c_22 = ((first_2 + last_1) * 0.5f);
-                let hw_5 = ((last_1 - first_2) * 0.5f);
-                j_9 = 0u;
+            let n_10 = _e453.entry;
+            if all((n_10 == vec2(0f))) {
+                let c_23 = ((first_3 + last_2) * 0.5f);
+                let hw_6 = ((last_2 - first_3) * 0.5f);
+                j_11 = 0u;
                 loop {
-                    let _e467 = j_9;
+                    let _e467 = j_11;
                     if (_e467 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e470 = j_9;
+                        let _e470 = j_11;
                         let _e471 = airlight_triangle_rule(_e470);
-                        let _e472 = sum_9;
-                        let _e478 = airlight_cos_sin_turns((c_22 + (hw_5 * _e471.x)));
-                        let _e479 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e478);
-                        sum_9 = (_e472 + ((_e471.y * hw_5) * _e479));
+                        let _e472 = sum_10;
+                        let _e478 = airlight_cos_sin_turns((c_23 + (hw_6 * _e471.x)));
+                        let _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
                     continuing {
-                        let _e483 = j_9;
-                        j_9 = (_e483 + 1u);
+                        let _e483 = j_11;
+                        j_11 = (_e483 + 1u);
                     }
                 }
                 continue;
             }
-            merc_first = first_2;
-            merc_last = last_1;
+            let _e485 = airlight_cos_sin_turns(first_3);
+            merc_first = _e485;
+            let _e487 = airlight_cos_sin_turns(last_2);
+            merc_last = _e487;
             let exit_h = _e453.exit_h;
+            let width_6 = (lobe_4.l * lobe_4.scale);
             if (exit_h > 0f) {
-                local_187 = (exit_h < (lobe_3.l * lobe_3.scale));
+                local_187 = (exit_h < width_6);
             } else {
                 local_187 = false;
             }
-            let _e497 = local_187;
-            if _e497 {
-                let half_20 = (0.5f * (first_2 + last_1));
-                a_25 = first_2;
-                b_15 = half_20;
-                let _e503 = airlight_cos_sin_turns(first_2);
-                let _e506 = airlight_cos_sin_turns(last_1);
-                if (dot(_e503, _e453.exit) < dot(_e506, _e453.exit)) {
-                    merc_first = half_20;
+            let _e499 = local_187;
+            if _e499 {
+                rule_4 = AirlightEdgeRule(exit_h, vec2<f32>(-(_e453.exit.y), _e453.exit.x), sqrt(((exit_h * exit_h) + (width_6 * width_6))), 0f, 0f);
+                let _e514 = merc_first;
+                let _e517 = merc_last;
+                if (dot(_e514, _e453.exit) < dot(_e517, _e453.exit)) {
+                    let _e522 = rule_4;
+                    let _e523 = merc_first;
+                    let _e524 = airlight_line_beta(_e522, _e523);
+                    rule_4.first = _e524;
+                    let _e526 = rule_4;
+                    let _e527 = airlight_line_beta(_e526, _e452);
+                    rule_4.last = _e527;
+                    merc_first = _e452;
                 } else {
-                    a_25 = half_20;
-                    b_15 = last_1;
-                    merc_last = half_20;
+                    let _e529 = rule_4;
+                    let _e530 = airlight_line_beta(_e529, _e452);
+                    rule_4.first = _e530;
+                    let _e532 = rule_4;
+                    let _e533 = merc_last;
+                    let _e534 = airlight_line_beta(_e532, _e533);
+                    rule_4.last = _e534;
+                    merc_last = _e452;
                 }
-                let t2_ = vec2<f32>(-(_e453.exit.y), _e453.exit.x);
-                let reach_4 = sqrt(((exit_h * exit_h) + (((lobe_3.l * lobe_3.scale) * lobe_3.l) * lobe_3.scale)));
-                let _e526 = a_25;
-                let _e527 = airlight_cos_sin_turns(_e526);
-                let _e528 = b_15;
-                let _e529 = airlight_cos_sin_turns(_e528);
-                let _e537 = airlight_atan2_((dot(_e527, t2_) * exit_h), (max(dot(_e527, _e453.exit), 0f) * reach_4));
-                let _e545 = airlight_atan2_((dot(_e529, t2_) * exit_h), (max(dot(_e529, _e453.exit), 0f) * reach_4));
-                let rule_6 = AirlightEdgeRule(exit_h, t2_, reach_4, _e537, _e545);
-                j_10 = 0u;
+                j_12 = 0u;
                 loop {
-                    let _e549 = j_10;
-                    if (_e549 < 12u) {
+                    let _e537 = j_12;
+                    if (_e537 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e552 = j_10;
-                        let _e553 = airlight_edge_node(rule_6, _e552);
-                        let _e554 = sum_9;
-                        let _e557 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, _e553.xy);
-                        sum_9 = (_e554 + (_e553.w * _e557));
+                        let _e540 = rule_4;
+                        let _e541 = j_12;
+                        let _e542 = airlight_edge_node(_e540, _e541);
+                        let _e543 = sum_10;
+                        let _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        sum_10 = (_e543 + (_e542.w * _e546));
                     }
                     continuing {
-                        let _e561 = j_10;
-                        j_10 = (_e561 + 1u);
+                        let _e550 = j_12;
+                        j_12 = (_e550 + 1u);
                     }
                 }
             }
-            let t_14 = vec2<f32>(-(n_9.y), n_9.x);
-            let _e567 = merc_first;
-            let _e568 = airlight_cos_sin_turns(_e567);
-            let _e569 = airlight_mercator(n_9, _e568);
-            let _e570 = merc_last;
-            let _e571 = airlight_cos_sin_turns(_e570);
-            let _e572 = airlight_mercator(n_9, _e571);
-            k_9 = 0u;
-            loop {
-                let _e575 = k_9;
-                if (_e575 < 7u) {
-                } else {
-                    break;
-                }
-                {
-                    let _e578 = k_9;
-                    let _e579 = airlight_mercator_cut(_e578);
-                    let lo_8 = max(_e569, _e579);
-                    let _e581 = k_9;
-                    let _e584 = airlight_mercator_cut((_e581 + 1u));
-                    let hi_9 = min(_e572, _e584);
-                    if !((lo_8 < hi_9)) {
-                        continue;
-                    }
-                    let c_23 = ((lo_8 + hi_9) * 0.5f);
-                    let hw_6 = ((hi_9 - lo_8) * 0.5f);
-                    j_11 = 0u;
-                    loop {
-                        let _e596 = j_11;
-                        if (_e596 < 12u) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e599 = j_11;
-                            let _e600 = airlight_triangle_rule(_e599);
-                            let x_38 = (c_23 + (hw_6 * _e600.x));
-                            let e_18 = exp(-(abs(x_38)));
-                            let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
-                            let th = ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18)));
-                            let _e622 = sum_9;
-                            let _e629 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, _e5, v_9, ((n_9 * sech) + (t_14 * th)));
-                            sum_9 = (_e622 + (((_e600.y * hw_6) * sech) * _e629));
-                        }
-                        continuing {
-                            let _e633 = j_11;
-                            j_11 = (_e633 + 1u);
-                        }
-                    }
-                }
-                continuing {
-                    let _e636 = k_9;
-                    k_9 = (_e636 + 1u);
-                }
-            }
+            let _e552 = sum_10;
+            let _e553 = merc_first;
+            let _e554 = merc_last;
+            let _e555 = airlight_mercator_wedge(s_42, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            sum_10 = (_e552 + _e555);
         }
         continuing {
-            let _e639 = i_37;
-            i_37 = (_e639 + 1u);
+            let _e558 = i_37;
+            i_37 = (_e558 + 1u);
         }
     }
-    let _e641 = sum_9;
-    return _e641;
+    let _e560 = sum_10;
+    return _e560;
 }
 
-fn airlight_disc(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_disc(s_43: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f32 {
     var local_188: bool;
     var local_189: bool;
-    var u_6: vec2<f32> = vec2(0f);
+    var u_7: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
-    var sum_10: f32 = 0f;
+    var sum_11: f32 = 0f;
     var i_38: u32 = 0u;
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel_1 = (x_26 - a_26.c);
-    let z_20 = dot(rel_1, a_26.n);
-    if !((z_20 > 0f)) {
+    let rel_1 = (x_26 - a_25.c);
+    let z_21 = dot(rel_1, a_25.n);
+    if !((z_21 > 0f)) {
         return 0f;
     }
-    let fx = dot(rel_1, a_26.a1_);
-    let fy_1 = dot(rel_1, a_26.a2_);
+    let fx = dot(rel_1, a_25.a1_);
+    let fy_1 = dot(rel_1, a_25.a2_);
     let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_26.radius;
+    let radius_2 = a_25.radius;
     let zero_2 = vec2(0f);
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    let _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let _e30 = airlight_flat_lobe(a_25, z_21, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_42, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_42, (radius_2 - rf), z_20);
+            let _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_21);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -7844,12 +7869,12 @@ fn airlight_disc(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
         local_188 = false;
     }
     let inside_2 = local_188;
-    let _e54 = airlight_above(z_20, vec2(0f));
+    let _e54 = airlight_above(z_21, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
-        u_6 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
-        let _e63 = u_6;
-        let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
+        u_7 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
+        let _e63 = u_7;
+        let _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     let k_15 = ((rf - radius_2) * (rf + radius_2));
@@ -7862,62 +7887,62 @@ fn airlight_disc(s_42: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
         {
             let _e76 = i_38;
             let _e77 = airlight_azimuths(inside_2, _e76);
-            let _e80 = u_6.x;
-            let _e84 = u_6.y;
-            let _e89 = u_6.y;
-            let _e93 = u_6.x;
+            let _e80 = u_7.x;
+            let _e84 = u_7.y;
+            let _e89 = u_7.y;
+            let _e93 = u_7.x;
             e_9 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
                 e_9 = _e77.xy;
-                let b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_26 * b_26) - k_15));
-                r_max_1 = select((root_4 - b_26), (-(k_15) / (b_26 + root_4)), (b_26 > 0f));
+                let b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_25 * b_25) - k_15));
+                r_max_1 = select((root_4 - b_25), (-(k_15) / (b_25 + root_4)), (b_25 > 0f));
             }
-            let _e118 = sum_10;
+            let _e118 = sum_11;
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_42, a_26, _e120, _e121, _e122);
-            sum_10 = (_e118 + (_e77.z * _e123));
+            let _e123 = airlight_flat_radial(s_43, a_25, _e120, _e121, _e122);
+            sum_11 = (_e118 + (_e77.z * _e123));
         }
         continuing {
             let _e127 = i_38;
             i_38 = (_e127 + 1u);
         }
     }
-    let _e129 = sum_10;
+    let _e129 = sum_11;
     return _e129;
 }
 
-fn airlight_parallelogram(s_43: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_44: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_8: vec2<f32>;
     var local_190: bool;
-    var sum_11: f32 = 0f;
+    var sum_12: f32 = 0f;
     var i_39: u32 = 0u;
-    var j_12: u32;
+    var j_13: u32;
 
-    let rel_2 = (x_27 - a_27.c);
-    let z_21 = dot(rel_2, a_27.n);
-    if !((z_21 > 0f)) {
+    let rel_2 = (x_27 - a_26.c);
+    let z_22 = dot(rel_2, a_26.n);
+    if !((z_22 > 0f)) {
         return 0f;
     }
-    let foot_1 = vec2<f32>(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
-    let u2_1 = vec2<f32>(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
-    let v2_1 = vec2<f32>(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
+    let foot_1 = vec2<f32>(dot(rel_2, a_26.a1_), dot(rel_2, a_26.a2_));
+    let u2_1 = vec2<f32>(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
+    let v2_1 = vec2<f32>(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
     let corners = array<vec2<f32>, 5>(vec2(0f), u2_1, (u2_1 + v2_1), v2_1, vec2(0f));
     let det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    let _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
+    let _e69 = airlight_flat_lobe(a_26, z_22, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_43, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_8 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_43, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        let _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -7927,9 +7952,9 @@ fn airlight_parallelogram(s_43: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
         q_8 = foot_1;
     }
     let _e92 = q_8;
-    let _e94 = airlight_above(z_21, (_e92 - foot_1));
+    let _e94 = airlight_above(z_22, (_e92 - foot_1));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
-    let _e99 = airlight_narrowed(s_43, _e94.rho0_);
+    let _e99 = airlight_narrowed(s_44, _e94.rho0_);
     loop {
         let _e104 = i_39;
         if (_e104 < 4u) {
@@ -7947,23 +7972,23 @@ fn airlight_parallelogram(s_43: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
                 continue;
             }
             let _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_12 = 0u;
+            j_13 = 0u;
             loop {
-                let _e129 = j_12;
+                let _e129 = j_13;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e132 = j_12;
+                    let _e132 = j_13;
                     let _e133 = airlight_edge_node(_e126, _e132);
-                    let _e134 = sum_11;
-                    let _e138 = airlight_flat_radial(s_43, a_27, _e94, _e133.xy, _e133.z);
-                    sum_11 = (_e134 + (_e133.w * _e138));
+                    let _e134 = sum_12;
+                    let _e138 = airlight_flat_radial(s_44, a_26, _e94, _e133.xy, _e133.z);
+                    sum_12 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e142 = j_12;
-                    j_12 = (_e142 + 1u);
+                    let _e142 = j_13;
+                    j_13 = (_e142 + 1u);
                 }
             }
         }
@@ -7972,121 +7997,121 @@ fn airlight_parallelogram(s_43: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
             i_39 = (_e145 + 1u);
         }
     }
-    let _e147 = sum_11;
+    let _e147 = sum_12;
     return _e147;
 }
 
-fn airlight_cap_row(s_44: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_45: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
     let _e5 = airlight_graded_node(graded_4, node_2);
     let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
-    let _e28 = airlight_emitted(s_44, _e9.x);
-    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_44.sigma_t) * dist_1), 0f)));
+    let _e28 = airlight_emitted(s_45, _e9.x);
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_45.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_45: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_46: AirlightScene, a_27: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
-    var sum_12: f32 = 0f;
+    var sum_13: f32 = 0f;
     var i_40: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_28.d);
-    let e1d = dot(_e4, a_28.d);
-    let e2d = dot(e2_2, a_28.d);
-    let _e15 = airlight_graded_range(s_45, 1.5707964f);
+    let ad = dot(cap_1.a, a_27.d);
+    let e1d = dot(_e4, a_27.d);
+    let e2d = dot(e2_2, a_27.d);
+    let _e15 = airlight_graded_range(s_46, 1.5707964f);
     let graded_9 = _e15.y;
     let c_24 = (0.5f * _e15.x);
     let hw_7 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_45, cap_1, graded_9, (c_24 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
-    if a_28.isotropic {
-        let _e174 = airlight_area_phase(s_45, 0f);
+    if a_27.isotropic {
+        let _e174 = airlight_area_phase(s_46, 0f);
         let around_1 = (6.2831855f * _e174);
-        let _e176 = sum_12;
+        let _e176 = sum_13;
         let _e179 = rows[0].x;
-        sum_12 = (_e176 + (_e179 * around_1));
-        let _e182 = sum_12;
+        sum_13 = (_e176 + (_e179 * around_1));
+        let _e182 = sum_13;
         let _e185 = rows[1].x;
-        sum_12 = (_e182 + (_e185 * around_1));
-        let _e188 = sum_12;
+        sum_13 = (_e182 + (_e185 * around_1));
+        let _e188 = sum_13;
         let _e191 = rows[2].x;
-        sum_12 = (_e188 + (_e191 * around_1));
-        let _e194 = sum_12;
+        sum_13 = (_e188 + (_e191 * around_1));
+        let _e194 = sum_13;
         let _e197 = rows[3].x;
-        sum_12 = (_e194 + (_e197 * around_1));
-        let _e200 = sum_12;
+        sum_13 = (_e194 + (_e197 * around_1));
+        let _e200 = sum_13;
         let _e203 = rows[4].x;
-        sum_12 = (_e200 + (_e203 * around_1));
-        let _e206 = sum_12;
+        sum_13 = (_e200 + (_e203 * around_1));
+        let _e206 = sum_13;
         let _e209 = rows[5].x;
-        sum_12 = (_e206 + (_e209 * around_1));
-        let _e212 = sum_12;
+        sum_13 = (_e206 + (_e209 * around_1));
+        let _e212 = sum_13;
         let _e215 = rows[6].x;
-        sum_12 = (_e212 + (_e215 * around_1));
-        let _e218 = sum_12;
+        sum_13 = (_e212 + (_e215 * around_1));
+        let _e218 = sum_13;
         let _e221 = rows[7].x;
-        sum_12 = (_e218 + (_e221 * around_1));
-        let _e224 = sum_12;
+        sum_13 = (_e218 + (_e221 * around_1));
+        let _e224 = sum_13;
         let _e227 = rows[8].x;
-        sum_12 = (_e224 + (_e227 * around_1));
-        let _e230 = sum_12;
+        sum_13 = (_e224 + (_e227 * around_1));
+        let _e230 = sum_13;
         let _e233 = rows[9].x;
-        sum_12 = (_e230 + (_e233 * around_1));
-        let _e236 = sum_12;
+        sum_13 = (_e230 + (_e233 * around_1));
+        let _e236 = sum_13;
         let _e239 = rows[10].x;
-        sum_12 = (_e236 + (_e239 * around_1));
-        let _e242 = sum_12;
+        sum_13 = (_e236 + (_e239 * around_1));
+        let _e242 = sum_13;
         let _e245 = rows[11].x;
-        sum_12 = (_e242 + (_e245 * around_1));
-        let _e248 = sum_12;
+        sum_13 = (_e242 + (_e245 * around_1));
+        let _e248 = sum_13;
         let _e251 = rows[12].x;
-        sum_12 = (_e248 + (_e251 * around_1));
-        let _e254 = sum_12;
+        sum_13 = (_e248 + (_e251 * around_1));
+        let _e254 = sum_13;
         let _e257 = rows[13].x;
-        sum_12 = (_e254 + (_e257 * around_1));
-        let _e260 = sum_12;
+        sum_13 = (_e254 + (_e257 * around_1));
+        let _e260 = sum_13;
         let _e263 = rows[14].x;
-        sum_12 = (_e260 + (_e263 * around_1));
-        let _e266 = sum_12;
+        sum_13 = (_e260 + (_e263 * around_1));
+        let _e266 = sum_13;
         let _e269 = rows[15].x;
-        sum_12 = (_e266 + (_e269 * around_1));
-        let _e272 = sum_12;
+        sum_13 = (_e266 + (_e269 * around_1));
+        let _e272 = sum_13;
         return _e272;
     }
     loop {
@@ -8104,136 +8129,137 @@ fn airlight_sphere_cap(s_45: AirlightScene, a_28: AirlightArea, cap_1: AirlightC
             let _e291 = rows[0].x;
             let _e294 = rows[0].y;
             let _e298 = rows[0].z;
-            let _e301 = airlight_area_phase(s_45, ((_e294 * ad) + (_e298 * across_1)));
+            let _e301 = airlight_area_phase(s_46, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             let _e304 = at_2;
             let _e307 = rows[1].x;
             let _e310 = rows[1].y;
             let _e314 = rows[1].z;
-            let _e317 = airlight_area_phase(s_45, ((_e310 * ad) + (_e314 * across_1)));
+            let _e317 = airlight_area_phase(s_46, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             let _e320 = at_2;
             let _e323 = rows[2].x;
             let _e326 = rows[2].y;
             let _e330 = rows[2].z;
-            let _e333 = airlight_area_phase(s_45, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_46, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[3].x;
             let _e342 = rows[3].y;
             let _e346 = rows[3].z;
-            let _e349 = airlight_area_phase(s_45, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_46, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[4].x;
             let _e358 = rows[4].y;
             let _e362 = rows[4].z;
-            let _e365 = airlight_area_phase(s_45, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_46, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[5].x;
             let _e374 = rows[5].y;
             let _e378 = rows[5].z;
-            let _e381 = airlight_area_phase(s_45, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_46, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[6].x;
             let _e390 = rows[6].y;
             let _e394 = rows[6].z;
-            let _e397 = airlight_area_phase(s_45, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_46, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[7].x;
             let _e406 = rows[7].y;
             let _e410 = rows[7].z;
-            let _e413 = airlight_area_phase(s_45, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_46, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[8].x;
             let _e422 = rows[8].y;
             let _e426 = rows[8].z;
-            let _e429 = airlight_area_phase(s_45, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_46, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[9].x;
             let _e438 = rows[9].y;
             let _e442 = rows[9].z;
-            let _e445 = airlight_area_phase(s_45, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_46, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[10].x;
             let _e454 = rows[10].y;
             let _e458 = rows[10].z;
-            let _e461 = airlight_area_phase(s_45, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_46, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[11].x;
             let _e470 = rows[11].y;
             let _e474 = rows[11].z;
-            let _e477 = airlight_area_phase(s_45, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_46, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[12].x;
             let _e486 = rows[12].y;
             let _e490 = rows[12].z;
-            let _e493 = airlight_area_phase(s_45, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_46, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[13].x;
             let _e502 = rows[13].y;
             let _e506 = rows[13].z;
-            let _e509 = airlight_area_phase(s_45, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_46, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[14].x;
             let _e518 = rows[14].y;
             let _e522 = rows[14].z;
-            let _e525 = airlight_area_phase(s_45, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_46, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[15].x;
             let _e534 = rows[15].y;
             let _e538 = rows[15].z;
-            let _e541 = airlight_area_phase(s_45, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_46, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
-            let _e544 = sum_12;
+            let _e544 = sum_13;
             let _e546 = at_2;
-            sum_12 = (_e544 + (_e280.z * _e546));
+            sum_13 = (_e544 + (_e280.z * _e546));
         }
         continuing {
             let _e550 = i_40;
             i_40 = (_e550 + 1u);
         }
     }
-    let _e552 = sum_12;
+    let _e552 = sum_13;
     return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_46: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_47: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
     let _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
     let toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e37 = airlight_emitted(s_46, (root_5 / cap_2.radius));
-    let _e47 = airlight_area_phase(s_46, (sign_1 * _e8.x));
-    return ((((_e37 * exp(min((-(s_46.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
+    let _e37 = airlight_emitted(s_47, (root_5 / cap_2.radius));
+    let _e47 = airlight_area_phase(s_47, (sign_1 * _e8.x));
+    return ((((_e37 * exp(min((-(s_47.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_47: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
-    var sum_13: f32 = 0f;
+    var sum_14: f32 = 0f;
     var i_41: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
+    var local_191: bool;
     var start_5: f32;
     var around: f32;
 
-    let p_8 = (sign_2 * a_29.d);
+    let p_8 = (sign_2 * a_28.d);
     let _e8 = airlight_basis_e1_(p_8);
-    let v_10 = cross(p_8, _e8);
+    let v_11 = cross(p_8, _e8);
     let au = dot(cap_3.a, _e8);
-    let av = dot(cap_3.a, v_10);
+    let av = dot(cap_3.a, v_11);
     let inside_3 = (cos_p_1 > cap_3.cos_a);
     let sin_p = sqrt(((au * au) + (av * av)));
     if (sin_p > 0f) {
@@ -8241,205 +8267,235 @@ fn airlight_sphere_about_lobe(s_47: AirlightScene, a_29: AirlightArea, cap_3: Ai
         let _e42 = airlight_acos(min((sqrt(max(((cap_3.cos_a - cos_p_1) * (cap_3.cos_a + cos_p_1)), 0f)) / sin_p), 1f));
         half_15 = _e42;
     }
+    let _e43 = airlight_atan2_(sin_p, cos_p_1);
+    let _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
+    let eps = (_e46 - _e43);
+    let width_7 = min(scale_3, sqrt(max(((_e46 - _e43) * (_e46 + _e43)), 0f)));
+    let _e56 = axis_2.y;
+    let _e58 = axis_2.x;
+    let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e56, -(_e58)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
+    let count_4 = select(16u, 24u, inside_3);
     loop {
-        let _e47 = i_41;
-        if (_e47 < 32u) {
+        let _e75 = i_41;
+        if (_e75 < count_4) {
         } else {
             break;
         }
         {
-            let _e50 = i_41;
-            let _e51 = airlight_azimuths(inside_3, _e50);
-            let _e54 = axis_2.x;
-            let _e58 = axis_2.y;
-            big_b_1 = (sin_p * ((_e51.x * _e54) + (_e51.y * _e58)));
-            wpsi = _e51.z;
-            if !(inside_3) {
-                let _e66 = half_15;
-                let _e69 = airlight_cos_sin((_e66 * _e51.y));
-                big_b_1 = (sin_p * _e69.x);
-                let _e73 = half_15;
-                wpsi = ((_e51.z * _e73) * _e51.x);
+            big_b_1 = 0f;
+            wpsi = 0f;
+            if inside_3 {
+                let _e83 = i_41;
+                local_191 = (_e83 < 8u);
+            } else {
+                local_191 = false;
             }
-            let _e77 = big_b_1;
-            let _e78 = airlight_atan2_(_e77, cos_p_1);
-            let _e81 = big_b_1;
-            let _e82 = big_b_1;
-            let _e89 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e81 * _e82)))), 1f));
+            let _e87 = local_191;
+            if _e87 {
+                if !((eps > 0f)) {
+                    continue;
+                }
+                let _e92 = i_41;
+                let _e96 = airlight_radial_rule(((2u * _e92) + 1u));
+                let _e100 = airlight_edge_at(rim_1, (1.5707964f * _e96.x));
+                let _e102 = axis_2;
+                big_b_1 = (sin_p * dot(_e100.xy, _e102));
+                wpsi = ((((2f * _e96.y) * 0.5f) * AIRLIGHT_PI) * _e100.w);
+            } else {
+                if inside_3 {
+                    let _e114 = i_41;
+                    let _e117 = airlight_azimuths_even((_e114 - 8u));
+                    big_b_1 = (sin_p * _e117.x);
+                    wpsi = _e117.z;
+                } else {
+                    let _e121 = i_41;
+                    let _e122 = airlight_azimuths_even(_e121);
+                    let _e123 = half_15;
+                    let _e126 = airlight_cos_sin((_e123 * _e122.y));
+                    big_b_1 = (sin_p * _e126.x);
+                    let _e130 = half_15;
+                    wpsi = ((_e122.z * _e130) * _e122.x);
+                }
+            }
+            let _e134 = big_b_1;
+            let _e135 = airlight_atan2_(_e134, cos_p_1);
+            let _e138 = big_b_1;
+            let _e139 = big_b_1;
+            let _e146 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e138 * _e139)))), 1f));
             start_5 = 0f;
             if !(inside_3) {
-                start_5 = max((_e78 - _e89), 0f);
+                start_5 = max((_e135 - _e146), 0f);
             }
-            let _e96 = start_5;
-            let _e98 = airlight_graded_from(scale_3, _e96, (_e78 + _e89));
-            let graded_10 = _e98.x;
-            let c_25 = (0.5f * _e98.y);
-            let hw_8 = (0.5f * _e98.y);
+            let _e153 = start_5;
+            let _e155 = airlight_graded_from(scale_3, _e153, (_e135 + _e146));
+            let graded_10 = _e155.x;
+            let c_25 = (0.5f * _e155.y);
+            let hw_8 = (0.5f * _e155.y);
             around = 0f;
-            let _e108 = around;
-            let _e111 = big_b_1;
-            let _e112 = start_5;
-            let _e116 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e111, _e112, graded_10, (c_25 - (0.09501251f * hw_8)));
-            around = (_e108 + ((0.1894506f * hw_8) * _e116));
-            let _e119 = around;
-            let _e122 = big_b_1;
-            let _e123 = start_5;
-            let _e127 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e122, _e123, graded_10, (c_25 + (0.09501251f * hw_8)));
-            around = (_e119 + ((0.1894506f * hw_8) * _e127));
-            let _e130 = around;
-            let _e133 = big_b_1;
-            let _e134 = start_5;
-            let _e138 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e133, _e134, graded_10, (c_25 - (0.28160354f * hw_8)));
-            around = (_e130 + ((0.18260342f * hw_8) * _e138));
-            let _e141 = around;
-            let _e144 = big_b_1;
-            let _e145 = start_5;
-            let _e149 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e144, _e145, graded_10, (c_25 + (0.28160354f * hw_8)));
-            around = (_e141 + ((0.18260342f * hw_8) * _e149));
-            let _e152 = around;
-            let _e155 = big_b_1;
-            let _e156 = start_5;
-            let _e160 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e155, _e156, graded_10, (c_25 - (0.45801678f * hw_8)));
-            around = (_e152 + ((0.16915652f * hw_8) * _e160));
-            let _e163 = around;
-            let _e166 = big_b_1;
-            let _e167 = start_5;
-            let _e171 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e166, _e167, graded_10, (c_25 + (0.45801678f * hw_8)));
-            around = (_e163 + ((0.16915652f * hw_8) * _e171));
-            let _e174 = around;
-            let _e177 = big_b_1;
-            let _e178 = start_5;
-            let _e182 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e177, _e178, graded_10, (c_25 - (0.61787623f * hw_8)));
-            around = (_e174 + ((0.14959599f * hw_8) * _e182));
-            let _e185 = around;
-            let _e188 = big_b_1;
-            let _e189 = start_5;
-            let _e193 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e188, _e189, graded_10, (c_25 + (0.61787623f * hw_8)));
-            around = (_e185 + ((0.14959599f * hw_8) * _e193));
-            let _e196 = around;
-            let _e199 = big_b_1;
-            let _e200 = start_5;
-            let _e204 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e199, _e200, graded_10, (c_25 - (0.7554044f * hw_8)));
-            around = (_e196 + ((0.12462897f * hw_8) * _e204));
-            let _e207 = around;
-            let _e210 = big_b_1;
-            let _e211 = start_5;
-            let _e215 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e210, _e211, graded_10, (c_25 + (0.7554044f * hw_8)));
-            around = (_e207 + ((0.12462897f * hw_8) * _e215));
-            let _e218 = around;
-            let _e221 = big_b_1;
-            let _e222 = start_5;
-            let _e226 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e221, _e222, graded_10, (c_25 - (0.8656312f * hw_8)));
-            around = (_e218 + ((0.09515851f * hw_8) * _e226));
-            let _e229 = around;
-            let _e232 = big_b_1;
-            let _e233 = start_5;
-            let _e237 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e232, _e233, graded_10, (c_25 + (0.8656312f * hw_8)));
-            around = (_e229 + ((0.09515851f * hw_8) * _e237));
-            let _e240 = around;
-            let _e243 = big_b_1;
-            let _e244 = start_5;
-            let _e248 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e243, _e244, graded_10, (c_25 - (0.944575f * hw_8)));
-            around = (_e240 + ((0.062253524f * hw_8) * _e248));
-            let _e251 = around;
-            let _e254 = big_b_1;
-            let _e255 = start_5;
-            let _e259 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e254, _e255, graded_10, (c_25 + (0.944575f * hw_8)));
-            around = (_e251 + ((0.062253524f * hw_8) * _e259));
-            let _e262 = around;
-            let _e265 = big_b_1;
-            let _e266 = start_5;
-            let _e270 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e265, _e266, graded_10, (c_25 - (0.9894009f * hw_8)));
-            around = (_e262 + ((0.02715246f * hw_8) * _e270));
-            let _e273 = around;
-            let _e276 = big_b_1;
-            let _e277 = start_5;
-            let _e281 = airlight_sphere_lobe_node(s_47, cap_3, sign_2, cos_p_1, _e276, _e277, graded_10, (c_25 + (0.9894009f * hw_8)));
-            around = (_e273 + ((0.02715246f * hw_8) * _e281));
-            let _e284 = sum_13;
-            let _e285 = wpsi;
+            let _e165 = around;
+            let _e168 = big_b_1;
+            let _e169 = start_5;
+            let _e173 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e168, _e169, graded_10, (c_25 - (0.09501251f * hw_8)));
+            around = (_e165 + ((0.1894506f * hw_8) * _e173));
+            let _e176 = around;
+            let _e179 = big_b_1;
+            let _e180 = start_5;
+            let _e184 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e179, _e180, graded_10, (c_25 + (0.09501251f * hw_8)));
+            around = (_e176 + ((0.1894506f * hw_8) * _e184));
+            let _e187 = around;
+            let _e190 = big_b_1;
+            let _e191 = start_5;
+            let _e195 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e190, _e191, graded_10, (c_25 - (0.28160354f * hw_8)));
+            around = (_e187 + ((0.18260342f * hw_8) * _e195));
+            let _e198 = around;
+            let _e201 = big_b_1;
+            let _e202 = start_5;
+            let _e206 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e201, _e202, graded_10, (c_25 + (0.28160354f * hw_8)));
+            around = (_e198 + ((0.18260342f * hw_8) * _e206));
+            let _e209 = around;
+            let _e212 = big_b_1;
+            let _e213 = start_5;
+            let _e217 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e212, _e213, graded_10, (c_25 - (0.45801678f * hw_8)));
+            around = (_e209 + ((0.16915652f * hw_8) * _e217));
+            let _e220 = around;
+            let _e223 = big_b_1;
+            let _e224 = start_5;
+            let _e228 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e223, _e224, graded_10, (c_25 + (0.45801678f * hw_8)));
+            around = (_e220 + ((0.16915652f * hw_8) * _e228));
+            let _e231 = around;
+            let _e234 = big_b_1;
+            let _e235 = start_5;
+            let _e239 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e234, _e235, graded_10, (c_25 - (0.61787623f * hw_8)));
+            around = (_e231 + ((0.14959599f * hw_8) * _e239));
+            let _e242 = around;
+            let _e245 = big_b_1;
+            let _e246 = start_5;
+            let _e250 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e245, _e246, graded_10, (c_25 + (0.61787623f * hw_8)));
+            around = (_e242 + ((0.14959599f * hw_8) * _e250));
+            let _e253 = around;
+            let _e256 = big_b_1;
+            let _e257 = start_5;
+            let _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e256, _e257, graded_10, (c_25 - (0.7554044f * hw_8)));
+            around = (_e253 + ((0.12462897f * hw_8) * _e261));
+            let _e264 = around;
+            let _e267 = big_b_1;
+            let _e268 = start_5;
+            let _e272 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, _e268, graded_10, (c_25 + (0.7554044f * hw_8)));
+            around = (_e264 + ((0.12462897f * hw_8) * _e272));
+            let _e275 = around;
+            let _e278 = big_b_1;
+            let _e279 = start_5;
+            let _e283 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e278, _e279, graded_10, (c_25 - (0.8656312f * hw_8)));
+            around = (_e275 + ((0.09515851f * hw_8) * _e283));
             let _e286 = around;
-            sum_13 = (_e284 + (_e285 * _e286));
+            let _e289 = big_b_1;
+            let _e290 = start_5;
+            let _e294 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e289, _e290, graded_10, (c_25 + (0.8656312f * hw_8)));
+            around = (_e286 + ((0.09515851f * hw_8) * _e294));
+            let _e297 = around;
+            let _e300 = big_b_1;
+            let _e301 = start_5;
+            let _e305 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e300, _e301, graded_10, (c_25 - (0.944575f * hw_8)));
+            around = (_e297 + ((0.062253524f * hw_8) * _e305));
+            let _e308 = around;
+            let _e311 = big_b_1;
+            let _e312 = start_5;
+            let _e316 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e311, _e312, graded_10, (c_25 + (0.944575f * hw_8)));
+            around = (_e308 + ((0.062253524f * hw_8) * _e316));
+            let _e319 = around;
+            let _e322 = big_b_1;
+            let _e323 = start_5;
+            let _e327 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e322, _e323, graded_10, (c_25 - (0.9894009f * hw_8)));
+            around = (_e319 + ((0.02715246f * hw_8) * _e327));
+            let _e330 = around;
+            let _e333 = big_b_1;
+            let _e334 = start_5;
+            let _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e333, _e334, graded_10, (c_25 + (0.9894009f * hw_8)));
+            around = (_e330 + ((0.02715246f * hw_8) * _e338));
+            let _e341 = sum_14;
+            let _e342 = wpsi;
+            let _e343 = around;
+            sum_14 = (_e341 + (_e342 * _e343));
         }
         continuing {
-            let _e290 = i_41;
-            i_41 = (_e290 + 1u);
+            let _e347 = i_41;
+            i_41 = (_e347 + 1u);
         }
     }
-    let _e292 = sum_13;
-    return _e292;
+    let _e349 = sum_14;
+    return _e349;
 }
 
-fn airlight_sphere(s_48: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_13: u32 = 0u;
-    var local_191: bool;
+    var j_14: u32 = 0u;
     var local_192: bool;
     var local_193: bool;
     var local_194: bool;
     var local_195: bool;
+    var local_196: bool;
 
-    let v_11 = (a_30.c - x_28);
-    let _e5 = airlight_safe_length(v_11);
-    if !((_e5 > a_30.radius)) {
+    let v_12 = (a_29.c - x_28);
+    let _e5 = airlight_safe_length(v_12);
+    if !((_e5 > a_29.radius)) {
         return 0f;
     }
-    let sin_a_2 = (a_30.radius / _e5);
-    let cap_4 = AirlightCap((v_11 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let sin_a_2 = (a_29.radius / _e5);
+    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_29.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_13;
+        let _e32 = j_14;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_13;
-            let lobe_5 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
-            let c_26 = dot(cap_4.a, (lobe_5.x * a_30.d));
+            let _e39 = j_14;
+            let lobe_6 = select(a_29.lobes.xy, a_29.lobes.zw, (_e39 == 1u));
+            let c_26 = dot(cap_4.a, (lobe_6.x * a_29.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_191 = (lobe_5.y > 0f);
-            } else {
-                local_191 = false;
-            }
-            let _e57 = local_191;
-            if _e57 {
-                local_192 = (lobe_5.y < (_e23 + _e23));
+                local_192 = (lobe_6.y > 0f);
             } else {
                 local_192 = false;
             }
-            let _e64 = local_192;
+            let _e57 = local_192;
+            if _e57 {
+                local_193 = (lobe_6.y < (_e23 + _e23));
+            } else {
+                local_193 = false;
+            }
+            let _e64 = local_193;
             if _e64 {
                 if !((c_26 > cap_4.cos_a)) {
                     if (c_26 > -(cap_4.cos_a)) {
                         let _e77 = airlight_acos(c_26);
-                        local_195 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                        local_196 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
                     } else {
-                        local_195 = false;
+                        local_196 = false;
                     }
-                    let _e84 = local_195;
-                    local_194 = _e84;
+                    let _e84 = local_196;
+                    local_195 = _e84;
                 } else {
-                    local_194 = true;
+                    local_195 = true;
                 }
-                let _e86 = local_194;
-                local_193 = _e86;
+                let _e86 = local_195;
+                local_194 = _e86;
             } else {
-                local_193 = false;
+                local_194 = false;
             }
-            let _e88 = local_193;
+            let _e88 = local_194;
             if _e88 {
-                chosen = lobe_5.y;
-                sign_3 = lobe_5.x;
+                chosen = lobe_6.y;
+                sign_3 = lobe_6.x;
                 cos_p_2 = c_26;
             }
         }
         continuing {
-            let _e92 = j_13;
-            j_13 = (_e92 + 1u);
+            let _e92 = j_14;
+            j_14 = (_e92 + 1u);
         }
     }
     let _e94 = chosen;
@@ -8447,48 +8503,48 @@ fn airlight_sphere(s_48: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> 
         let _e97 = sign_3;
         let _e98 = cos_p_2;
         let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_48, a_30, cap_4, _e97, _e98, _e99);
+        let _e100 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e97, _e98, _e99);
         return _e100;
     }
-    let _e101 = airlight_sphere_cap(s_48, a_30, cap_4);
+    let _e101 = airlight_sphere_cap(s_49, a_29, cap_4);
     return _e101;
 }
 
-fn airlight_emitter_radiance(s_49: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
-    switch s_49.light_shape {
+fn airlight_emitter_radiance(s_50: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
+    switch s_50.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_49, a_31, x_29);
+            let _e4 = airlight_disc(s_50, a_30, x_29);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_49, a_31, x_29);
+            let _e5 = airlight_parallelogram(s_50, a_30, x_29);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_49, a_31, x_29);
+            let _e6 = airlight_sphere(s_50, a_30, x_29);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_50: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_51: AirlightScene, a_31: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
-    let t_15 = (a_32.x_h + along_1);
-    let fade = exp(min((-(s_50.sigma_t) * max(((a_32.x_h - s_50.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_50, a_32, (s_50.origin + (t_15 * a_32.d)));
-    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
+    let t_15 = (a_31.x_h + along_1);
+    let fade = exp(min((-(s_51.sigma_t) * max(((a_31.x_h - s_51.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_51, a_31, (s_51.origin + (t_15 * a_31.d)));
+    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_51: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_10: f32;
     var gauss_1: f32;
-    var j_14: u32;
-    var local_196: bool;
+    var j_15: u32;
+    var local_197: bool;
 
-    let _e1 = airlight_area(s_51);
+    let _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8512,34 +8568,34 @@ fn airlight_area_light(s_51: AirlightScene) -> AirlightResult {
             let hw_9 = (0.5f * (_e34 - _e36));
             k_10 = 0f;
             gauss_1 = 0f;
-            j_14 = 0u;
+            j_15 = 0u;
             loop {
-                let _e46 = j_14;
+                let _e46 = j_15;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_14;
+                    let _e49 = j_15;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_14;
+                    let _e59 = j_15;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_14;
-                        local_196 = (_e66 < 14u);
+                        let _e66 = j_15;
+                        local_197 = (_e66 < 14u);
                     } else {
-                        local_196 = false;
+                        local_197 = false;
                     }
-                    let _e70 = local_196;
+                    let _e70 = local_197;
                     let x_39 = select((c_27 + (hw_9 * node_4.x)), (c_27 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_51, _e1, x_39);
+                    let _e72 = airlight_area_node(s_52, _e1, x_39);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_14;
-                    j_14 = (_e82 + 1u);
+                    let _e82 = j_15;
+                    j_15 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
@@ -8565,66 +8621,66 @@ fn airlight_area_light(s_51: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_51.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_52.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_52: AirlightScene) -> AirlightResult {
-    var local_197: bool;
+fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
     var local_198: bool;
+    var local_199: bool;
 
-    let _e1 = airlight_valid(s_52);
+    let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_197 = (s_52.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_197 = true;
-    }
-    let _e10 = local_197;
-    if !(_e10) {
-        local_198 = (s_52.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_198 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_198 = true;
     }
-    let _e18 = local_198;
+    let _e10 = local_198;
+    if !(_e10) {
+        local_199 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_199 = true;
+    }
+    let _e18 = local_199;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_52);
+    let _e22 = airlight_area_light(s_53);
     return _e22;
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_199: bool;
+    var local_200: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_199 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_200 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_199 = true;
+        local_200 = true;
     }
-    let _e11 = local_199;
+    let _e11 = local_200;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
     return r_5;
 }
 
-fn airlight_node_integral(n_4: AirlightNode) -> AirlightResult {
+fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_200: bool;
+    var local_201: bool;
     var g_29: AirlightCanonical;
 
-    let p_9 = n_4.scene;
+    let p_9 = n_5.scene;
     let _e7 = airlight_vec_finite(p_9.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_9.dir);
-        local_200 = _e11;
+        local_201 = _e11;
     } else {
-        local_200 = false;
+        local_201 = false;
     }
-    let _e13 = local_200;
+    let _e13 = local_201;
     if _e13 {
-        g_29 = n_4.canonical;
-        if !(n_4.exact) {
+        g_29 = n_5.canonical;
+        if !(n_5.exact) {
             let _e18 = airlight_canonical(p_9);
             let _e19 = airlight_refined(p_9, _e18);
             g_29 = _e19;
@@ -8644,60 +8700,60 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_53: AirlightScene) -> AirlightResult {
-    var local_201: bool;
+fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
     var local_202: bool;
-
-    let _e1 = airlight_valid(s_53);
-    if !(!(_e1)) {
-        local_201 = (s_53.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_201 = true;
-    }
-    let _e10 = local_201;
-    if !(_e10) {
-        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_202 = true;
-    }
-    let _e18 = local_202;
-    if _e18 {
-        return AirlightResult(0f, 1u);
-    }
-    let _e22 = airlight_point_integral(s_53);
-    return _e22;
-}
-
-fn airlight_in_scatter_route(s_54: AirlightScene) -> AirlightResult {
     var local_203: bool;
-    var local_204: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_203 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_202 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_202 = true;
+    }
+    let _e10 = local_202;
+    if !(_e10) {
+        local_203 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_203 = true;
     }
-    let _e10 = local_203;
-    if !(_e10) {
-        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_204 = true;
-    }
-    let _e18 = local_204;
+    let _e18 = local_203;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_54);
-    let _e23 = airlight_refined(s_54, _e22);
-    let _e24 = airlight_limits(s_54, _e23);
+    let _e22 = airlight_point_integral(s_54);
+    return _e22;
+}
+
+fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
+    var local_204: bool;
+    var local_205: bool;
+
+    let _e1 = airlight_valid(s_55);
+    if !(!(_e1)) {
+        local_204 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_204 = true;
+    }
+    let _e10 = local_204;
+    if !(_e10) {
+        local_205 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_205 = true;
+    }
+    let _e18 = local_205;
+    if _e18 {
+        return AirlightResult(0f, 1u);
+    }
+    let _e22 = airlight_canonical(s_55);
+    let _e23 = airlight_refined(s_55, _e22);
+    let _e24 = airlight_limits(s_55, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_54);
+    let _e29 = airlight_isotropic_scene(s_55);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_54, _e23);
+        let _e31 = airlight_angle_route(s_55, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8706,24 +8762,24 @@ fn airlight_in_scatter_route(s_54: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_55: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_11: f32;
     var gauss_2: f32;
-    var j_15: u32;
-    var local_205: bool;
-    var f: f32;
+    var j_16: u32;
     var local_206: bool;
+    var f: f32;
+    var local_207: bool;
 
-    let _e1 = airlight_valid(s_55);
+    let _e1 = airlight_valid(s_56);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_55.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_56.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_55);
+    let _e12 = airlight_outer(s_56);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8749,38 +8805,38 @@ fn airlight_in_scatter(s_55: AirlightScene) -> AirlightResult {
             let hw_10 = (0.5f * (_e49 - _e51));
             k_11 = 0f;
             gauss_2 = 0f;
-            j_15 = 0u;
+            j_16 = 0u;
             loop {
-                let _e61 = j_15;
+                let _e61 = j_16;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_15;
+                    let _e64 = j_16;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_15;
+                    let _e74 = j_16;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_15;
-                        local_205 = (_e81 < 6u);
+                        let _e81 = j_16;
+                        local_206 = (_e81 < 6u);
                     } else {
-                        local_205 = false;
+                        local_206 = false;
                     }
-                    let _e85 = local_205;
+                    let _e85 = local_206;
                     let w_11 = select((c_28 + (hw_10 * node_5.x)), (c_28 - (hw_10 * node_5.x)), _e85);
-                    let _e87 = airlight_outer_node(s_55, _e12, w_11);
+                    let _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_55.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_206 = (s_55.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_207 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_206 = false;
+                            local_207 = false;
                         }
-                        let _e106 = local_206;
+                        let _e106 = local_207;
                         if _e106 {
                             return _e93;
                         }
@@ -8794,8 +8850,8 @@ fn airlight_in_scatter(s_55: AirlightScene) -> AirlightResult {
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_15;
-                    j_15 = (_e121 + 1u);
+                    let _e121 = j_16;
+                    j_16 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;

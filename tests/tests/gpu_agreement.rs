@@ -394,6 +394,7 @@ fn area_lights_agree_with_the_cpu_kernel() {
             other => panic!("area.jsonl holds area lights valid in f32, not {other:?}"),
         })
         .chain(focused_flat_emitters())
+        .chain(sphere_limb_rays())
         .collect();
     let mut records: Vec<u8> = cases.iter().flat_map(|c| pack_area(&c.0)).collect();
     let first = |shape: u32| Record::area(&cases.iter().find(|c| Record::area(&c.0).light_shape == shape).expect("each shape in area.jsonl").0);
@@ -506,6 +507,37 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
     let disc = Emitter::Disc { center: centre, normal: edge_u.cross(edge_v), radius: 0.6 };
     for offset in [0.0f32, 0.0005, 0.002] {
         cases.push(case(disc, Emission::Lambertian, centre + edge_u.normalize() * (0.6 - offset), 0.95, format!("g = 0.95 disc, crossing {offset} inside its rim")));
+    }
+    cases
+}
+
+/// A sphere in `g = 0.95` and `0.99` fog on rays entering it 0.001 and 0.00001 of its radius
+/// inside its limb, up to the middle of their chord (tests/area.rs
+/// `bounded_sphere_with_the_lobe_next_to_its_limb`): the f32 scene, the nested construction's
+/// value on its f32 inputs at tolerance 1e-9 in f64, a label.
+fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
+    use airlight::glam::{DVec3, Vec3};
+    use airlight::phase::{AnyPhase, HenyeyGreenstein};
+    use airlight::{AreaLight, AreaScene, Emitter, Medium, Ray};
+    let (center, radius) = (Vec3::new(6.0, 1.5, -0.5), 0.6f32);
+    let (towards, side) = (center.normalize(), center.normalize().cross(Vec3::Z).normalize());
+    let mut cases = Vec::new();
+    for g in [0.95f32, 0.99] {
+        for depth in [0.001f32, 0.00001] {
+            let angle = (radius * (1.0 - depth) / center.length()).asin();
+            let dir = towards * angle.cos() + side * angle.sin();
+            let ray = Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: dir.dot(center) };
+            let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
+            let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+            let double = AreaScene::new(
+                Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: ray.t_max as f64 },
+                AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
+                Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
+                AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }),
+            )
+            .unwrap();
+            cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} sphere, entering {depth} of its radius inside its limb")));
+        }
     }
     cases
 }

@@ -2625,6 +2625,13 @@ fn airlight_azimuths(circle: bool, i: u32) -> vec3<f32> {
     return select(half[i], full[i], circle);
 }
 
+/// The half's node j with ψ > 0, its weight doubled: its sum of an integrand even in ψ (outer.rs
+/// `Azimuths::even`).
+fn airlight_azimuths_even(j: u32) -> vec3<f32> {
+    let az = airlight_azimuths(false, 2u * j + 1u);
+    return vec3<f32>(az.xy, 2.0 * az.z);
+}
+
 /// outer.rs TRIANGLE_AZIMUTHAL (Gauss–Legendre, 12 points) on [−1, 1]: (x, weight).
 fn airlight_triangle_rule(i: u32) -> vec2<f32> {
     let rule = array<vec2<f32>, 12>(@TRIANGLE_RULE@);
@@ -2789,11 +2796,13 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     var centre = s.light_position;
     var size = s.light_param_a;
     if (s.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        // entry and exit: t² + 2bt + k = 0
+        // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = R² − ρ² from the centre's
+        // distance ρ to the ray's line (b² − k itself cancels for a grazing ray)
         let oc = o - a.c;
         let b = dot(oc, d);
         let k = dot(oc, oc) - a.radius * a.radius;
-        let disc = b * b - k;
+        let rho = airlight_safe_length(oc - b * d);
+        let disc = (a.radius - rho) * (a.radius + rho);
         if (disc > 0.0) {
             let root = sqrt(disc);
             let q = -b - select(root, -root, (bitcast<u32>(b) & 0x80000000u) != 0u);
@@ -3351,7 +3360,8 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
     for (var i = 0u; i < 3u; i++) {
         let first = mid + psi[i];
         let last = mid + psi[i + 1u];
-        let edges = airlight_chord_edges(y, airlight_cos_sin_turns(0.5 * (first + last)));
+        let towards_half = airlight_cos_sin_turns(0.5 * (first + last));
+        let edges = airlight_chord_edges(y, towards_half);
         let n = edges.entry;
         if (all(n == vec2<f32>(0.0))) {
             let c = (first + last) * 0.5;
@@ -3365,50 +3375,62 @@ fn airlight_flat_about_lobe(s: AirlightScene, z: f32, o: AirlightOutline, lobe: 
         // an exit edge nearer than the lobe's footprint: the half of the wedge at the end more
         // nearly parallel to it in the angle β of that edge (D = hypot(h, L s)), the other half
         // in the Mercator angle of the entry edge
-        var merc_first = first;
-        var merc_last = last;
+        var merc_first = airlight_cos_sin_turns(first);
+        var merc_last = airlight_cos_sin_turns(last);
         let exit_h = edges.exit_h;
-        if (exit_h > 0.0 && exit_h < lobe.l * lobe.scale) {
-            let half = 0.5 * (first + last);
-            var a = first;
-            var b = half;
-            if (dot(airlight_cos_sin_turns(first), edges.exit) < dot(airlight_cos_sin_turns(last), edges.exit)) {
-                merc_first = half;
+        let width = lobe.l * lobe.scale;
+        if (exit_h > 0.0 && exit_h < width) {
+            var rule = AirlightEdgeRule(exit_h, vec2<f32>(-edges.exit.y, edges.exit.x), sqrt(exit_h * exit_h + width * width), 0.0, 0.0);
+            if (dot(merc_first, edges.exit) < dot(merc_last, edges.exit)) {
+                rule.first = airlight_line_beta(rule, merc_first);
+                rule.last = airlight_line_beta(rule, towards_half);
+                merc_first = towards_half;
             } else {
-                a = half;
-                b = last;
-                merc_last = half;
+                rule.first = airlight_line_beta(rule, towards_half);
+                rule.last = airlight_line_beta(rule, merc_last);
+                merc_last = towards_half;
             }
-            let t2 = vec2<f32>(-edges.exit.y, edges.exit.x);
-            let reach = sqrt(exit_h * exit_h + lobe.l * lobe.scale * lobe.l * lobe.scale);
-            let ca = airlight_cos_sin_turns(a);
-            let cb = airlight_cos_sin_turns(b);
-            let rule = AirlightEdgeRule(exit_h, t2, reach,
-                airlight_atan2(dot(ca, t2) * exit_h, max(dot(ca, edges.exit), 0.0) * reach),
-                airlight_atan2(dot(cb, t2) * exit_h, max(dot(cb, edges.exit), 0.0) * reach));
             for (var j = 0u; j < 12u; j++) {
                 let node = airlight_edge_node(rule, j);
                 sum += node.w * airlight_flat_lobe_along(s, z, o, lobe, u, v, node.xy);
             }
         }
-        let t = vec2<f32>(-n.y, n.x);
-        let ua = airlight_mercator(n, airlight_cos_sin_turns(merc_first));
-        let ub = airlight_mercator(n, airlight_cos_sin_turns(merc_last));
-        for (var k = 0u; k < 7u; k++) {
-            let lo = max(ua, airlight_mercator_cut(k));
-            let hi = min(ub, airlight_mercator_cut(k + 1u));
-            if (!(lo < hi)) { continue; }
-            let c = (lo + hi) * 0.5;
-            let hw = (hi - lo) * 0.5;
-            for (var j = 0u; j < 12u; j++) {
-                let node = airlight_triangle_rule(j);
-                let x = c + hw * node.x;
-                // sech x and tanh x from e^{−|x|}
-                let e = exp(-abs(x));
-                let sech = 2.0 * e / (1.0 + e * e);
-                let th = sign(x) * (1.0 - e * e) / (1.0 + e * e);
-                sum += node.y * hw * sech * airlight_flat_lobe_along(s, z, o, lobe, u, v, n * sech + t * th);
-            }
+        sum += airlight_mercator_wedge(s, z, o, lobe, u, v, n, merc_first, merc_last);
+    }
+    return sum;
+}
+
+/// The angle β of the direction `cs` = (cos ψ, sin ψ) on the line h m + σ t of `rule`, σ = D tan β
+/// (m = (t.y, −t.x) its unit normal from the origin; a direction parallel to it or past it at
+/// ±π/2; outer.rs `flat_about_lobe`, the exit edge's half).
+fn airlight_line_beta(rule: AirlightEdgeRule, cs: vec2<f32>) -> f32 {
+    let m = vec2<f32>(rule.t.y, -rule.t.x);
+    return airlight_atan2(dot(cs, rule.t) * rule.h, max(dot(cs, m), 0.0) * rule.reach);
+}
+
+/// The lobe's chords from q_L over the wedge of directions from `first` to `last` ((cos ψ, sin ψ)
+/// each) that enter the emitter by the line of unit normal `n` from q_L, in its Mercator angle
+/// asinh(tan δ) (dψ = sech u du), panels at MERCATOR_CUTS, 12 nodes each (outer.rs
+/// `mercator_rule`).
+fn airlight_mercator_wedge(s: AirlightScene, z: f32, o: AirlightOutline, lobe: AirlightFlatLobe, u: vec3<f32>, v: vec3<f32>, n: vec2<f32>, first: vec2<f32>, last: vec2<f32>) -> f32 {
+    let t = vec2<f32>(-n.y, n.x);
+    let ua = airlight_mercator(n, first);
+    let ub = airlight_mercator(n, last);
+    var sum = 0.0;
+    for (var k = 0u; k < 7u; k++) {
+        let lo = max(ua, airlight_mercator_cut(k));
+        let hi = min(ub, airlight_mercator_cut(k + 1u));
+        if (!(lo < hi)) { continue; }
+        let c = (lo + hi) * 0.5;
+        let hw = (hi - lo) * 0.5;
+        for (var j = 0u; j < 12u; j++) {
+            let node = airlight_triangle_rule(j);
+            let x = c + hw * node.x;
+            // sech x and tanh x from e^{−|x|}
+            let e = exp(-abs(x));
+            let sech = 2.0 * e / (1.0 + e * e);
+            let th = sign(x) * (1.0 - e * e) / (1.0 + e * e);
+            sum += node.y * hw * sech * airlight_flat_lobe_along(s, z, o, lobe, u, v, n * sech + t * th);
         }
     }
     return sum;
@@ -3553,12 +3575,35 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
         axis = vec2<f32>(au / sin_p, av / sin_p);
         half = airlight_acos(min(sqrt(max((cap.cos_a - cos_p) * (cap.cos_a + cos_p), 0.0)) / sin_p, 1.0));
     }
+    // inside: the half of the directions towards the rim's nearest point (−axis, the angle
+    // ε = α − β_p away) in the angle β of the rim's tangent there (σ = D tan β, D = hypot(ε,
+    // min(s, the rim's half chord through p))), 16 nodes, then the far half in ψ about axis, 32
+    let beta_p = airlight_atan2(sin_p, cos_p);
+    let alpha = airlight_atan2_upper(cap.sin_a, cap.cos_a);
+    let eps = alpha - beta_p;
+    let width = min(scale, sqrt(max((alpha - beta_p) * (alpha + beta_p), 0.0)));
+    // (both halves even about axis, as the wedge outside is in φ: the rules' nodes on one side,
+    // weights doubled)
+    let rim = AirlightEdgeRule(eps, vec2<f32>(axis.y, -axis.x), sqrt(eps * eps + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
+    let count = select(16u, 24u, inside);
     var sum = 0.0;
-    for (var i = 0u; i < 32u; i++) {
-        let az = airlight_azimuths(inside, i);
-        var big_b = sin_p * (az.x * axis.x + az.y * axis.y);
-        var wpsi = az.z;
-        if (!inside) {
+    for (var i = 0u; i < count; i++) {
+        // a·e_ψ = sin β_p cos(ψ − ψ_a) and the weight in ψ (outside: ψ − ψ_a = Ψ sin φ,
+        // dψ = Ψ cos φ dφ)
+        var big_b = 0.0;
+        var wpsi = 0.0;
+        if (inside && i < 8u) {
+            if (!(eps > 0.0)) { continue; }
+            let node = airlight_radial_rule(2u * i + 1u);
+            let at = airlight_edge_at(rim, 0.5 * AIRLIGHT_PI * node.x);
+            big_b = sin_p * dot(at.xy, axis);
+            wpsi = 2.0 * node.y * 0.5 * AIRLIGHT_PI * at.w;
+        } else if (inside) {
+            let az = airlight_azimuths_even(i - 8u);
+            big_b = sin_p * az.x;
+            wpsi = az.z;
+        } else {
+            let az = airlight_azimuths_even(i);
             big_b = sin_p * airlight_cos_sin(half * az.y).x;
             wpsi = az.z * half * az.x;
         }

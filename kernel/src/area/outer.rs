@@ -153,14 +153,21 @@ fn edge_rule<T: Real>(a: (T, T), b: (T, T), width: T, f: impl FnMut((T, T), T, T
 /// [`edge_rule`] on the line `h m + σ t` (`m = (t.1, −t.0)`) from `β = ends[0]` to `ends[1]`,
 /// `σ = D tan β` (`D` = `reach`).
 fn line_rule<T: Real>(rule: &[(f64, f64)], h: T, t: (T, T), reach: T, ends: [T; 2], mut f: impl FnMut((T, T), T, T)) {
-    let m = (t.1, -t.0);
     each_node(rule, ends[0], ends[1], |beta, w| {
-        let (sin, cos) = sin_cos_turns(beta);
-        let sigma = reach * sin / cos;
-        let r2 = h * h + sigma * sigma;
-        let r = r2.sqrt();
-        f(((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r), r, w * h * reach / (cos * cos * r2));
+        let (direction, r, dpsi) = line_point(h, t, reach, beta);
+        f(direction, r, w * dpsi);
     });
+}
+
+/// The point `h m + σ t` of [`line_rule`]'s line at `β` (`σ = D tan β`): its direction from the
+/// origin, its distance `r` and `dψ/dβ = h D/(cos²β r²)`.
+fn line_point<T: Real>(h: T, t: (T, T), reach: T, beta: T) -> ((T, T), T, T) {
+    let m = (t.1, -t.0);
+    let (sin, cos) = sin_cos_turns(beta);
+    let sigma = reach * sin / cos;
+    let r2 = h * h + sigma * sigma;
+    let r = r2.sqrt();
+    (((h * m.0 + sigma * t.0) / r, (h * m.1 + sigma * t.1) / r), r, h * reach / (cos * cos * r2))
 }
 
 /// Where a flat emitter's wedge of chords from a phase lobe's point `q_L` off the emitter is
@@ -230,11 +237,13 @@ fn chord_edges<T: Real>(corners: &[(T, T); 4], e: (T, T)) -> Option<[((T, T), T)
 struct Azimuths<T> {
     circle: [(T, T, T); 32],
     half: [(T, T, T); 32],
+    /// `half`'s nodes with `ψ > 0`, their weights doubled: its sum of an integrand even in `ψ`.
+    even: [(T, T, T); 16],
 }
 
 impl<T: Real> Azimuths<T> {
     fn new() -> Self {
-        let mut az = Azimuths { circle: [(T::zero(), T::zero(), T::zero()); 32], half: [(T::zero(), T::zero(), T::zero()); 32] };
+        let mut az = Azimuths { circle: [(T::zero(), T::zero(), T::zero()); 32], half: [(T::zero(), T::zero(), T::zero()); 32], even: [(T::zero(), T::zero(), T::zero()); 16] };
         let mut i = 0;
         each_node(&AZIMUTHAL, T::zero(), T::PI() + T::PI(), |psi, w| {
             let (s, c) = sin_cos_turns(psi);
@@ -245,6 +254,9 @@ impl<T: Real> Azimuths<T> {
         each_node(&AZIMUTHAL, -T::FRAC_PI_2(), T::FRAC_PI_2(), |psi, w| {
             let (s, c) = sin_cos_turns(psi);
             az.half[i] = (c, s, w);
+            if psi > T::zero() {
+                az.even[i / 2] = (c, s, w + w);
+            }
             i += 1;
         });
         az
@@ -706,22 +718,20 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
                 // triangle's towards the end more nearly parallel to it: that half in the angle β
                 // of the exit edge ([`line_rule`], D = hypot(h, L s)), the rest in the Mercator
                 // angle of the entry edge
-                let mut mercator = [from, to];
+                let mut mercator = [from, to].map(|a| sin_cos_turns(a));
                 if h > T::zero() && h < l * scale {
                     let (t, reach) = ((-exit.1, exit.0), h.hypot(l * scale));
                     let cos_exit = |(s, c): (T, T)| c * exit.0 + s * exit.1;
                     let beta = |(s, c): (T, T)| ((c * t.0 + s * t.1) * h / (cos_exit((s, c)).max(T::zero()) * reach)).atan();
-                    let ends = [from, to].map(|a| sin_cos_turns(a));
-                    let exit_half = if cos_exit(ends[0]) < cos_exit(ends[1]) {
-                        mercator[0] = half;
-                        [ends[0], (sm, cm)]
-                    } else {
-                        mercator[1] = half;
-                        [(sm, cm), ends[1]]
-                    };
+                    // the end more nearly parallel to the exit edge to the mid direction; the
+                    // Mercator range from there
+                    let parallel = if cos_exit(mercator[0]) < cos_exit(mercator[1]) { 0 } else { 1 };
+                    let mut exit_half = [(sm, cm); 2];
+                    exit_half[parallel] = mercator[parallel];
+                    mercator[parallel] = (sm, cm);
                     line_rule(&TRIANGLE_AZIMUTHAL, h, t, reach, exit_half.map(beta), |dir, _, w| sum = sum + w * along(dir.0, dir.1));
                 }
-                mercator_rule(entry, mercator.map(|a| sin_cos_turns(a)), |(c, s), w| sum = sum + w * along(c, s));
+                mercator_rule(entry, mercator, |(c, s), w| sum = sum + w * along(c, s));
             }
         }
     }
@@ -791,9 +801,13 @@ pub const LOBE_REACH: f64 = 8.0;
 /// `S(x)` of a sphere whose [`Cap`] holds (or nearly) the direction `p = sign·d` of a phase lobe
 /// of radial scale `s` ([`lobes`]; `cos_p = a·p`): polar about `p`,
 /// `ω = cos θ p + sin θ (cos ψ u + sin ψ v)`, `θ = s tan γ` from 0 to the cap's rim in each `ψ`
-/// (`cos θ (a·p) + sin θ (a·e_ψ) = cos α`), Gauss–Legendre [`RADIAL`] in `γ` and [`AZIMUTHAL`]
-/// in `ψ`; the distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted cosine
-/// that root over `R`.
+/// (`cos θ (a·p) + sin θ (a·e_ψ) = cos α`), Gauss–Legendre [`RADIAL`] in `γ`; in `ψ`, with `p`
+/// inside the cap, the half towards the rim's nearest point in the angle `β` of the rim's
+/// tangent there ([`RADIAL`]) and the far half [`AZIMUTHAL`] (a disc holding the lobe's point,
+/// [`flat_about_lobe`]: over the whole circle in `ψ` a ray entering the sphere 1e-5 of its radius
+/// inside its limb was 8.7e-3 off in `g = 0.95` fog), outside [`AZIMUTHAL`] over the wedge that
+/// meets the cap; the distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted
+/// cosine that root over `R`.
 fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap: &Cap<T>, (p, sign, cos_p): ([T; 3], T, T), scale: T) -> T {
     let Cap { a, dc, radius, cos_a } = *cap;
     let (u, v) = basis(p);
@@ -803,20 +817,12 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
     // taken as ψ = ψ_a + Ψ sin φ (the θ range closes like a square root at its edges)
     let sin_p = au.hypot(av);
     let (axis, half) = if sin_p > T::zero() { ((au / sin_p, av / sin_p), (((cos_a - cos_p) * (cos_a + cos_p)).max(T::zero()).sqrt() / sin_p).min(T::one()).acos()) } else { ((T::one(), T::zero()), T::zero()) };
-    let azimuths = if inside { &light.azimuths.circle } else { &light.azimuths.half };
-    let mut sum = T::zero();
-    for &(cos, sin, wpsi) in azimuths {
-        // a·e_ψ = sin β_p cos(ψ − ψ_a) (outside: ψ − ψ_a = Ψ sin φ, dψ = Ψ cos φ dφ), and the
-        // rim where A cos θ + B sin θ = cos α
-        let (big_b, wpsi) = if inside {
-            (sin_p * (cos * axis.0 + sin * axis.1), wpsi)
-        } else {
-            let (_, c) = sin_cos_turns(half * sin);
-            (sin_p * c, wpsi * half * cos)
-        };
+    // the θ integral along e_ψ, given a·e_ψ = sin β_p cos(ψ − ψ_a): the rim where
+    // A cos θ + B sin θ = cos α; θ from its least (0 inside, the near rim outside), graded from
+    // there by s (outside by the larger of s and that least θ: the lobe's tail there is as wide
+    // as its distance)
+    let along = |big_b: T| {
         let (mid, spread) = (big_b.atan2(cos_p), (cos_a / cos_p.hypot(big_b)).min(T::one()).acos());
-        // θ from its least (0 inside, the near rim outside), graded from there by s (outside by
-        // the larger of s and that least θ: the lobe's tail there is as wide as its distance)
         let from = if inside { T::zero() } else { (mid - spread).max(T::zero()) };
         let mut around = T::zero();
         graded_from(scale, from, mid + spread, |st, ct, w| {
@@ -825,7 +831,38 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
             let dist = (dc * toward_a - root).max(T::zero());
             around = around + w * light.emitted(root / radius) * exp_nonpositive(-light.sigma_t * dist) * light.phase(sign * ct) * st;
         });
-        sum = sum + wpsi * around;
+        around
+    };
+    let mut sum = T::zero();
+    if inside {
+        // as a disc holding the lobe's point (`flat_about_lobe`): the half of the directions
+        // towards the rim's nearest point (−axis, the angle ε = α − β_p away) in the angle β of
+        // the rim's tangent there (σ = D tan β, D = hypot(ε, min(s, the rim's half chord through
+        // p))), the far half in ψ; in ψ alone the θ ranges towards the rim grow as ε/cos over
+        // the last ε/α of the half
+        let (alpha, beta_p) = ((radius / dc).asin(), sin_p.atan2(cos_p));
+        // t with m = (t.1, −t.0) = −axis
+        let t = (axis.1, -axis.0);
+        let eps = alpha - beta_p;
+        let half_chord = ((alpha - beta_p) * (alpha + beta_p)).max(T::zero()).sqrt();
+        // (both halves are even about axis: their rules' nodes on one side, weights doubled)
+        if eps > T::zero() {
+            let reach = eps.hypot(scale.min(half_chord));
+            for &(x, w) in &RADIAL {
+                let (dir, _, dpsi) = line_point(eps, t, reach, T::lit(x) * T::FRAC_PI_2());
+                sum = sum + T::lit(w + w) * T::FRAC_PI_2() * dpsi * along(sin_p * (dir.0 * axis.0 + dir.1 * axis.1));
+            }
+        }
+        // ψ about axis: a·e_ψ = sin β_p cos ψ
+        for &(cos, _, w) in &light.azimuths.even {
+            sum = sum + w * along(sin_p * cos);
+        }
+        return sum;
+    }
+    // outside: ψ − ψ_a = Ψ sin φ, dψ = Ψ cos φ dφ, even in φ
+    for &(cos, sin, wpsi) in &light.azimuths.even {
+        let (_, c) = sin_cos_turns(half * sin);
+        sum = sum + wpsi * half * cos * along(sin_p * c);
     }
     sum
 }
@@ -916,10 +953,12 @@ where
             }
             Emitter::Sphere { center, radius } => {
                 let c = T::vec3_to_array(center);
-                // entry and exit: t² + 2bt + k = 0
+                // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = R² − ρ² from the
+                // centre's distance ρ to the ray's line (b² − k itself cancels for a grazing ray)
                 let oc = sub(o, c);
                 let (b, k) = (dot(oc, d), dot(oc, oc) - radius * radius);
-                let disc = b * b - k;
+                let rho = length(axpy(oc, -b, d));
+                let disc = (radius - rho) * (radius + rho);
                 if disc > T::zero() {
                     let q = -b - disc.sqrt().copysign(b);
                     cuts = [q, k / q, T::nan()];
