@@ -354,6 +354,7 @@ constant float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 constant uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 constant float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 constant float AIRLIGHT_LOBE_REACH = 8.0;
+constant float AIRLIGHT_BESIDE_SCALE = 0.25;
 constant float AIRLIGHT_EDGE_REACH = 0.5;
 constant float AIRLIGHT_CROSSING_REACH = 16.0;
 
@@ -3066,13 +3067,13 @@ float airlight_integrate_piece(
                         continue;
                     }
                     float _e212 = airlight_graded_split(wa, wb, _e10);
-                    float mid = (_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5));
+                    float mid_1 = (_e212 >= 0.0) ? _e212 : (wa + ((wb - wa) * 0.5));
                     a_10 = wa;
-                    b_9 = mid;
+                    b_9 = mid_1;
                     uint _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -5515,9 +5516,9 @@ AirlightSplit airlight_split_worst(
             }
             AirlightPanelList _e30 = list_1;
             metal::float4 _e32 = airlight_list_get(_e30, _e9.worst);
-            float mid_1 = 0.5 * (_e32.x + _e32.y);
-            if (mid_1 > _e32.x) {
-                local_133 = mid_1 < _e32.y;
+            float mid_2 = 0.5 * (_e32.x + _e32.y);
+            if (mid_2 > _e32.x) {
+                local_133 = mid_2 < _e32.y;
             } else {
                 local_133 = false;
             }
@@ -5526,7 +5527,7 @@ AirlightSplit airlight_split_worst(
                 airlight_list_set(list_1, _e9.worst, metal::float4(_e32.xyz, 0.0));
                 continue;
             }
-            return AirlightSplit {true, {}, _e32.x, mid_1, _e32.y, _e9.worst};
+            return AirlightSplit {true, {}, _e32.x, mid_2, _e32.y, _e9.worst};
         }
     }
     return AirlightSplit {false, {}, 0.0, 0.0, 0.0, 0u};
@@ -5563,11 +5564,11 @@ AirlightAdaptive airlight_adaptive_step(
         uint _e26 = st.count;
         st.count = _e26 + 1u;
     }
-    uint count_3 = st.count;
-    if (count_3 < panels) {
-        st.lo = edges.inner[metal::min(unsigned(count_3), 12u)];
-        st.hi = edges.inner[metal::min(unsigned(count_3 + 1u), 12u)];
-        st.slot = count_3;
+    uint count_4 = st.count;
+    if (count_4 < panels) {
+        st.lo = edges.inner[metal::min(unsigned(count_4), 12u)];
+        st.hi = edges.inner[metal::min(unsigned(count_4 + 1u), 12u)];
+        st.slot = count_4;
     } else {
         bool _e40 = st.queued;
         if (_e40) {
@@ -5575,10 +5576,10 @@ AirlightAdaptive airlight_adaptive_step(
             st.lo = _e43;
             float _e46 = st.queued_hi;
             st.hi = _e46;
-            st.slot = count_3;
+            st.slot = count_4;
             st.queued = false;
         } else {
-            AirlightSplit _e50 = airlight_split_worst(list_2, count_3, max_panels_1, tolerance_1);
+            AirlightSplit _e50 = airlight_split_worst(list_2, count_4, max_panels_1, tolerance_1);
             st.lo = _e50.lo;
             st.hi = _e50.mid;
             st.slot = _e50.slot;
@@ -8735,12 +8736,17 @@ float airlight_sphere_about_lobe(
 ) {
     metal::float2 axis_2 = metal::float2(1.0, 0.0);
     float half_15 = 0.0;
+    uint count_3 = {};
     float sum_14 = 0.0;
     uint i_41 = 0u;
     float big_b_1 = {};
     float wpsi = {};
     bool local_191 = {};
+    bool local_192 = {};
+    float mid = {};
+    bool local_193 = {};
     float start_5 = {};
+    float to_1 = {};
     float around = {};
     metal::float3 p_8 = sign_2 * a_28.d;
     metal::float3 _e8 = airlight_basis_e1_(p_8);
@@ -8761,161 +8767,221 @@ float airlight_sphere_about_lobe(
     float _e56 = axis_2.y;
     float _e58 = axis_2.x;
     AirlightEdgeRule rim_1 = AirlightEdgeRule {eps, {}, metal::float2(_e56, -(_e58)), metal::sqrt((eps * eps) + (width_7 * width_7)), -1.5707964, 1.5707964};
-    uint count_4 = inside_3 ? 24u : 16u;
+    bool beyond = cos_p_1 < -(cap_3.cos_a);
+    count_3 = inside_3 ? 24u : 16u;
+    if (beyond) {
+        count_3 = 100u;
+    }
     uint2 loop_bound_53 = uint2(4294967295u);
     bool loop_init_52 = true;
     while(true) {
         if (metal::all(loop_bound_53 == uint2(0u))) { break; }
         loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
         if (!loop_init_52) {
-            uint _e347 = i_41;
-            i_41 = _e347 + 1u;
+            uint _e431 = i_41;
+            i_41 = _e431 + 1u;
         }
         loop_init_52 = false;
-        uint _e75 = i_41;
-        if (_e75 < count_4) {
+        uint _e80 = i_41;
+        uint _e81 = count_3;
+        if (_e80 < _e81) {
         } else {
             break;
         }
         {
             big_b_1 = 0.0;
             wpsi = 0.0;
-            if (inside_3) {
-                uint _e83 = i_41;
-                local_191 = _e83 < 8u;
+            if (beyond) {
+                uint _e89 = i_41;
+                local_191 = _e89 < 84u;
             } else {
                 local_191 = false;
             }
-            bool _e87 = local_191;
-            if (_e87) {
-                if (!((eps > 0.0))) {
+            bool _e93 = local_191;
+            if (_e93) {
+                uint _e94 = i_41;
+                float _e97 = airlight_mercator_cut(airlight_naga_div(_e94, 12u));
+                float lo_9 = metal::max(0.0, _e97);
+                float _e101 = airlight_mercator_cut(7u);
+                uint _e102 = i_41;
+                float _e107 = airlight_mercator_cut(airlight_naga_div(_e102, 12u) + 1u);
+                float hi_10 = metal::min(_e101, _e107);
+                if (!((lo_9 < hi_10))) {
                     continue;
                 }
-                uint _e92 = i_41;
-                metal::float2 _e96 = airlight_radial_rule((2u * _e92) + 1u);
-                metal::float4 _e100 = airlight_edge_at(rim_1, 1.5707964 * _e96.x);
-                metal::float2 _e102 = axis_2;
-                big_b_1 = sin_p * metal::dot(_e100.xy, _e102);
-                wpsi = (((2.0 * _e96.y) * 0.5) * AIRLIGHT_PI) * _e100.w;
+                uint _e111 = i_41;
+                metal::float2 _e114 = airlight_triangle_rule(airlight_naga_mod(_e111, 12u));
+                float hw_8 = 0.5 * (hi_10 - lo_9);
+                float x_39 = (0.5 * (lo_9 + hi_10)) + (hw_8 * _e114.x);
+                float e_19 = metal::exp(-(metal::abs(x_39)));
+                float sech_1 = (2.0 * e_19) / (1.0 + (e_19 * e_19));
+                big_b_1 = sin_p * sech_1;
+                wpsi = ((2.0 * _e114.y) * hw_8) * sech_1;
             } else {
-                if (inside_3) {
-                    uint _e114 = i_41;
-                    metal::float3 _e117 = airlight_azimuths_even(_e114 - 8u);
-                    big_b_1 = sin_p * _e117.x;
-                    wpsi = _e117.z;
+                if (beyond) {
+                    uint _e139 = i_41;
+                    metal::float3 _e142 = airlight_azimuths_even(_e139 - 84u);
+                    big_b_1 = -(sin_p) * _e142.x;
+                    wpsi = _e142.z;
                 } else {
-                    uint _e121 = i_41;
-                    metal::float3 _e122 = airlight_azimuths_even(_e121);
-                    float _e123 = half_15;
-                    metal::float2 _e126 = airlight_cos_sin(_e123 * _e122.y);
-                    big_b_1 = sin_p * _e126.x;
-                    float _e130 = half_15;
-                    wpsi = (_e122.z * _e130) * _e122.x;
+                    if (inside_3) {
+                        uint _e149 = i_41;
+                        local_192 = _e149 < 8u;
+                    } else {
+                        local_192 = false;
+                    }
+                    bool _e153 = local_192;
+                    if (_e153) {
+                        if (!((eps > 0.0))) {
+                            continue;
+                        }
+                        uint _e158 = i_41;
+                        metal::float2 _e162 = airlight_radial_rule((2u * _e158) + 1u);
+                        metal::float4 _e166 = airlight_edge_at(rim_1, 1.5707964 * _e162.x);
+                        metal::float2 _e168 = axis_2;
+                        big_b_1 = sin_p * metal::dot(_e166.xy, _e168);
+                        wpsi = (((2.0 * _e162.y) * 0.5) * AIRLIGHT_PI) * _e166.w;
+                    } else {
+                        if (inside_3) {
+                            uint _e180 = i_41;
+                            metal::float3 _e183 = airlight_azimuths_even(_e180 - 8u);
+                            big_b_1 = sin_p * _e183.x;
+                            wpsi = _e183.z;
+                        } else {
+                            uint _e187 = i_41;
+                            metal::float3 _e188 = airlight_azimuths_even(_e187);
+                            float _e189 = half_15;
+                            metal::float2 _e192 = airlight_cos_sin(_e189 * _e188.y);
+                            big_b_1 = sin_p * _e192.x;
+                            float _e196 = half_15;
+                            wpsi = (_e188.z * _e196) * _e188.x;
+                        }
+                    }
                 }
             }
-            float _e134 = big_b_1;
-            float _e135 = airlight_atan2_(_e134, cos_p_1);
-            float _e138 = big_b_1;
-            float _e139 = big_b_1;
-            float _e146 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e138 * _e139)), 1.0));
+            float _e200 = big_b_1;
+            float _e201 = airlight_atan2_(_e200, cos_p_1);
+            mid = _e201;
+            if (beyond) {
+                float _e205 = mid;
+                local_193 = _e205 < 0.0;
+            } else {
+                local_193 = false;
+            }
+            bool _e209 = local_193;
+            if (_e209) {
+                float _e210 = mid;
+                mid = _e210 + 6.2831855;
+            }
+            float _e215 = big_b_1;
+            float _e216 = big_b_1;
+            float _e223 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e215 * _e216)), 1.0));
             start_5 = 0.0;
             if (!(inside_3)) {
-                start_5 = metal::max(_e135 - _e146, 0.0);
+                float _e227 = mid;
+                start_5 = metal::max(_e227 - _e223, 0.0);
             }
-            float _e153 = start_5;
-            metal::float2 _e155 = airlight_graded_from(scale_3, _e153, _e135 + _e146);
-            float graded_10 = _e155.x;
-            float c_25 = 0.5 * _e155.y;
-            float hw_8 = 0.5 * _e155.y;
+            float _e231 = mid;
+            to_1 = _e231 + _e223;
+            if (beyond) {
+                float _e234 = to_1;
+                to_1 = metal::min(_e234, AIRLIGHT_PI);
+            }
+            float _e237 = start_5;
+            float _e238 = to_1;
+            metal::float2 _e239 = airlight_graded_from(scale_3, _e237, _e238);
+            float graded_10 = _e239.x;
+            float c_25 = 0.5 * _e239.y;
+            float hw_9 = 0.5 * _e239.y;
             around = 0.0;
-            float _e165 = around;
-            float _e168 = big_b_1;
-            float _e169 = start_5;
-            float _e173 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e168, _e169, graded_10, c_25 - (0.09501251 * hw_8));
-            around = _e165 + ((0.1894506 * hw_8) * _e173);
-            float _e176 = around;
-            float _e179 = big_b_1;
-            float _e180 = start_5;
-            float _e184 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e179, _e180, graded_10, c_25 + (0.09501251 * hw_8));
-            around = _e176 + ((0.1894506 * hw_8) * _e184);
-            float _e187 = around;
-            float _e190 = big_b_1;
-            float _e191 = start_5;
-            float _e195 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e190, _e191, graded_10, c_25 - (0.28160354 * hw_8));
-            around = _e187 + ((0.18260342 * hw_8) * _e195);
-            float _e198 = around;
-            float _e201 = big_b_1;
-            float _e202 = start_5;
-            float _e206 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e201, _e202, graded_10, c_25 + (0.28160354 * hw_8));
-            around = _e198 + ((0.18260342 * hw_8) * _e206);
-            float _e209 = around;
-            float _e212 = big_b_1;
-            float _e213 = start_5;
-            float _e217 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e212, _e213, graded_10, c_25 - (0.45801678 * hw_8));
-            around = _e209 + ((0.16915652 * hw_8) * _e217);
-            float _e220 = around;
-            float _e223 = big_b_1;
-            float _e224 = start_5;
-            float _e228 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e223, _e224, graded_10, c_25 + (0.45801678 * hw_8));
-            around = _e220 + ((0.16915652 * hw_8) * _e228);
-            float _e231 = around;
-            float _e234 = big_b_1;
-            float _e235 = start_5;
-            float _e239 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e234, _e235, graded_10, c_25 - (0.61787623 * hw_8));
-            around = _e231 + ((0.14959599 * hw_8) * _e239);
-            float _e242 = around;
-            float _e245 = big_b_1;
-            float _e246 = start_5;
-            float _e250 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e245, _e246, graded_10, c_25 + (0.61787623 * hw_8));
-            around = _e242 + ((0.14959599 * hw_8) * _e250);
-            float _e253 = around;
-            float _e256 = big_b_1;
-            float _e257 = start_5;
-            float _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e256, _e257, graded_10, c_25 - (0.7554044 * hw_8));
-            around = _e253 + ((0.12462897 * hw_8) * _e261);
-            float _e264 = around;
-            float _e267 = big_b_1;
-            float _e268 = start_5;
-            float _e272 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, _e268, graded_10, c_25 + (0.7554044 * hw_8));
-            around = _e264 + ((0.12462897 * hw_8) * _e272);
-            float _e275 = around;
-            float _e278 = big_b_1;
-            float _e279 = start_5;
-            float _e283 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e278, _e279, graded_10, c_25 - (0.8656312 * hw_8));
-            around = _e275 + ((0.09515851 * hw_8) * _e283);
-            float _e286 = around;
-            float _e289 = big_b_1;
-            float _e290 = start_5;
-            float _e294 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e289, _e290, graded_10, c_25 + (0.8656312 * hw_8));
-            around = _e286 + ((0.09515851 * hw_8) * _e294);
-            float _e297 = around;
-            float _e300 = big_b_1;
-            float _e301 = start_5;
-            float _e305 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e300, _e301, graded_10, c_25 - (0.944575 * hw_8));
-            around = _e297 + ((0.062253524 * hw_8) * _e305);
-            float _e308 = around;
-            float _e311 = big_b_1;
-            float _e312 = start_5;
-            float _e316 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e311, _e312, graded_10, c_25 + (0.944575 * hw_8));
-            around = _e308 + ((0.062253524 * hw_8) * _e316);
-            float _e319 = around;
-            float _e322 = big_b_1;
-            float _e323 = start_5;
-            float _e327 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e322, _e323, graded_10, c_25 - (0.9894009 * hw_8));
-            around = _e319 + ((0.02715246 * hw_8) * _e327);
-            float _e330 = around;
-            float _e333 = big_b_1;
-            float _e334 = start_5;
-            float _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e333, _e334, graded_10, c_25 + (0.9894009 * hw_8));
-            around = _e330 + ((0.02715246 * hw_8) * _e338);
-            float _e341 = sum_14;
-            float _e342 = wpsi;
-            float _e343 = around;
-            sum_14 = _e341 + (_e342 * _e343);
+            float _e249 = around;
+            float _e252 = big_b_1;
+            float _e253 = start_5;
+            float _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, c_25 - (0.09501251 * hw_9));
+            around = _e249 + ((0.1894506 * hw_9) * _e257);
+            float _e260 = around;
+            float _e263 = big_b_1;
+            float _e264 = start_5;
+            float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, c_25 + (0.09501251 * hw_9));
+            around = _e260 + ((0.1894506 * hw_9) * _e268);
+            float _e271 = around;
+            float _e274 = big_b_1;
+            float _e275 = start_5;
+            float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, c_25 - (0.28160354 * hw_9));
+            around = _e271 + ((0.18260342 * hw_9) * _e279);
+            float _e282 = around;
+            float _e285 = big_b_1;
+            float _e286 = start_5;
+            float _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, c_25 + (0.28160354 * hw_9));
+            around = _e282 + ((0.18260342 * hw_9) * _e290);
+            float _e293 = around;
+            float _e296 = big_b_1;
+            float _e297 = start_5;
+            float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, c_25 - (0.45801678 * hw_9));
+            around = _e293 + ((0.16915652 * hw_9) * _e301);
+            float _e304 = around;
+            float _e307 = big_b_1;
+            float _e308 = start_5;
+            float _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, c_25 + (0.45801678 * hw_9));
+            around = _e304 + ((0.16915652 * hw_9) * _e312);
+            float _e315 = around;
+            float _e318 = big_b_1;
+            float _e319 = start_5;
+            float _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, c_25 - (0.61787623 * hw_9));
+            around = _e315 + ((0.14959599 * hw_9) * _e323);
+            float _e326 = around;
+            float _e329 = big_b_1;
+            float _e330 = start_5;
+            float _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, c_25 + (0.61787623 * hw_9));
+            around = _e326 + ((0.14959599 * hw_9) * _e334);
+            float _e337 = around;
+            float _e340 = big_b_1;
+            float _e341 = start_5;
+            float _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, c_25 - (0.7554044 * hw_9));
+            around = _e337 + ((0.12462897 * hw_9) * _e345);
+            float _e348 = around;
+            float _e351 = big_b_1;
+            float _e352 = start_5;
+            float _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, c_25 + (0.7554044 * hw_9));
+            around = _e348 + ((0.12462897 * hw_9) * _e356);
+            float _e359 = around;
+            float _e362 = big_b_1;
+            float _e363 = start_5;
+            float _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, c_25 - (0.8656312 * hw_9));
+            around = _e359 + ((0.09515851 * hw_9) * _e367);
+            float _e370 = around;
+            float _e373 = big_b_1;
+            float _e374 = start_5;
+            float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, c_25 + (0.8656312 * hw_9));
+            around = _e370 + ((0.09515851 * hw_9) * _e378);
+            float _e381 = around;
+            float _e384 = big_b_1;
+            float _e385 = start_5;
+            float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, c_25 - (0.944575 * hw_9));
+            around = _e381 + ((0.062253524 * hw_9) * _e389);
+            float _e392 = around;
+            float _e395 = big_b_1;
+            float _e396 = start_5;
+            float _e400 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, _e396, graded_10, c_25 + (0.944575 * hw_9));
+            around = _e392 + ((0.062253524 * hw_9) * _e400);
+            float _e403 = around;
+            float _e406 = big_b_1;
+            float _e407 = start_5;
+            float _e411 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, _e407, graded_10, c_25 - (0.9894009 * hw_9));
+            around = _e403 + ((0.02715246 * hw_9) * _e411);
+            float _e414 = around;
+            float _e417 = big_b_1;
+            float _e418 = start_5;
+            float _e422 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e417, _e418, graded_10, c_25 + (0.9894009 * hw_9));
+            around = _e414 + ((0.02715246 * hw_9) * _e422);
+            float _e425 = sum_14;
+            float _e426 = wpsi;
+            float _e427 = around;
+            sum_14 = _e425 + (_e426 * _e427);
         }
     }
-    float _e349 = sum_14;
-    return _e349;
+    float _e433 = sum_14;
+    return _e433;
 }
 
 float airlight_sphere(
@@ -8927,11 +8993,12 @@ float airlight_sphere(
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_14 = 0u;
-    bool local_192 = {};
-    bool local_193 = {};
     bool local_194 = {};
     bool local_195 = {};
     bool local_196 = {};
+    bool local_197 = {};
+    bool local_198 = {};
+    bool local_199 = {};
     metal::float3 v_12 = a_29.c - x_28;
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_29.radius))) {
@@ -8946,8 +9013,8 @@ float airlight_sphere(
         if (metal::all(loop_bound_54 == uint2(0u))) { break; }
         loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
         if (!loop_init_53) {
-            uint _e92 = j_14;
-            j_14 = _e92 + 1u;
+            uint _e101 = j_14;
+            j_14 = _e101 + 1u;
         }
         loop_init_53 = false;
         uint _e32 = j_14;
@@ -8961,53 +9028,59 @@ float airlight_sphere(
             float c_26 = metal::dot(cap_4.a, lobe_6.x * a_29.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_192 = lobe_6.y > 0.0;
-            } else {
-                local_192 = false;
-            }
-            bool _e57 = local_192;
-            if (_e57) {
-                local_193 = lobe_6.y < (_e23 + _e23);
-            } else {
-                local_193 = false;
-            }
-            bool _e64 = local_193;
-            if (_e64) {
-                if (!((c_26 > cap_4.cos_a))) {
-                    if (c_26 > -(cap_4.cos_a)) {
-                        float _e77 = airlight_acos(c_26);
-                        local_196 = (_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y);
-                    } else {
-                        local_196 = false;
-                    }
-                    bool _e84 = local_196;
-                    local_195 = _e84;
-                } else {
-                    local_195 = true;
-                }
-                bool _e86 = local_195;
-                local_194 = _e86;
+                local_194 = lobe_6.y > 0.0;
             } else {
                 local_194 = false;
             }
-            bool _e88 = local_194;
-            if (_e88) {
+            bool _e57 = local_194;
+            if (_e57) {
+                local_195 = lobe_6.y < (_e23 + _e23);
+            } else {
+                local_195 = false;
+            }
+            bool _e64 = local_195;
+            if (_e64) {
+                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                    local_197 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
+                } else {
+                    local_197 = true;
+                }
+                bool _e78 = local_197;
+                local_196 = _e78;
+            } else {
+                local_196 = false;
+            }
+            bool _e80 = local_196;
+            if (_e80) {
+                if (!((c_26 > cap_4.cos_a))) {
+                    float _e88 = airlight_acos(c_26);
+                    local_199 = (_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y);
+                } else {
+                    local_199 = true;
+                }
+                bool _e95 = local_199;
+                local_198 = _e95;
+            } else {
+                local_198 = false;
+            }
+            bool _e97 = local_198;
+            if (_e97) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
                 cos_p_2 = c_26;
             }
         }
     }
-    float _e94 = chosen;
-    if (_e94 > 0.0) {
-        float _e97 = sign_3;
-        float _e98 = cos_p_2;
-        float _e99 = chosen;
-        float _e100 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e97, _e98, _e99);
-        return _e100;
+    float _e103 = chosen;
+    if (_e103 > 0.0) {
+        float _e106 = sign_3;
+        float _e107 = cos_p_2;
+        float _e108 = chosen;
+        float _e109 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e106, _e107, _e108);
+        return _e109;
     }
-    float _e101 = airlight_sphere_cap(s_49, a_29, cap_4);
-    return _e101;
+    float _e110 = airlight_sphere_cap(s_49, a_29, cap_4);
+    return _e110;
 }
 
 float airlight_emitter_radiance(
@@ -9052,7 +9125,7 @@ AirlightResult airlight_area_light(
     float k_10 = {};
     float gauss_1 = {};
     uint j_15 = {};
-    bool local_197 = {};
+    bool local_200 = {};
     AirlightArea _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
@@ -9083,7 +9156,7 @@ AirlightResult airlight_area_light(
             float c_27 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_9 = 0.5 * (_e34 - _e36);
+            float hw_10 = 0.5 * (_e34 - _e36);
             k_10 = 0.0;
             gauss_1 = 0.0;
             j_15 = 0u;
@@ -9108,13 +9181,13 @@ AirlightResult airlight_area_light(
                     uint _e59 = j_15;
                     if ((_e59 & 1u) == 0u) {
                         uint _e66 = j_15;
-                        local_197 = _e66 < 14u;
+                        local_200 = _e66 < 14u;
                     } else {
-                        local_197 = false;
+                        local_200 = false;
                     }
-                    bool _e70 = local_197;
-                    float x_39 = _e70 ? (c_27 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_52, _e1, x_39);
+                    bool _e70 = local_200;
+                    float x_40 = _e70 ? (c_27 - (hw_10 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_10 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_52, _e1, x_40);
                     float _e73 = k_10;
                     k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -9124,7 +9197,7 @@ AirlightResult airlight_area_light(
             AirlightAdaptive _e84 = st_1;
             float _e85 = k_10;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_9, _e87 * hw_9, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_10, _e87 * hw_10, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -9146,21 +9219,21 @@ AirlightResult airlight_area_light(
 AirlightResult airlight_in_scatter_area(
     AirlightScene s_53
 ) {
-    bool local_198 = {};
-    bool local_199 = {};
+    bool local_201 = {};
+    bool local_202 = {};
     bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_198 = s_53.light_shape < AIRLIGHT_SHAPE_DISC;
+        local_201 = s_53.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
-        local_198 = true;
+        local_201 = true;
     }
-    bool _e10 = local_198;
+    bool _e10 = local_201;
     if (!(_e10)) {
-        local_199 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_202 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_199 = true;
+        local_202 = true;
     }
-    bool _e18 = local_199;
+    bool _e18 = local_202;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9171,14 +9244,14 @@ AirlightResult airlight_in_scatter_area(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_200 = {};
+    bool local_203 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_200 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_203 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_200 = true;
+        local_203 = true;
     }
-    bool _e11 = local_200;
+    bool _e11 = local_203;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9189,17 +9262,17 @@ AirlightResult airlight_node_integral(
     AirlightNode n_5
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_201 = {};
+    bool local_204 = {};
     AirlightCanonical g_29 = {};
     AirlightScene p_9 = n_5.scene;
     bool _e7 = airlight_vec_finite(n_5.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_5.scene.dir);
-        local_201 = _e11;
+        local_204 = _e11;
     } else {
-        local_201 = false;
+        local_204 = false;
     }
-    bool _e13 = local_201;
+    bool _e13 = local_204;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -9227,21 +9300,21 @@ AirlightResult airlight_point_integral(
 AirlightResult airlight_in_scatter_point(
     AirlightScene s_54
 ) {
-    bool local_202 = {};
-    bool local_203 = {};
+    bool local_205 = {};
+    bool local_206 = {};
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_202 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_205 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_202 = true;
+        local_205 = true;
     }
-    bool _e10 = local_202;
+    bool _e10 = local_205;
     if (!(_e10)) {
-        local_203 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_206 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_203 = true;
+        local_206 = true;
     }
-    bool _e18 = local_203;
+    bool _e18 = local_206;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9252,21 +9325,21 @@ AirlightResult airlight_in_scatter_point(
 AirlightResult airlight_in_scatter_route(
     AirlightScene s_55
 ) {
-    bool local_204 = {};
-    bool local_205 = {};
+    bool local_207 = {};
+    bool local_208 = {};
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_204 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_207 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_204 = true;
+        local_207 = true;
     }
-    bool _e10 = local_204;
+    bool _e10 = local_207;
     if (!(_e10)) {
-        local_205 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_208 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_205 = true;
+        local_208 = true;
     }
-    bool _e18 = local_205;
+    bool _e18 = local_208;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9296,9 +9369,9 @@ AirlightResult airlight_in_scatter(
     float k_11 = {};
     float gauss_2 = {};
     uint j_16 = {};
-    bool local_206 = {};
+    bool local_209 = {};
     float f = {};
-    bool local_207 = {};
+    bool local_210 = {};
     bool _e1 = airlight_valid(s_56);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -9338,7 +9411,7 @@ AirlightResult airlight_in_scatter(
             float c_28 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_10 = 0.5 * (_e49 - _e51);
+            float hw_11 = 0.5 * (_e49 - _e51);
             k_11 = 0.0;
             gauss_2 = 0.0;
             j_16 = 0u;
@@ -9363,12 +9436,12 @@ AirlightResult airlight_in_scatter(
                     uint _e74 = j_16;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_16;
-                        local_206 = _e81 < 6u;
+                        local_209 = _e81 < 6u;
                     } else {
-                        local_206 = false;
+                        local_209 = false;
                     }
-                    bool _e85 = local_206;
-                    float w_11 = _e85 ? (c_28 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    bool _e85 = local_209;
+                    float w_11 = _e85 ? (c_28 - (hw_11 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_11 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
                     AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
@@ -9377,11 +9450,11 @@ AirlightResult airlight_in_scatter(
                             return _e93;
                         }
                         if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_207 = s_56.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_210 = s_56.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_207 = false;
+                            local_210 = false;
                         }
-                        bool _e106 = local_207;
+                        bool _e106 = local_210;
                         if (_e106) {
                             return _e93;
                         }
@@ -9398,7 +9471,7 @@ AirlightResult airlight_in_scatter(
             AirlightAdaptive _e123 = st_2;
             float _e124 = k_11;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_10, _e126 * hw_10, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_11, _e126 * hw_11, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

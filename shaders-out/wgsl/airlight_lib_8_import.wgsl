@@ -302,6 +302,7 @@ const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
+const AIRLIGHT_BESIDE_SCALE: f32 = 0.25f;
 const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
 const AIRLIGHT_CROSSING_REACH: f32 = 16f;
 
@@ -2665,13 +2666,13 @@ fn airlight_integrate_piece(s_10: AirlightScene, g_12: AirlightCanonical, sigma_
                         continue;
                     }
                     let _e212 = airlight_graded_split(wa, wb, _e10);
-                    let mid = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
+                    let mid_1 = select((wa + ((wb - wa) * 0.5f)), _e212, (_e212 >= 0f));
                     a_10 = wa;
-                    b_9 = mid;
+                    b_9 = mid_1;
                     let _e220 = worst;
                     slot = _e220;
                     pending = true;
-                    next_a = mid;
+                    next_a = mid_1;
                     next_b = wb;
                     break;
                 }
@@ -4950,9 +4951,9 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             }
             let _e30 = (*list_1);
             let _e32 = airlight_list_get(_e30, _e9.worst);
-            let mid_1 = (0.5f * (_e32.x + _e32.y));
-            if (mid_1 > _e32.x) {
-                local_133 = (mid_1 < _e32.y);
+            let mid_2 = (0.5f * (_e32.x + _e32.y));
+            if (mid_2 > _e32.x) {
+                local_133 = (mid_2 < _e32.y);
             } else {
                 local_133 = false;
             }
@@ -4961,7 +4962,7 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
             }
-            return AirlightSplit(true, _e32.x, mid_1, _e32.y, _e9.worst);
+            return AirlightSplit(true, _e32.x, mid_2, _e32.y, _e9.worst);
         }
         continuing {
             let _e57 = tries;
@@ -4992,11 +4993,11 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
         let _e26 = st.count;
         st.count = (_e26 + 1u);
     }
-    let count_3 = st.count;
-    if (count_3 < panels) {
-        st.lo = edges[count_3];
-        st.hi = edges[(count_3 + 1u)];
-        st.slot = count_3;
+    let count_4 = st.count;
+    if (count_4 < panels) {
+        st.lo = edges[count_4];
+        st.hi = edges[(count_4 + 1u)];
+        st.slot = count_4;
     } else {
         let _e40 = st.queued;
         if _e40 {
@@ -5004,10 +5005,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
             st.lo = _e43;
             let _e46 = st.queued_hi;
             st.hi = _e46;
-            st.slot = count_3;
+            st.slot = count_4;
             st.queued = false;
         } else {
-            let _e50 = airlight_split_worst((&list_2), count_3, max_panels_1, tolerance_1);
+            let _e50 = airlight_split_worst((&list_2), count_4, max_panels_1, tolerance_1);
             st.lo = _e50.lo;
             st.hi = _e50.mid;
             st.slot = _e50.slot;
@@ -7797,12 +7798,17 @@ fn airlight_sphere_lobe_node(s_47: AirlightScene, cap_2: AirlightCap, sign_1: f3
 fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
+    var count_3: u32;
     var sum_14: f32 = 0f;
     var i_41: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var local_191: bool;
+    var local_192: bool;
+    var mid: f32;
+    var local_193: bool;
     var start_5: f32;
+    var to_1: f32;
     var around: f32;
 
     let p_8 = (sign_2 * a_28.d);
@@ -7824,156 +7830,216 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: Ai
     let _e56 = axis_2.y;
     let _e58 = axis_2.x;
     let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e56, -(_e58)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
-    let count_4 = select(16u, 24u, inside_3);
+    let beyond = (cos_p_1 < -(cap_3.cos_a));
+    count_3 = select(16u, 24u, inside_3);
+    if beyond {
+        count_3 = 100u;
+    }
     loop {
-        let _e75 = i_41;
-        if (_e75 < count_4) {
+        let _e80 = i_41;
+        let _e81 = count_3;
+        if (_e80 < _e81) {
         } else {
             break;
         }
         {
             big_b_1 = 0f;
             wpsi = 0f;
-            if inside_3 {
-                let _e83 = i_41;
-                local_191 = (_e83 < 8u);
+            if beyond {
+                let _e89 = i_41;
+                local_191 = (_e89 < 84u);
             } else {
                 local_191 = false;
             }
-            let _e87 = local_191;
-            if _e87 {
-                if !((eps > 0f)) {
+            let _e93 = local_191;
+            if _e93 {
+                let _e94 = i_41;
+                let _e97 = airlight_mercator_cut((_e94 / 12u));
+                let lo_9 = max(0f, _e97);
+                let _e101 = airlight_mercator_cut(7u);
+                let _e102 = i_41;
+                let _e107 = airlight_mercator_cut(((_e102 / 12u) + 1u));
+                let hi_10 = min(_e101, _e107);
+                if !((lo_9 < hi_10)) {
                     continue;
                 }
-                let _e92 = i_41;
-                let _e96 = airlight_radial_rule(((2u * _e92) + 1u));
-                let _e100 = airlight_edge_at(rim_1, (1.5707964f * _e96.x));
-                let _e102 = axis_2;
-                big_b_1 = (sin_p * dot(_e100.xy, _e102));
-                wpsi = ((((2f * _e96.y) * 0.5f) * AIRLIGHT_PI) * _e100.w);
+                let _e111 = i_41;
+                let _e114 = airlight_triangle_rule((_e111 % 12u));
+                let hw_8 = (0.5f * (hi_10 - lo_9));
+                let x_39 = ((0.5f * (lo_9 + hi_10)) + (hw_8 * _e114.x));
+                let e_19 = exp(-(abs(x_39)));
+                let sech_1 = ((2f * e_19) / (1f + (e_19 * e_19)));
+                big_b_1 = (sin_p * sech_1);
+                wpsi = (((2f * _e114.y) * hw_8) * sech_1);
             } else {
-                if inside_3 {
-                    let _e114 = i_41;
-                    let _e117 = airlight_azimuths_even((_e114 - 8u));
-                    big_b_1 = (sin_p * _e117.x);
-                    wpsi = _e117.z;
+                if beyond {
+                    let _e139 = i_41;
+                    let _e142 = airlight_azimuths_even((_e139 - 84u));
+                    big_b_1 = (-(sin_p) * _e142.x);
+                    wpsi = _e142.z;
                 } else {
-                    let _e121 = i_41;
-                    let _e122 = airlight_azimuths_even(_e121);
-                    let _e123 = half_15;
-                    let _e126 = airlight_cos_sin((_e123 * _e122.y));
-                    big_b_1 = (sin_p * _e126.x);
-                    let _e130 = half_15;
-                    wpsi = ((_e122.z * _e130) * _e122.x);
+                    if inside_3 {
+                        let _e149 = i_41;
+                        local_192 = (_e149 < 8u);
+                    } else {
+                        local_192 = false;
+                    }
+                    let _e153 = local_192;
+                    if _e153 {
+                        if !((eps > 0f)) {
+                            continue;
+                        }
+                        let _e158 = i_41;
+                        let _e162 = airlight_radial_rule(((2u * _e158) + 1u));
+                        let _e166 = airlight_edge_at(rim_1, (1.5707964f * _e162.x));
+                        let _e168 = axis_2;
+                        big_b_1 = (sin_p * dot(_e166.xy, _e168));
+                        wpsi = ((((2f * _e162.y) * 0.5f) * AIRLIGHT_PI) * _e166.w);
+                    } else {
+                        if inside_3 {
+                            let _e180 = i_41;
+                            let _e183 = airlight_azimuths_even((_e180 - 8u));
+                            big_b_1 = (sin_p * _e183.x);
+                            wpsi = _e183.z;
+                        } else {
+                            let _e187 = i_41;
+                            let _e188 = airlight_azimuths_even(_e187);
+                            let _e189 = half_15;
+                            let _e192 = airlight_cos_sin((_e189 * _e188.y));
+                            big_b_1 = (sin_p * _e192.x);
+                            let _e196 = half_15;
+                            wpsi = ((_e188.z * _e196) * _e188.x);
+                        }
+                    }
                 }
             }
-            let _e134 = big_b_1;
-            let _e135 = airlight_atan2_(_e134, cos_p_1);
-            let _e138 = big_b_1;
-            let _e139 = big_b_1;
-            let _e146 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e138 * _e139)))), 1f));
+            let _e200 = big_b_1;
+            let _e201 = airlight_atan2_(_e200, cos_p_1);
+            mid = _e201;
+            if beyond {
+                let _e205 = mid;
+                local_193 = (_e205 < 0f);
+            } else {
+                local_193 = false;
+            }
+            let _e209 = local_193;
+            if _e209 {
+                let _e210 = mid;
+                mid = (_e210 + 6.2831855f);
+            }
+            let _e215 = big_b_1;
+            let _e216 = big_b_1;
+            let _e223 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e215 * _e216)))), 1f));
             start_5 = 0f;
             if !(inside_3) {
-                start_5 = max((_e135 - _e146), 0f);
+                let _e227 = mid;
+                start_5 = max((_e227 - _e223), 0f);
             }
-            let _e153 = start_5;
-            let _e155 = airlight_graded_from(scale_3, _e153, (_e135 + _e146));
-            let graded_10 = _e155.x;
-            let c_25 = (0.5f * _e155.y);
-            let hw_8 = (0.5f * _e155.y);
+            let _e231 = mid;
+            to_1 = (_e231 + _e223);
+            if beyond {
+                let _e234 = to_1;
+                to_1 = min(_e234, AIRLIGHT_PI);
+            }
+            let _e237 = start_5;
+            let _e238 = to_1;
+            let _e239 = airlight_graded_from(scale_3, _e237, _e238);
+            let graded_10 = _e239.x;
+            let c_25 = (0.5f * _e239.y);
+            let hw_9 = (0.5f * _e239.y);
             around = 0f;
-            let _e165 = around;
-            let _e168 = big_b_1;
-            let _e169 = start_5;
-            let _e173 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e168, _e169, graded_10, (c_25 - (0.09501251f * hw_8)));
-            around = (_e165 + ((0.1894506f * hw_8) * _e173));
-            let _e176 = around;
-            let _e179 = big_b_1;
-            let _e180 = start_5;
-            let _e184 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e179, _e180, graded_10, (c_25 + (0.09501251f * hw_8)));
-            around = (_e176 + ((0.1894506f * hw_8) * _e184));
-            let _e187 = around;
-            let _e190 = big_b_1;
-            let _e191 = start_5;
-            let _e195 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e190, _e191, graded_10, (c_25 - (0.28160354f * hw_8)));
-            around = (_e187 + ((0.18260342f * hw_8) * _e195));
-            let _e198 = around;
-            let _e201 = big_b_1;
-            let _e202 = start_5;
-            let _e206 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e201, _e202, graded_10, (c_25 + (0.28160354f * hw_8)));
-            around = (_e198 + ((0.18260342f * hw_8) * _e206));
-            let _e209 = around;
-            let _e212 = big_b_1;
-            let _e213 = start_5;
-            let _e217 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e212, _e213, graded_10, (c_25 - (0.45801678f * hw_8)));
-            around = (_e209 + ((0.16915652f * hw_8) * _e217));
-            let _e220 = around;
-            let _e223 = big_b_1;
-            let _e224 = start_5;
-            let _e228 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e223, _e224, graded_10, (c_25 + (0.45801678f * hw_8)));
-            around = (_e220 + ((0.16915652f * hw_8) * _e228));
-            let _e231 = around;
-            let _e234 = big_b_1;
-            let _e235 = start_5;
-            let _e239 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e234, _e235, graded_10, (c_25 - (0.61787623f * hw_8)));
-            around = (_e231 + ((0.14959599f * hw_8) * _e239));
-            let _e242 = around;
-            let _e245 = big_b_1;
-            let _e246 = start_5;
-            let _e250 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e245, _e246, graded_10, (c_25 + (0.61787623f * hw_8)));
-            around = (_e242 + ((0.14959599f * hw_8) * _e250));
-            let _e253 = around;
-            let _e256 = big_b_1;
-            let _e257 = start_5;
-            let _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e256, _e257, graded_10, (c_25 - (0.7554044f * hw_8)));
-            around = (_e253 + ((0.12462897f * hw_8) * _e261));
-            let _e264 = around;
-            let _e267 = big_b_1;
-            let _e268 = start_5;
-            let _e272 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, _e268, graded_10, (c_25 + (0.7554044f * hw_8)));
-            around = (_e264 + ((0.12462897f * hw_8) * _e272));
-            let _e275 = around;
-            let _e278 = big_b_1;
-            let _e279 = start_5;
-            let _e283 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e278, _e279, graded_10, (c_25 - (0.8656312f * hw_8)));
-            around = (_e275 + ((0.09515851f * hw_8) * _e283));
-            let _e286 = around;
-            let _e289 = big_b_1;
-            let _e290 = start_5;
-            let _e294 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e289, _e290, graded_10, (c_25 + (0.8656312f * hw_8)));
-            around = (_e286 + ((0.09515851f * hw_8) * _e294));
-            let _e297 = around;
-            let _e300 = big_b_1;
-            let _e301 = start_5;
-            let _e305 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e300, _e301, graded_10, (c_25 - (0.944575f * hw_8)));
-            around = (_e297 + ((0.062253524f * hw_8) * _e305));
-            let _e308 = around;
-            let _e311 = big_b_1;
-            let _e312 = start_5;
-            let _e316 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e311, _e312, graded_10, (c_25 + (0.944575f * hw_8)));
-            around = (_e308 + ((0.062253524f * hw_8) * _e316));
-            let _e319 = around;
-            let _e322 = big_b_1;
-            let _e323 = start_5;
-            let _e327 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e322, _e323, graded_10, (c_25 - (0.9894009f * hw_8)));
-            around = (_e319 + ((0.02715246f * hw_8) * _e327));
-            let _e330 = around;
-            let _e333 = big_b_1;
-            let _e334 = start_5;
-            let _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e333, _e334, graded_10, (c_25 + (0.9894009f * hw_8)));
-            around = (_e330 + ((0.02715246f * hw_8) * _e338));
-            let _e341 = sum_14;
-            let _e342 = wpsi;
-            let _e343 = around;
-            sum_14 = (_e341 + (_e342 * _e343));
+            let _e249 = around;
+            let _e252 = big_b_1;
+            let _e253 = start_5;
+            let _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_25 - (0.09501251f * hw_9)));
+            around = (_e249 + ((0.1894506f * hw_9) * _e257));
+            let _e260 = around;
+            let _e263 = big_b_1;
+            let _e264 = start_5;
+            let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_25 + (0.09501251f * hw_9)));
+            around = (_e260 + ((0.1894506f * hw_9) * _e268));
+            let _e271 = around;
+            let _e274 = big_b_1;
+            let _e275 = start_5;
+            let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_25 - (0.28160354f * hw_9)));
+            around = (_e271 + ((0.18260342f * hw_9) * _e279));
+            let _e282 = around;
+            let _e285 = big_b_1;
+            let _e286 = start_5;
+            let _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_25 + (0.28160354f * hw_9)));
+            around = (_e282 + ((0.18260342f * hw_9) * _e290));
+            let _e293 = around;
+            let _e296 = big_b_1;
+            let _e297 = start_5;
+            let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_25 - (0.45801678f * hw_9)));
+            around = (_e293 + ((0.16915652f * hw_9) * _e301));
+            let _e304 = around;
+            let _e307 = big_b_1;
+            let _e308 = start_5;
+            let _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_25 + (0.45801678f * hw_9)));
+            around = (_e304 + ((0.16915652f * hw_9) * _e312));
+            let _e315 = around;
+            let _e318 = big_b_1;
+            let _e319 = start_5;
+            let _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_25 - (0.61787623f * hw_9)));
+            around = (_e315 + ((0.14959599f * hw_9) * _e323));
+            let _e326 = around;
+            let _e329 = big_b_1;
+            let _e330 = start_5;
+            let _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_25 + (0.61787623f * hw_9)));
+            around = (_e326 + ((0.14959599f * hw_9) * _e334));
+            let _e337 = around;
+            let _e340 = big_b_1;
+            let _e341 = start_5;
+            let _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_25 - (0.7554044f * hw_9)));
+            around = (_e337 + ((0.12462897f * hw_9) * _e345));
+            let _e348 = around;
+            let _e351 = big_b_1;
+            let _e352 = start_5;
+            let _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_25 + (0.7554044f * hw_9)));
+            around = (_e348 + ((0.12462897f * hw_9) * _e356));
+            let _e359 = around;
+            let _e362 = big_b_1;
+            let _e363 = start_5;
+            let _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_25 - (0.8656312f * hw_9)));
+            around = (_e359 + ((0.09515851f * hw_9) * _e367));
+            let _e370 = around;
+            let _e373 = big_b_1;
+            let _e374 = start_5;
+            let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_25 + (0.8656312f * hw_9)));
+            around = (_e370 + ((0.09515851f * hw_9) * _e378));
+            let _e381 = around;
+            let _e384 = big_b_1;
+            let _e385 = start_5;
+            let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_25 - (0.944575f * hw_9)));
+            around = (_e381 + ((0.062253524f * hw_9) * _e389));
+            let _e392 = around;
+            let _e395 = big_b_1;
+            let _e396 = start_5;
+            let _e400 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, _e396, graded_10, (c_25 + (0.944575f * hw_9)));
+            around = (_e392 + ((0.062253524f * hw_9) * _e400));
+            let _e403 = around;
+            let _e406 = big_b_1;
+            let _e407 = start_5;
+            let _e411 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, _e407, graded_10, (c_25 - (0.9894009f * hw_9)));
+            around = (_e403 + ((0.02715246f * hw_9) * _e411));
+            let _e414 = around;
+            let _e417 = big_b_1;
+            let _e418 = start_5;
+            let _e422 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e417, _e418, graded_10, (c_25 + (0.9894009f * hw_9)));
+            around = (_e414 + ((0.02715246f * hw_9) * _e422));
+            let _e425 = sum_14;
+            let _e426 = wpsi;
+            let _e427 = around;
+            sum_14 = (_e425 + (_e426 * _e427));
         }
         continuing {
-            let _e347 = i_41;
-            i_41 = (_e347 + 1u);
+            let _e431 = i_41;
+            i_41 = (_e431 + 1u);
         }
     }
-    let _e349 = sum_14;
-    return _e349;
+    let _e433 = sum_14;
+    return _e433;
 }
 
 fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> f32 {
@@ -7981,11 +8047,12 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_14: u32 = 0u;
-    var local_192: bool;
-    var local_193: bool;
     var local_194: bool;
     var local_195: bool;
     var local_196: bool;
+    var local_197: bool;
+    var local_198: bool;
+    var local_199: bool;
 
     let v_12 = (a_29.c - x_28);
     let _e5 = airlight_safe_length(v_12);
@@ -8007,57 +8074,63 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
             let c_26 = dot(cap_4.a, (lobe_6.x * a_29.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_192 = (lobe_6.y > 0f);
-            } else {
-                local_192 = false;
-            }
-            let _e57 = local_192;
-            if _e57 {
-                local_193 = (lobe_6.y < (_e23 + _e23));
-            } else {
-                local_193 = false;
-            }
-            let _e64 = local_193;
-            if _e64 {
-                if !((c_26 > cap_4.cos_a)) {
-                    if (c_26 > -(cap_4.cos_a)) {
-                        let _e77 = airlight_acos(c_26);
-                        local_196 = ((_e77 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
-                    } else {
-                        local_196 = false;
-                    }
-                    let _e84 = local_196;
-                    local_195 = _e84;
-                } else {
-                    local_195 = true;
-                }
-                let _e86 = local_195;
-                local_194 = _e86;
+                local_194 = (lobe_6.y > 0f);
             } else {
                 local_194 = false;
             }
-            let _e88 = local_194;
-            if _e88 {
+            let _e57 = local_194;
+            if _e57 {
+                local_195 = (lobe_6.y < (_e23 + _e23));
+            } else {
+                local_195 = false;
+            }
+            let _e64 = local_195;
+            if _e64 {
+                if !(!((c_26 < -(cap_4.cos_a)))) {
+                    local_197 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
+                } else {
+                    local_197 = true;
+                }
+                let _e78 = local_197;
+                local_196 = _e78;
+            } else {
+                local_196 = false;
+            }
+            let _e80 = local_196;
+            if _e80 {
+                if !((c_26 > cap_4.cos_a)) {
+                    let _e88 = airlight_acos(c_26);
+                    local_199 = ((_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+                } else {
+                    local_199 = true;
+                }
+                let _e95 = local_199;
+                local_198 = _e95;
+            } else {
+                local_198 = false;
+            }
+            let _e97 = local_198;
+            if _e97 {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
                 cos_p_2 = c_26;
             }
         }
         continuing {
-            let _e92 = j_14;
-            j_14 = (_e92 + 1u);
+            let _e101 = j_14;
+            j_14 = (_e101 + 1u);
         }
     }
-    let _e94 = chosen;
-    if (_e94 > 0f) {
-        let _e97 = sign_3;
-        let _e98 = cos_p_2;
-        let _e99 = chosen;
-        let _e100 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e97, _e98, _e99);
-        return _e100;
+    let _e103 = chosen;
+    if (_e103 > 0f) {
+        let _e106 = sign_3;
+        let _e107 = cos_p_2;
+        let _e108 = chosen;
+        let _e109 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e106, _e107, _e108);
+        return _e109;
     }
-    let _e101 = airlight_sphere_cap(s_49, a_29, cap_4);
-    return _e101;
+    let _e110 = airlight_sphere_cap(s_49, a_29, cap_4);
+    return _e110;
 }
 
 fn airlight_emitter_radiance(s_50: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
@@ -8092,7 +8165,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var k_10: f32;
     var gauss_1: f32;
     var j_15: u32;
-    var local_197: bool;
+    var local_200: bool;
 
     let _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
@@ -8115,7 +8188,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
             let c_27 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_9 = (0.5f * (_e34 - _e36));
+            let hw_10 = (0.5f * (_e34 - _e36));
             k_10 = 0f;
             gauss_1 = 0f;
             j_15 = 0u;
@@ -8131,13 +8204,13 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                     let _e59 = j_15;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_15;
-                        local_197 = (_e66 < 14u);
+                        local_200 = (_e66 < 14u);
                     } else {
-                        local_197 = false;
+                        local_200 = false;
                     }
-                    let _e70 = local_197;
-                    let x_39 = select((c_27 + (hw_9 * node_4.x)), (c_27 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_52, _e1, x_39);
+                    let _e70 = local_200;
+                    let x_40 = select((c_27 + (hw_10 * node_4.x)), (c_27 - (hw_10 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_52, _e1, x_40);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8151,7 +8224,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
             let _e84 = st_1;
             let _e85 = k_10;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -8175,22 +8248,22 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
-    var local_198: bool;
-    var local_199: bool;
+    var local_201: bool;
+    var local_202: bool;
 
     let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_198 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_201 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_198 = true;
+        local_201 = true;
     }
-    let _e10 = local_198;
+    let _e10 = local_201;
     if !(_e10) {
-        local_199 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_199 = true;
+        local_202 = true;
     }
-    let _e18 = local_199;
+    let _e18 = local_202;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8199,15 +8272,15 @@ fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_200: bool;
+    var local_203: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_200 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_203 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_200 = true;
+        local_203 = true;
     }
-    let _e11 = local_200;
+    let _e11 = local_203;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8216,18 +8289,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_201: bool;
+    var local_204: bool;
     var g_29: AirlightCanonical;
 
     let p_9 = n_5.scene;
     let _e7 = airlight_vec_finite(p_9.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_9.dir);
-        local_201 = _e11;
+        local_204 = _e11;
     } else {
-        local_201 = false;
+        local_204 = false;
     }
-    let _e13 = local_201;
+    let _e13 = local_204;
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
@@ -8251,22 +8324,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
-    var local_202: bool;
-    var local_203: bool;
+    var local_205: bool;
+    var local_206: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_202 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_205 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_202 = true;
+        local_205 = true;
     }
-    let _e10 = local_202;
+    let _e10 = local_205;
     if !(_e10) {
-        local_203 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_206 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_203 = true;
+        local_206 = true;
     }
-    let _e18 = local_203;
+    let _e18 = local_206;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8275,22 +8348,22 @@ fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
-    var local_204: bool;
-    var local_205: bool;
+    var local_207: bool;
+    var local_208: bool;
 
     let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_204 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_204 = true;
+        local_207 = true;
     }
-    let _e10 = local_204;
+    let _e10 = local_207;
     if !(_e10) {
-        local_205 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_205 = true;
+        local_208 = true;
     }
-    let _e18 = local_205;
+    let _e18 = local_208;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8318,9 +8391,9 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var k_11: f32;
     var gauss_2: f32;
     var j_16: u32;
-    var local_206: bool;
+    var local_209: bool;
     var f: f32;
-    var local_207: bool;
+    var local_210: bool;
 
     let _e1 = airlight_valid(s_56);
     if !(_e1) {
@@ -8352,7 +8425,7 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
             let c_28 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_10 = (0.5f * (_e49 - _e51));
+            let hw_11 = (0.5f * (_e49 - _e51));
             k_11 = 0f;
             gauss_2 = 0f;
             j_16 = 0u;
@@ -8368,12 +8441,12 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                     let _e74 = j_16;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_16;
-                        local_206 = (_e81 < 6u);
+                        local_209 = (_e81 < 6u);
                     } else {
-                        local_206 = false;
+                        local_209 = false;
                     }
-                    let _e85 = local_206;
-                    let w_11 = select((c_28 + (hw_10 * node_5.x)), (c_28 - (hw_10 * node_5.x)), _e85);
+                    let _e85 = local_209;
+                    let w_11 = select((c_28 + (hw_11 * node_5.x)), (c_28 - (hw_11 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8382,11 +8455,11 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_207 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_210 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_207 = false;
+                            local_210 = false;
                         }
-                        let _e106 = local_207;
+                        let _e106 = local_210;
                         if _e106 {
                             return _e93;
                         }
@@ -8407,7 +8480,7 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
             let _e123 = st_2;
             let _e124 = k_11;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

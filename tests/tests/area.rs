@@ -377,10 +377,12 @@ fn bounded_disc_with_the_lobe_next_to_its_rim() {
 
 /// The bounded method on a sphere in `g = 0.9`, `0.95` and `0.99` fog, on rays that enter it
 /// 0.001, 0.0001 and 0.00001 of its radius inside its limb, up to the middle of their chord (the
-/// part in front of it): the phase lobe's direction inside the cap next to its rim, taken in the
-/// angle `β` of the rim's tangent towards the rim (`sphere_about_lobe`; over the whole circle in
-/// `ψ`, 8.7e-3 off at `g = 0.95`); `airlight::area::outer`. Within the f32 target 1e-4 of the
-/// nested construction at tolerance 1e-10, in f64 and in f32.
+/// part in front of it) and whole: in front the phase lobe's direction is inside the cap next to
+/// its rim, taken in the angle `β` of the rim's tangent towards the rim (over the whole circle in
+/// `ψ`, 8.7e-3 off at `g = 0.95`); behind, beside the sphere, just outside the rim with the
+/// opposite direction inside the cap, taken about the lobe too, the half towards the rim in its
+/// Mercator angle (about the centre, the whole ray 1.9e-4 off); `sphere_about_lobe`. Within the
+/// f32 target 1e-4 of the nested construction at tolerance 1e-10, in f64 and in f32.
 #[test]
 fn bounded_sphere_with_the_lobe_next_to_its_limb() {
     let (center, radius) = (DVec3::new(6.0, 1.5, -0.5), 0.6);
@@ -391,8 +393,10 @@ fn bounded_sphere_with_the_lobe_next_to_its_limb() {
             // the ray's closest approach to the centre at radius − depth·radius
             let angle = (radius * (1.0 - depth) / center.length()).asin();
             let dir = towards * angle.cos() + side * angle.sin();
-            let (bounded, single, nested) = bounded_in_both_precisions_to(dir, dir.dot(center), sphere, g, 1e-10);
-            assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "depth {depth}, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
+            for t_max in [dir.dot(center), f64::INFINITY] {
+                let (bounded, single, nested) = bounded_in_both_precisions_to(dir, t_max, sphere, g, 1e-10);
+                assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "depth {depth}, g {g}, to {t_max}: bounded {bounded} (f32 {single}) vs nested {nested}");
+            }
         }
     }
 }

@@ -512,7 +512,7 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
 }
 
 /// A sphere in `g = 0.95` and `0.99` fog on rays entering it 0.001 and 0.00001 of its radius
-/// inside its limb, up to the middle of their chord (tests/area.rs
+/// inside its limb, up to the middle of their chord and (0.00001) whole (tests/area.rs
 /// `bounded_sphere_with_the_lobe_next_to_its_limb`): the f32 scene, the nested construction's
 /// value on its f32 inputs at tolerance 1e-9 in f64, a label.
 fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
@@ -526,17 +526,20 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
         for depth in [0.001f32, 0.00001] {
             let angle = (radius * (1.0 - depth) / center.length()).asin();
             let dir = towards * angle.cos() + side * angle.sin();
-            let ray = Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max: dir.dot(center) };
-            let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
-            let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
-            let double = AreaScene::new(
-                Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: ray.t_max as f64 },
-                AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
-                Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
-                AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }),
-            )
-            .unwrap();
-            cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} sphere, entering {depth} of its radius inside its limb")));
+            let ends: &[(f32, &str)] = if depth < 0.0001 { &[(dir.dot(center), "to its chord's middle"), (f32::INFINITY, "whole")] } else { &[(dir.dot(center), "to its chord's middle")] };
+            for &(t_max, part) in ends {
+                let ray = Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max };
+                let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
+                let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+                let double = AreaScene::new(
+                    Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: t_max as f64 },
+                    AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
+                    Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
+                    AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }),
+                )
+                .unwrap();
+                cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} sphere, entering {depth} of its radius inside its limb, {part}")));
+            }
         }
     }
     cases

@@ -2602,6 +2602,8 @@ const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = @AREA_RAY_TOLERANCE@;
 // How far outside a sphere's cap or a flat emitter, in radial scales, a phase lobe is taken about
 // (outer.rs LOBE_REACH).
 const AIRLIGHT_LOBE_REACH: f32 = @LOBE_REACH@;
+// The widest lobe a sphere is taken about from beside it (outer.rs BESIDE_SCALE).
+const AIRLIGHT_BESIDE_SCALE: f32 = @BESIDE_SCALE@;
 // How far inside a flat emitter's edge, in heights above its plane, its foot is taken about
 // (outer.rs EDGE_REACH).
 const AIRLIGHT_EDGE_REACH: f32 = @EDGE_REACH@;
@@ -3585,14 +3587,36 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
     // (both halves even about axis, as the wedge outside is in φ: the rules' nodes on one side,
     // weights doubled)
     let rim = AirlightEdgeRule(eps, vec2<f32>(axis.y, -axis.x), sqrt(eps * eps + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
-    let count = select(16u, 24u, inside);
+    // −p inside the cap as well (x beside the sphere, the lobe along its surface): every half
+    // great circle from p meets the cap, up to θ = π; the half towards the rim's nearest point
+    // (axis) in the Mercator angle of the rim's tangent there (MERCATOR_CUTS from 0, 12 nodes
+    // each, 7 × 12 slots), the far half in ψ, 16
+    let beyond = cos_p < -cap.cos_a;
+    var count = select(16u, 24u, inside);
+    if (beyond) { count = 7u * 12u + 16u; }
     var sum = 0.0;
     for (var i = 0u; i < count; i++) {
         // a·e_ψ = sin β_p cos(ψ − ψ_a) and the weight in ψ (outside: ψ − ψ_a = Ψ sin φ,
         // dψ = Ψ cos φ dφ)
         var big_b = 0.0;
         var wpsi = 0.0;
-        if (inside && i < 8u) {
+        if (beyond && i < 84u) {
+            let lo = max(0.0, airlight_mercator_cut(i / 12u));
+            let hi = min(airlight_mercator_cut(7u), airlight_mercator_cut(i / 12u + 1u));
+            if (!(lo < hi)) { continue; }
+            let node = airlight_triangle_rule(i % 12u);
+            let hw = 0.5 * (hi - lo);
+            let x = 0.5 * (lo + hi) + hw * node.x;
+            // sech x from e^{−|x|}
+            let e = exp(-abs(x));
+            let sech = 2.0 * e / (1.0 + e * e);
+            big_b = sin_p * sech;
+            wpsi = 2.0 * node.y * hw * sech;
+        } else if (beyond) {
+            let az = airlight_azimuths_even(i - 84u);
+            big_b = -sin_p * az.x;
+            wpsi = az.z;
+        } else if (inside && i < 8u) {
             if (!(eps > 0.0)) { continue; }
             let node = airlight_radial_rule(2u * i + 1u);
             let at = airlight_edge_at(rim, 0.5 * AIRLIGHT_PI * node.x);
@@ -3607,11 +3631,14 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
             big_b = sin_p * airlight_cos_sin(half * az.y).x;
             wpsi = az.z * half * az.x;
         }
-        let mid = airlight_atan2(big_b, cos_p);
+        var mid = airlight_atan2(big_b, cos_p);
+        if (beyond && mid < 0.0) { mid += 2.0 * AIRLIGHT_PI; }
         let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
         var start = 0.0;
         if (!inside) { start = max(mid - spread, 0.0); }
-        let range = airlight_graded_from(scale, start, mid + spread);
+        var to = mid + spread;
+        if (beyond) { to = min(to, AIRLIGHT_PI); }
+        let range = airlight_graded_from(scale, start, to);
         let graded = range.x;
         let c = 0.5 * range.y;
         let hw = 0.5 * range.y;
@@ -3629,7 +3656,8 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
     let sin_a = a.radius / dc;
     let cap = AirlightCap(v / dc, dc, a.radius, sin_a, sqrt((1.0 - sin_a) * (1.0 + sin_a)));
     // a lobe narrower than the cap (κ < α) whose direction lies inside it, or outside within
-    // LOBE_REACH scales of its rim (and not beyond the great circle opposite the centre)
+    // LOBE_REACH scales of its rim (beyond the great circle opposite the centre, beside the
+    // sphere, only one narrower than BESIDE_SCALE)
     let alpha = airlight_atan2_upper(sin_a, cap.cos_a);
     var chosen = 0.0;
     var sign = 1.0;
@@ -3638,7 +3666,8 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
         let lobe = select(a.lobes.xy, a.lobes.zw, j == 1u);
         let c = dot(cap.a, lobe.x * a.d);
         if (chosen == 0.0 && lobe.y > 0.0 && lobe.y < alpha + alpha
-            && (c > cap.cos_a || (c > -cap.cos_a && airlight_acos(c) - alpha < AIRLIGHT_LOBE_REACH * lobe.y))) {
+            && (!(c < -cap.cos_a) || lobe.y < AIRLIGHT_BESIDE_SCALE)
+            && (c > cap.cos_a || airlight_acos(c) - alpha < AIRLIGHT_LOBE_REACH * lobe.y)) {
             chosen = lobe.y;
             sign = lobe.x;
             cos_p = c;
