@@ -868,8 +868,8 @@ float2 airlight_e1_scaled_cf(float2 z_6)
     float _e13 = r2_1;
     const uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = float(_e14);
-    float2 b_15 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
-    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_15);
+    float2 b_16 = (z_6 + float2(((2.0 * nf) + 1.0), 0.0));
+    const float2 _e29 = airlight_cdiv(float2((2.0 * (nf + 1.0)), 0.0), b_16);
     const float2 _e33 = airlight_cmul(_e29, _e29);
     const float2 _e35 = airlight_csqrt((float2(1.0, 0.0) - _e33));
     root = _e35;
@@ -879,7 +879,7 @@ float2 airlight_e1_scaled_cf(float2 z_6)
         root = -(_e41);
     }
     float2 _e46 = root;
-    const float2 _e48 = airlight_cmul(b_15, (float2(1.0, 0.0) + _e46));
+    const float2 _e48 = airlight_cmul(b_16, (float2(1.0, 0.0) + _e46));
     t_1 = (_e48 * 0.5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -954,12 +954,12 @@ float airlight_en_scaled_cf(float x_4, uint n)
     const uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = float(n);
     float m_7 = float(_e2);
-    float b_16 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
-    float a_32 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
-    float disc = (1.0 - ((4.0 * a_32) / (b_16 * b_16)));
-    t_2 = b_16;
+    float b_17 = ((x_4 + nf_1) + (2.0 * (m_7 + 1.0)));
+    float a_33 = ((m_7 + 2.0) * ((nf_1 + m_7) + 1.0));
+    float disc = (1.0 - ((4.0 * a_33) / (b_17 * b_17)));
+    t_2 = b_17;
     if ((disc > 0.0)) {
-        t_2 = ((b_16 * (1.0 + sqrt(disc))) * 0.5);
+        t_2 = ((b_17 * (1.0 + sqrt(disc))) * 0.5);
     }
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1151,11 +1151,11 @@ airlight_ret_airlight_en_scaled airlight_en_scaled(float x_5)
 float airlight_hg_base(float g_2, float om, float op)
 {
     if ((g_2 >= 0.0)) {
-        float a_33 = (1.0 - g_2);
-        return ((om * (g_2 + g_2)) + (a_33 * a_33));
+        float a_34 = (1.0 - g_2);
+        return ((om * (g_2 + g_2)) + (a_34 * a_34));
     }
-    float b_17 = (1.0 + g_2);
-    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
+    float b_18 = (1.0 + g_2);
+    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
 }
 
 float airlight_hg(float g_3, float om_1, float op_1)
@@ -1280,11 +1280,11 @@ float airlight_singular_height(float side, float gap, float sigma)
 
 float airlight_hg_gap(float g_4)
 {
-    float a_34 = abs(g_4);
-    if (!((a_34 > 0.0))) {
+    float a_35 = abs(g_4);
+    if (!((a_35 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1.0 - a_34) * (1.0 - a_34)) / (a_34 + a_34));
+    return (((1.0 - a_35) * (1.0 - a_35)) / (a_35 + a_35));
 }
 
 float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
@@ -1301,8 +1301,8 @@ float3 airlight_singular_heights(AirlightScene s_2, float sigma_1)
             break;
         }
         case 3u: {
-            float a_35 = abs(p0_3);
-            const float _e19 = airlight_singular_height(p0_3, ((a_35 > 0.0) ? ((1.0 - a_35) / a_35) : AIRLIGHT_FLT_MAX), sigma_1);
+            float a_36 = abs(p0_3);
+            const float _e19 = airlight_singular_height(p0_3, ((a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX), sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -2321,47 +2321,47 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
         return 1.0;
     }
     float measured = sqrt((last_1 / before));
-    float q_9 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
+    float q_10 = max(measured, ((floor_ > 0.0) ? floor_ : 0.0));
     float truncation = max(abs(m_1[11]), abs(m_1[10]));
-    if ((q_9 < 1.0)) {
+    if ((q_10 < 1.0)) {
         float _e45 = aliasing;
         float _e49 = aliasing;
-        aliasing = (true ? ((_e49 * q_9) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
+        aliasing = (true ? ((_e49 * q_10) + abs(m_1[0])) : (_e45 + abs(m_1[0])));
         float _e56 = aliasing;
         float _e60 = aliasing;
-        aliasing = (true ? ((_e60 * q_9) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
+        aliasing = (true ? ((_e60 * q_10) + abs(m_1[1])) : (_e56 + abs(m_1[1])));
         float _e67 = aliasing;
         float _e71 = aliasing;
-        aliasing = (true ? ((_e71 * q_9) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
+        aliasing = (true ? ((_e71 * q_10) + abs(m_1[2])) : (_e67 + abs(m_1[2])));
         float _e78 = aliasing;
         float _e82 = aliasing;
-        aliasing = (true ? ((_e82 * q_9) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
+        aliasing = (true ? ((_e82 * q_10) + abs(m_1[3])) : (_e78 + abs(m_1[3])));
         float _e89 = aliasing;
         float _e93 = aliasing;
-        aliasing = (true ? ((_e93 * q_9) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
+        aliasing = (true ? ((_e93 * q_10) + abs(m_1[4])) : (_e89 + abs(m_1[4])));
         float _e100 = aliasing;
         float _e104 = aliasing;
-        aliasing = (true ? ((_e104 * q_9) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
+        aliasing = (true ? ((_e104 * q_10) + abs(m_1[5])) : (_e100 + abs(m_1[5])));
         float _e111 = aliasing;
         float _e115 = aliasing;
-        aliasing = (true ? ((_e115 * q_9) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
+        aliasing = (true ? ((_e115 * q_10) + abs(m_1[6])) : (_e111 + abs(m_1[6])));
         float _e122 = aliasing;
         float _e126 = aliasing;
-        aliasing = (true ? ((_e126 * q_9) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
+        aliasing = (true ? ((_e126 * q_10) + abs(m_1[7])) : (_e122 + abs(m_1[7])));
         float _e133 = aliasing;
         float _e137 = aliasing;
-        aliasing = (true ? ((_e137 * q_9) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
+        aliasing = (true ? ((_e137 * q_10) + abs(m_1[8])) : (_e133 + abs(m_1[8])));
         float _e144 = aliasing;
         float _e148 = aliasing;
-        aliasing = (true ? ((_e148 * q_9) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
+        aliasing = (true ? ((_e148 * q_10) + abs(m_1[9])) : (_e144 + abs(m_1[9])));
         float _e155 = aliasing;
         float _e159 = aliasing;
-        aliasing = (true ? ((_e159 * q_9) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
+        aliasing = (true ? ((_e159 * q_10) + abs(m_1[10])) : (_e155 + abs(m_1[10])));
         float _e166 = aliasing;
         float _e170 = aliasing;
-        aliasing = (false ? ((_e170 * q_9) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
+        aliasing = (false ? ((_e170 * q_10) + abs(m_1[11])) : (_e166 + abs(m_1[11])));
         float _e177 = aliasing;
-        return min(((_e177 + (q_9 * truncation)) / m_1[0]), 1.0);
+        return min(((_e177 + (q_10 * truncation)) / m_1[0]), 1.0);
     }
     float _e186 = c_max;
     c_max = max(_e186, abs(c_2[0]));
@@ -2416,8 +2416,8 @@ float airlight_error_factor(float c_2[12], float m_1[12], float floor_)
 float airlight_bernstein_rho(float re, float im)
 {
     float im2_ = (im * im);
-    float a_36 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
-    return (a_36 + sqrt(max(((a_36 * a_36) - 1.0), 0.0)));
+    float a_37 = ((sqrt((((re - 1.0) * (re - 1.0)) + im2_)) + sqrt((((re + 1.0) * (re + 1.0)) + im2_))) * 0.5);
+    return (a_37 + sqrt(max(((a_37 * a_37) - 1.0), 0.0)));
 }
 
 float airlight_transform_noise(float mass, float mean_abs)
@@ -3735,9 +3735,9 @@ float2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13)
             break;
         }
         case 3u: {
-            float a_37 = abs(p0_4);
+            float a_38 = abs(p0_4);
             float _e145 = psi1_1;
-            const float _e146 = airlight_angle_floor(p0_4, ((a_37 > 0.0) ? ((1.0 - a_37) / a_37) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
+            const float _e146 = airlight_angle_floor(p0_4, ((a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3893,23 +3893,23 @@ float2 airlight_crossings(float sigma_9, float d_el, float d_c, float k_4)
     if (_e24) {
         return float2(-1.0, -1.0);
     }
-    float a_38 = (a0_ / scale_4);
-    float b_18 = (b0_ / scale_4);
+    float a_39 = (a0_ / scale_4);
+    float b_19 = (b0_ / scale_4);
     float c_10 = (c0_ / scale_4);
-    float disc_1 = ((b_18 * b_18) - ((4.0 * a_38) * c_10));
+    float disc_1 = ((b_19 * b_19) - ((4.0 * a_39) * c_10));
     if (!((disc_1 >= 0.0))) {
         return float2(-1.0, -1.0);
     }
-    if ((b_18 < 0.0)) {
+    if ((b_19 < 0.0)) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_10 = (-0.5 * (b_18 + (_e47 * sqrt(disc_1))));
-    if ((q_10 != 0.0)) {
-        r1_ = (c_10 / q_10);
+    float q_11 = (-0.5 * (b_19 + (_e47 * sqrt(disc_1))));
+    if ((q_11 != 0.0)) {
+        r1_ = (c_10 / q_11);
     }
-    if ((a_38 != 0.0)) {
-        r2_2 = (q_10 / a_38);
+    if ((a_39 != 0.0)) {
+        r2_2 = (q_11 / a_39);
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3956,15 +3956,15 @@ bool airlight_dark(AirlightCanonical g_15, float sigma_11, AirlightHalf half_11,
     if (_e31) {
         return false;
     }
-    float a_39 = (sigma_11 * g_15.d_el);
+    float a_40 = (sigma_11 * g_15.d_el);
     float d_3 = g_15.d_c;
     if ((d_3 == 0.0)) {
         return true;
     }
-    float root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_39) / d_3);
-    if ((a_39 > 0.0)) {
-        y1_1 = (d_3 / (a_39 + root_1));
+    float root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_40) / d_3);
+    if ((a_40 > 0.0)) {
+        y1_1 = (d_3 / (a_40 + root_1));
     }
     float _e50 = y1_1;
     float y2_2 = (-1.0 / _e50);
@@ -6074,10 +6074,10 @@ float airlight_asinh(float x_16)
 {
     float r_4 = (float)0;
 
-    float a_40 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
-    if ((a_40 <= 4096.0)) {
-        const float _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1.0 + sqrt((1.0 + (a_40 * a_40)))))));
+    float a_41 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
+    if ((a_41 <= 4096.0)) {
+        const float _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1.0 + sqrt((1.0 + (a_41 * a_41)))))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -6105,8 +6105,8 @@ float2 airlight_cos_sin_half_turn(float x_17)
 
 float airlight_acos(float x_18)
 {
-    float a_41 = abs(x_18);
-    const float _e8 = airlight_atan(sqrt(((1.0 - a_41) / (1.0 + a_41))));
+    float a_42 = abs(x_18);
+    const float _e8 = airlight_atan(sqrt(((1.0 - a_42) / (1.0 + a_42))));
     return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
@@ -6118,12 +6118,12 @@ float airlight_angle(float c_6, float s_23)
 
 float airlight_half_arc(float cos_a, float sin_a, float cos_g, float sin_g)
 {
-    float a_42 = (cos_a * cos_g);
-    float b_19 = (sin_a * sin_g);
-    if ((b_19 <= abs(a_42))) {
-        return ((a_42 > 0.0) ? AIRLIGHT_PI : 0.0);
+    float a_43 = (cos_a * cos_g);
+    float b_20 = (sin_a * sin_g);
+    if ((b_20 <= abs(a_43))) {
+        return ((a_43 > 0.0) ? AIRLIGHT_PI : 0.0);
     }
-    const float _e18 = airlight_acos(clamp((-(a_42) / b_19), -1.0, 1.0));
+    const float _e18 = airlight_acos(clamp((-(a_43) / b_20), -1.0, 1.0));
     return _e18;
 }
 
@@ -6625,14 +6625,14 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
     const float2 _e20 = airlight_cos_sin((0.5 * (gamma - g_23.alpha_r)));
     float sin_gap = _e20.y;
     const float _e34 = airlight_log1p(((-2.0 * sin_gap) * sin_gap));
-    AirlightLobe q_11 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    AirlightLobe q_12 = ConstructAirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2.0 * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if ((exponent_1 > 0.0)) {
         const float _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     float _e48 = reach;
     float _e51 = reach;
-    float s2_1 = ((_e51 < q_11.k) ? (_e48 / q_11.k) : 1.0);
+    float s2_1 = ((_e51 < q_12.k) ? (_e48 / q_12.k) : 1.0);
     const float _e60 = airlight_angle(sqrt((1.0 - s2_1)), sqrt(s2_1));
     float cut_2 = (2.0 * _e60);
     if ((psi_n < AIRLIGHT_PI)) {
@@ -6670,7 +6670,7 @@ float airlight_lobe_arcs(AirlightOuter g_23, float2 cs, float gamma, float psi_n
             float _e102 = sum_6;
             uint _e103 = i_23;
             uint _e105 = i_23;
-            const float _e109 = airlight_lobe_piece(q_11, edges_2[min(uint(_e103), 3u)], edges_2[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
+            const float _e109 = airlight_lobe_piece(q_12, edges_2[min(uint(_e103), 3u)], edges_2[min(uint((_e105 + 1u)), 3u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
     }
@@ -6986,15 +6986,15 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_42 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_21 - float(i_42));
-        float a_43 = g_25.gamma[min(uint(i_42), 12u)];
-        float b_20 = g_25.gamma[min(uint((i_42 + 1u)), 12u)];
-        float w_8 = (b_20 - a_43);
+        uint i_44 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_44));
+        float a_44 = g_25.gamma[min(uint(i_44), 12u)];
+        float b_21 = g_25.gamma[min(uint((i_44 + 1u)), 12u)];
+        float w_8 = (b_21 - a_44);
         float u_9 = (1.0 - t_9);
-        bool smooth_a = (((g_25.smooth_edges >> i_42) & 1u) != 0u);
-        bool smooth_b = (((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
+        bool smooth_a = (((g_25.smooth_edges >> i_44) & 1u) != 0u);
+        bool smooth_b = (((g_25.smooth_edges >> (i_44 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9)));
         jacobian = (((w_8 * 6.0) * t_9) * u_9);
         float _e58 = gamma_1;
         if (smooth_b) {
@@ -7003,7 +7003,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_163 = false;
         }
         bool _e66 = local_163;
-        gamma_1 = (_e66 ? (a_43 + ((w_8 * t_9) * t_9)) : _e58);
+        gamma_1 = (_e66 ? (a_44 + ((w_8 * t_9) * t_9)) : _e58);
         float _e68 = jacobian;
         if (smooth_b) {
             local_164 = !(smooth_a);
@@ -7019,7 +7019,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_165 = false;
         }
         bool _e85 = local_165;
-        gamma_1 = (_e85 ? (b_20 - ((w_8 * u_9) * u_9)) : _e77);
+        gamma_1 = (_e85 ? (b_21 - ((w_8 * u_9) * u_9)) : _e77);
         float _e87 = jacobian;
         if (smooth_a) {
             local_166 = !(smooth_b);
@@ -7035,7 +7035,7 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
             local_167 = false;
         }
         bool _e102 = local_167;
-        gamma_1 = (_e102 ? (a_43 + (w_8 * t_9)) : _e96);
+        gamma_1 = (_e102 ? (a_44 + (w_8 * t_9)) : _e96);
         float _e104 = jacobian;
         if (smooth_a) {
             local_168 = smooth_b;
@@ -7354,8 +7354,8 @@ float4 airlight_phase_lobes(AirlightScene s_34)
             break;
         }
         case 3u: {
-            float a_44 = abs(p0_5);
-            const float2 _e21 = airlight_lobe(p0_5, ((a_44 > 0.0) ? ((1.0 - a_44) / a_44) : AIRLIGHT_FLT_MAX));
+            float a_45 = abs(p0_5);
+            const float2 _e21 = airlight_lobe(p0_5, ((a_45 > 0.0) ? ((1.0 - a_45) / a_45) : AIRLIGHT_FLT_MAX));
             first = _e21;
             break;
         }
@@ -7410,6 +7410,12 @@ float airlight_area_theta(AirlightArea a_17, float t_3, bool infinite_3)
     return _e7;
 }
 
+float2 airlight_edge_nearest(float2 a_18, float2 b_13, float2 q_4)
+{
+    float2 e_15 = (b_13 - a_18);
+    return (a_18 + (clamp(((((q_4.x - a_18.x) * e_15.x) + ((q_4.y - a_18.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0) * e_15));
+}
+
 float2 airlight_outline_distances(AirlightOutline o)
 {
     float2 nearest = (3.4028235e38).xx;
@@ -7425,8 +7431,8 @@ float2 airlight_outline_distances(AirlightOutline o)
         if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
         loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         if (!loop_init_31) {
-            uint _e78 = i_27;
-            i_27 = (_e78 + 1u);
+            uint _e59 = i_27;
+            i_27 = (_e59 + 1u);
         }
         loop_init_31 = false;
         uint _e24 = i_27;
@@ -7436,25 +7442,23 @@ float2 airlight_outline_distances(AirlightOutline o)
         }
         {
             uint _e28 = i_27;
-            float2 a_45 = o.corners[min(uint(_e28), 3u)];
             uint _e31 = i_27;
-            float2 e_15 = (o.corners[min(uint(airlight_naga_mod((_e31 + 1u), 4u)), 3u)] - a_45);
-            float2 p_4 = (a_45 + (clamp((-(((a_45.x * e_15.x) + (a_45.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0.0, 1.0) * e_15));
-            float distance_ = sqrt(((p_4.x * p_4.x) + (p_4.y * p_4.y)));
-            float _e68 = nearest.x;
-            if ((distance_ < _e68)) {
-                float _e71 = nearest.x;
-                nearest = float2(distance_, _e71);
+            const float2 _e39 = airlight_edge_nearest(o.corners[min(uint(_e28), 3u)], o.corners[min(uint(airlight_naga_mod((_e31 + 1u), 4u)), 3u)], (0.0).xx);
+            float distance_ = sqrt(((_e39.x * _e39.x) + (_e39.y * _e39.y)));
+            float _e49 = nearest.x;
+            if ((distance_ < _e49)) {
+                float _e52 = nearest.x;
+                nearest = float2(distance_, _e52);
             } else {
-                float _e74 = nearest.y;
-                if ((distance_ < _e74)) {
+                float _e55 = nearest.y;
+                if ((distance_ < _e55)) {
                     nearest.y = distance_;
                 }
             }
         }
     }
-    float2 _e80 = nearest;
-    return _e80;
+    float2 _e61 = nearest;
+    return _e61;
 }
 
 AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
@@ -7464,17 +7468,17 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_18, float3 x_22)
+AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, float3 x_22)
 {
-    float3 rel = (x_22 - a_18.c);
-    float2 foot = float2(dot(rel, a_18.a1_), dot(rel, a_18.a2_));
+    float3 rel = (x_22 - a_19.c);
+    float2 foot = float2(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     float2 zero = (0.0).xx;
     if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
-        const AirlightOutline airlightoutline = ConstructAirlightOutline(airlight_Constructarray4_float2_(-(foot), zero, zero, zero), a_18.radius);
+        const AirlightOutline airlightoutline = ConstructAirlightOutline(airlight_Constructarray4_float2_(-(foot), zero, zero, zero), a_19.radius);
         return airlightoutline;
     }
-    float2 u2_ = float2(dot(a_18.eu, a_18.a1_), dot(a_18.eu, a_18.a2_));
-    float2 v2_ = float2(dot(a_18.ev, a_18.a1_), dot(a_18.ev, a_18.a2_));
+    float2 u2_ = float2(dot(a_19.eu, a_19.a1_), dot(a_19.eu, a_19.a2_));
+    float2 v2_ = float2(dot(a_19.ev, a_19.a1_), dot(a_19.ev, a_19.a2_));
     const AirlightOutline airlightoutline_1 = ConstructAirlightOutline(airlight_Constructarray4_float2_(-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0.0);
     return airlightoutline_1;
 }
@@ -7502,7 +7506,7 @@ AirlightArea ConstructAirlightArea(float3 arg0, float3 arg1, float3 arg2, float3
 
 AirlightArea airlight_area(AirlightScene s_36)
 {
-    AirlightArea a_19 = (AirlightArea)0;
+    AirlightArea a_20 = (AirlightArea)0;
     bool local_172 = (bool)0;
     uint cut_count = 0u;
     float cut0_ = 0.0;
@@ -7528,9 +7532,9 @@ AirlightArea airlight_area(AirlightScene s_36)
 
     float3 zero_1 = (0.0).xxx;
     const float4 _e21 = airlight_phase_lobes(s_36);
-    a_19 = ConstructAirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    a_20 = ConstructAirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0.0, 0.0, airlight_Constructarray13_float_(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
     const bool _e28 = airlight_isotropic_phase(s_36);
-    a_19.isotropic = _e28;
+    a_20.isotropic = _e28;
     if (!((s_36.intensity == 0.0))) {
         local_172 = (s_36.sigma_s == 0.0);
     } else {
@@ -7538,99 +7542,99 @@ AirlightArea airlight_area(AirlightScene s_36)
     }
     bool _e39 = local_172;
     if (_e39) {
-        a_19.outcome = 1u;
-        AirlightArea _e42 = a_19;
+        a_20.outcome = 1u;
+        AirlightArea _e42 = a_20;
         const AirlightArea airlightarea = _e42;
         return airlightarea;
     }
     float3 o_8 = s_36.origin;
     const float3 _e45 = airlight_normalize(s_36.dir);
-    a_19.d = _e45;
+    a_20.d = _e45;
     bool infinite_6 = ((s_36.flags & 1u) != 0u);
     float t0_2 = s_36.t_min;
     centre = s_36.light_position;
     size = s_36.light_param_a;
     if ((s_36.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
-        float3 _e72 = a_19.c;
+        float3 _e72 = a_20.c;
         float3 oc = (o_8 - _e72);
-        float b_21 = dot(oc, _e45);
-        float _e77 = a_19.radius;
-        float _e79 = a_19.radius;
-        float k_12 = (dot(oc, oc) - (_e77 * _e79));
-        const float _e84 = airlight_safe_length((oc - (b_21 * _e45)));
-        float _e86 = a_19.radius;
-        float _e89 = a_19.radius;
+        float b_22 = dot(oc, _e45);
+        float _e77 = a_20.radius;
+        float _e79 = a_20.radius;
+        float k_11 = (dot(oc, oc) - (_e77 * _e79));
+        const float _e84 = airlight_safe_length((oc - (b_22 * _e45)));
+        float _e86 = a_20.radius;
+        float _e89 = a_20.radius;
         float disc_2 = ((_e86 - _e84) * (_e89 + _e84));
         if ((disc_2 > 0.0)) {
             float root_2 = sqrt(disc_2);
-            float q_12 = (-(b_21) - (((asuint(b_21) & 2147483648u) != 0u) ? -(root_2) : root_2));
-            cut0_ = q_12;
-            cut1_ = (k_12 / q_12);
+            float q_13 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_2) : root_2));
+            cut0_ = q_13;
+            cut1_ = (k_11 / q_13);
             cut_count = 2u;
         }
     } else {
         if ((s_36.light_shape == AIRLIGHT_SHAPE_DISC)) {
             const float3 _e111 = airlight_normalize(s_36.light_axis);
-            a_19.n = _e111;
-            float3 _e114 = a_19.n;
+            a_20.n = _e111;
+            float3 _e114 = a_20.n;
             const float3 _e115 = airlight_basis_e1_(_e114);
-            a_19.a1_ = _e115;
+            a_20.a1_ = _e115;
         } else {
-            a_19.eu = s_36.light_axis;
-            a_19.ev = s_36.light_end;
-            float3 _e122 = a_19.eu;
-            float3 _e124 = a_19.ev;
+            a_20.eu = s_36.light_axis;
+            a_20.ev = s_36.light_end;
+            float3 _e122 = a_20.eu;
+            float3 _e124 = a_20.ev;
             const float3 _e126 = airlight_normalize(cross(_e122, _e124));
-            a_19.n = _e126;
-            float3 _e129 = a_19.eu;
+            a_20.n = _e126;
+            float3 _e129 = a_20.eu;
             const float3 _e130 = airlight_normalize(_e129);
-            a_19.a1_ = _e130;
-            float3 _e132 = a_19.eu;
-            float3 _e134 = a_19.ev;
+            a_20.a1_ = _e130;
+            float3 _e132 = a_20.eu;
+            float3 _e134 = a_20.ev;
             float3 diagonal = (_e132 + _e134);
-            float3 _e137 = a_19.c;
+            float3 _e137 = a_20.c;
             centre = (_e137 + (0.5 * diagonal));
             const float _e141 = airlight_safe_length(diagonal);
-            float3 _e143 = a_19.eu;
-            float3 _e145 = a_19.ev;
+            float3 _e143 = a_20.eu;
+            float3 _e145 = a_20.ev;
             const float _e147 = airlight_safe_length((_e143 - _e145));
             size = (0.5 * max(_e141, _e147));
         }
-        float3 _e153 = a_19.n;
-        float3 _e155 = a_19.a1_;
-        a_19.a2_ = cross(_e153, _e155);
-        float3 _e159 = a_19.a1_;
-        float3 _e162 = a_19.a2_;
-        float3 _e165 = a_19.n;
-        a_19.dirs = float3(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
-        float3 _e169 = a_19.c;
-        float3 _e172 = a_19.n;
-        float3 _e175 = a_19.n;
+        float3 _e153 = a_20.n;
+        float3 _e155 = a_20.a1_;
+        a_20.a2_ = cross(_e153, _e155);
+        float3 _e159 = a_20.a1_;
+        float3 _e162 = a_20.a2_;
+        float3 _e165 = a_20.n;
+        a_20.dirs = float3(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
+        float3 _e169 = a_20.c;
+        float3 _e172 = a_20.n;
+        float3 _e175 = a_20.n;
         cut0_ = (dot((_e169 - o_8), _e172) / dot(_e45, _e175));
         cut_count = 1u;
-        AirlightArea _e179 = a_19;
+        AirlightArea _e179 = a_20;
         float _e180 = cut0_;
         const AirlightOutline _e183 = airlight_outline_at(s_36, _e179, (o_8 + (_e180 * _e45)));
         const float2 _e184 = airlight_outline_distances(_e183);
         distances = _e184;
-        float3 _e186 = a_19.n;
+        float3 _e186 = a_20.n;
         front = ((dot(_e45, _e186) < 0.0) ? -1.0 : 1.0);
     }
     float _e193 = size;
     if (!((_e193 > 0.0))) {
-        a_19.outcome = 1u;
-        AirlightArea _e199 = a_19;
+        a_20.outcome = 1u;
+        AirlightArea _e199 = a_20;
         const AirlightArea airlightarea_1 = _e199;
         return airlightarea_1;
     }
     float3 _e200 = centre;
     float3 to_centre = (_e200 - o_8);
-    a_19.x_h = dot(to_centre, _e45);
-    float _e205 = a_19.x_h;
+    a_20.x_h = dot(to_centre, _e45);
+    float _e205 = a_20.x_h;
     const float _e208 = airlight_safe_length((to_centre - (_e205 * _e45)));
     float _e211 = size;
     float _e212 = size;
-    a_19.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
+    a_20.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
     t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
     if ((s_36.sigma_t > 0.0)) {
@@ -7650,31 +7654,31 @@ AirlightArea airlight_area(AirlightScene s_36)
             end_infinite = false;
         }
     }
-    AirlightArea _e242 = a_19;
+    AirlightArea _e242 = a_20;
     const float _e244 = airlight_area_theta(_e242, t0_2, false);
-    AirlightArea _e245 = a_19;
+    AirlightArea _e245 = a_20;
     float _e246 = t_end_1;
     bool _e247 = end_infinite;
     const float _e248 = airlight_area_theta(_e245, _e246, _e247);
-    float _e250 = a_19.x_h;
-    float _e252 = a_19.x_h;
+    float _e250 = a_20.x_h;
+    float _e252 = a_20.x_h;
     float _e253 = cut0_;
     uint _e254 = cut_count;
-    float _e259 = a_19.x_h;
+    float _e259 = a_20.x_h;
     float _e260 = cut1_;
     uint _e261 = cut_count;
-    float _e266 = a_19.x_h;
+    float _e266 = a_20.x_h;
     cuts_4 = airlight_Constructarray4_float_(_e250, ((_e254 > 0u) ? _e253 : _e252), ((_e261 > 1u) ? _e260 : _e259), _e266);
-    float _e273 = a_19.lobes.y;
+    float _e273 = a_20.lobes.y;
     if ((_e273 > 0.0)) {
         float _e276 = scale_1;
-        float _e279 = a_19.lobes.y;
+        float _e279 = a_20.lobes.y;
         scale_1 = min(_e276, _e279);
     }
-    float _e283 = a_19.lobes.w;
+    float _e283 = a_20.lobes.w;
     if ((_e283 > 0.0)) {
         float _e286 = scale_1;
-        float _e289 = a_19.lobes.w;
+        float _e289 = a_20.lobes.w;
         scale_1 = min(_e286, _e289);
     }
     uint _e291 = cut_count;
@@ -7728,7 +7732,7 @@ AirlightArea airlight_area(AirlightScene s_36)
                 float _e328 = distances[min(uint(_e326), 1u)];
                 float _e330 = scale_1;
                 float reach_2 = ((AIRLIGHT_CROSSING_REACH * _e328) / _e330);
-                float _e333 = a_19.h_eff;
+                float _e333 = a_20.h_eff;
                 if ((reach_2 < _e333)) {
                     uint _e335 = i_28;
                     float _e339 = cut0_;
@@ -7781,7 +7785,7 @@ AirlightArea airlight_area(AirlightScene s_36)
             bool _e373 = local_179;
             if (_e373) {
                 uint _e374 = i_29;
-                AirlightArea _e376 = a_19;
+                AirlightArea _e376 = a_20;
                 const float _e378 = airlight_area_theta(_e376, t_10, false);
                 cuts_4[min(uint(_e374), 3u)] = _e378;
             }
@@ -7789,9 +7793,9 @@ AirlightArea airlight_area(AirlightScene s_36)
     }
     float _e382[4] = cuts_4;
     const AirlightEdges _e383 = airlight_edges_between(_e244, _e248, _e382);
-    a_19.edges = _e383.at;
-    a_19.panels = _e383.panels;
-    AirlightArea _e388 = a_19;
+    a_20.edges = _e383.at;
+    a_20.panels = _e383.panels;
+    AirlightArea _e388 = a_20;
     const AirlightArea airlightarea_2 = _e388;
     return airlightarea_2;
 }
@@ -7810,23 +7814,23 @@ AirlightAbove airlight_above(float z_10, float2 off)
     return airlightabove;
 }
 
-float airlight_flat_node(AirlightScene s_37, AirlightArea a_20, AirlightAbove above_1, float2 e_3, float graded_1, float node_1)
+float airlight_flat_node(AirlightScene s_37, AirlightArea a_21, AirlightAbove above_1, float2 e_3, float graded_1, float node_1)
 {
     const float2 _e6 = airlight_graded_node(graded_1, node_1);
     const float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    float2 p_5 = (above_1.off + (r_13 * e_3));
+    float2 p_4 = (above_1.off + (r_13 * e_3));
     float z_20 = above_1.z;
-    float dist = sqrt((((z_20 * z_20) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
+    float dist = sqrt((((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_20 * inv_5);
-    const float _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_20 * a_20.dirs.z)) * inv_5));
+    const float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_20 * a_21.dirs.z)) * inv_5));
     const float _e52 = airlight_emitted(s_37, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_38, AirlightArea a_21, AirlightAbove above_2, float2 e_4, float r_max)
+float airlight_flat_radial(AirlightScene s_38, AirlightArea a_22, AirlightAbove above_2, float2 e_4, float r_max)
 {
     float sum_7 = 0.0;
 
@@ -7836,58 +7840,58 @@ float airlight_flat_radial(AirlightScene s_38, AirlightArea a_21, AirlightAbove 
     float c_19 = (0.5 * _e8.x);
     float hw_2 = (0.5 * _e8.x);
     float _e18 = sum_7;
-    const float _e24 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.09501251 * hw_2)));
+    const float _e24 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251 * hw_2)));
     sum_7 = (_e18 + ((0.1894506 * hw_2) * _e24));
     float _e27 = sum_7;
-    const float _e33 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.09501251 * hw_2)));
+    const float _e33 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251 * hw_2)));
     sum_7 = (_e27 + ((0.1894506 * hw_2) * _e33));
     float _e36 = sum_7;
-    const float _e42 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.28160354 * hw_2)));
+    const float _e42 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354 * hw_2)));
     sum_7 = (_e36 + ((0.18260342 * hw_2) * _e42));
     float _e45 = sum_7;
-    const float _e51 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.28160354 * hw_2)));
+    const float _e51 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354 * hw_2)));
     sum_7 = (_e45 + ((0.18260342 * hw_2) * _e51));
     float _e54 = sum_7;
-    const float _e60 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.45801678 * hw_2)));
+    const float _e60 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678 * hw_2)));
     sum_7 = (_e54 + ((0.16915652 * hw_2) * _e60));
     float _e63 = sum_7;
-    const float _e69 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.45801678 * hw_2)));
+    const float _e69 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678 * hw_2)));
     sum_7 = (_e63 + ((0.16915652 * hw_2) * _e69));
     float _e72 = sum_7;
-    const float _e78 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.61787623 * hw_2)));
+    const float _e78 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623 * hw_2)));
     sum_7 = (_e72 + ((0.14959599 * hw_2) * _e78));
     float _e81 = sum_7;
-    const float _e87 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.61787623 * hw_2)));
+    const float _e87 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623 * hw_2)));
     sum_7 = (_e81 + ((0.14959599 * hw_2) * _e87));
     float _e90 = sum_7;
-    const float _e96 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.7554044 * hw_2)));
+    const float _e96 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044 * hw_2)));
     sum_7 = (_e90 + ((0.12462897 * hw_2) * _e96));
     float _e99 = sum_7;
-    const float _e105 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.7554044 * hw_2)));
+    const float _e105 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044 * hw_2)));
     sum_7 = (_e99 + ((0.12462897 * hw_2) * _e105));
     float _e108 = sum_7;
-    const float _e114 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.8656312 * hw_2)));
+    const float _e114 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312 * hw_2)));
     sum_7 = (_e108 + ((0.09515851 * hw_2) * _e114));
     float _e117 = sum_7;
-    const float _e123 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.8656312 * hw_2)));
+    const float _e123 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312 * hw_2)));
     sum_7 = (_e117 + ((0.09515851 * hw_2) * _e123));
     float _e126 = sum_7;
-    const float _e132 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.944575 * hw_2)));
+    const float _e132 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.944575 * hw_2)));
     sum_7 = (_e126 + ((0.062253524 * hw_2) * _e132));
     float _e135 = sum_7;
-    const float _e141 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.944575 * hw_2)));
+    const float _e141 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.944575 * hw_2)));
     sum_7 = (_e135 + ((0.062253524 * hw_2) * _e141));
     float _e144 = sum_7;
-    const float _e150 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.9894009 * hw_2)));
+    const float _e150 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009 * hw_2)));
     sum_7 = (_e144 + ((0.02715246 * hw_2) * _e150));
     float _e153 = sum_7;
-    const float _e159 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.9894009 * hw_2)));
+    const float _e159 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009 * hw_2)));
     sum_7 = (_e153 + ((0.02715246 * hw_2) * _e159));
     float _e162 = sum_7;
     return _e162;
 }
 
-float3 airlight_outline_boundary(AirlightOutline o_1, float2 q_4)
+float3 airlight_outline_boundary(AirlightOutline o_1, float2 q_5)
 {
     float best = AIRLIGHT_FLT_MAX;
     float2 nearest_1 = (float2)0;
@@ -7896,19 +7900,19 @@ float3 airlight_outline_boundary(AirlightOutline o_1, float2 q_4)
     bool local_181 = (bool)0;
 
     if ((o_1.radius > 0.0)) {
-        float2 qc = (q_4 - o_1.corners[0]);
+        float2 qc = (q_5 - o_1.corners[0]);
         float dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
         return float3((o_1.corners[0] + ((qc * o_1.radius) / (dq).xx)), ((dq <= o_1.radius) ? 1.0 : 0.0));
     }
-    nearest_1 = q_4;
+    nearest_1 = q_5;
     uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
     bool loop_init_34 = true;
     while(true) {
         if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
         if (!loop_init_34) {
-            uint _e110 = i_30;
-            i_30 = (_e110 + 1u);
+            uint _e94 = i_30;
+            i_30 = (_e94 + 1u);
         }
         loop_init_34 = false;
         uint _e36 = i_30;
@@ -7923,31 +7927,31 @@ float3 airlight_outline_boundary(AirlightOutline o_1, float2 q_4)
             float2 e_16 = (o_1.corners[min(uint(airlight_naga_mod((_e43 + 1u), 4u)), 3u)] - a_46);
             bool _e50 = inside;
             if (_e50) {
-                local_181 = ((((q_4.x - a_46.x) * e_16.y) - ((q_4.y - a_46.y) * e_16.x)) <= 0.0);
+                local_181 = ((((q_5.x - a_46.x) * e_16.y) - ((q_5.y - a_46.y) * e_16.x)) <= 0.0);
             } else {
                 local_181 = false;
             }
             bool _e67 = local_181;
             inside = _e67;
-            float t_11 = clamp(((((q_4.x - a_46.x) * e_16.x) + ((q_4.y - a_46.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0.0, 1.0);
-            float2 p_6 = (a_46 + (t_11 * e_16));
-            float dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
-            float _e107 = best;
-            if ((dd < _e107)) {
+            uint _e69 = i_30;
+            const float2 _e75 = airlight_edge_nearest(a_46, o_1.corners[min(uint(airlight_naga_mod((_e69 + 1u), 4u)), 3u)], q_5);
+            float dd = (((_e75.x - q_5.x) * (_e75.x - q_5.x)) + ((_e75.y - q_5.y) * (_e75.y - q_5.y)));
+            float _e91 = best;
+            if ((dd < _e91)) {
                 best = dd;
-                nearest_1 = p_6;
+                nearest_1 = _e75;
             }
         }
     }
-    float2 _e112 = nearest_1;
-    bool _e113 = inside;
-    return float3(_e112, (_e113 ? 1.0 : 0.0));
+    float2 _e96 = nearest_1;
+    bool _e97 = inside;
+    return float3(_e96, (_e97 ? 1.0 : 0.0));
 }
 
-float2 airlight_outline_nearest(AirlightOutline o_2, float2 q_5)
+float2 airlight_outline_nearest(AirlightOutline o_2, float2 q_6)
 {
-    const float3 _e2 = airlight_outline_boundary(o_2, q_5);
-    return ((_e2.z > 0.0) ? q_5 : _e2.xy);
+    const float3 _e2 = airlight_outline_boundary(o_2, q_6);
+    return ((_e2.z > 0.0) ? q_6 : _e2.xy);
 }
 
 AirlightFlatLobe ConstructAirlightFlatLobe(float3 arg0, float arg1, float arg2, float arg3, float2 arg4, bool arg5) {
@@ -7961,7 +7965,7 @@ AirlightFlatLobe ConstructAirlightFlatLobe(float3 arg0, float arg1, float arg2, 
     return ret;
 }
 
-AirlightFlatLobe airlight_flat_lobe(AirlightArea a_22, float z_11, AirlightOutline o_3, float2 centre_1, float size_1)
+AirlightFlatLobe airlight_flat_lobe(AirlightArea a_23, float z_11, AirlightOutline o_3, float2 centre_1, float size_1)
 {
     uint j_6 = 0u;
     bool local_182 = (bool)0;
@@ -7986,10 +7990,10 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_22, float z_11, AirlightOutli
         }
         {
             uint _e20 = j_6;
-            float2 lobe_5 = ((_e20 == 1u) ? a_22.lobes.zw : a_22.lobes.xy);
-            float3 p_7 = (lobe_5.x * a_22.dirs);
+            float2 lobe_5 = ((_e20 == 1u) ? a_23.lobes.zw : a_23.lobes.xy);
+            float3 p_5 = (lobe_5.x * a_23.dirs);
             if ((lobe_5.y > 0.0)) {
-                local_182 = (p_7.z < 0.0);
+                local_182 = (p_5.z < 0.0);
             } else {
                 local_182 = false;
             }
@@ -8001,12 +8005,12 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_22, float z_11, AirlightOutli
             }
             bool _e43 = local_183;
             if (_e43) {
-                float l_4 = (z_11 / -(p_7.z));
-                float2 q_13 = (l_4 * p_7.xy);
-                const float2 _e49 = airlight_outline_nearest(o_3, q_13);
+                float l_4 = (z_11 / -(p_5.z));
+                float2 q_14 = (l_4 * p_5.xy);
+                const float2 _e49 = airlight_outline_nearest(o_3, q_14);
                 float3 to_near = float3(_e49, -(z_11));
-                float cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1.0);
-                bool on_emitter = (length((_e49 - q_13)) <= (1.9073486e-6 * ((length(q_13) + size_1) + z_11)));
+                float cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1.0);
+                bool on_emitter = (length((_e49 - q_14)) <= (1.9073486e-6 * ((length(q_14) + size_1) + z_11)));
                 if (!(on_emitter)) {
                     const float _e69 = airlight_acos(cos_1);
                     local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
@@ -8015,7 +8019,7 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_22, float z_11, AirlightOutli
                 }
                 bool _e75 = local_184;
                 if (_e75) {
-                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_7, lobe_5.x, lobe_5.y, l_4, q_13, on_emitter);
+                    const AirlightFlatLobe airlightflatlobe = ConstructAirlightFlatLobe(p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter);
                     return airlightflatlobe;
                 }
             }
@@ -8047,10 +8051,10 @@ float4 airlight_edge_at(AirlightEdgeRule rule_1, float beta)
     return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_14).xx), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
-float2 airlight_clip(float2 chord, float2 a_23, float2 b_13, float2 q_6, float2 e_5)
+float2 airlight_clip(float2 chord, float2 a_24, float2 b_14, float2 q_7, float2 e_5)
 {
-    float2 m_13 = float2((b_13.y - a_23.y), (a_23.x - b_13.x));
-    float num = (((q_6.x - a_23.x) * m_13.x) + ((q_6.y - a_23.y) * m_13.y));
+    float2 m_13 = float2((b_14.y - a_24.y), (a_24.x - b_14.x));
+    float num = (((q_7.x - a_24.x) * m_13.x) + ((q_7.y - a_24.y) * m_13.y));
     float den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if ((den > 0.0)) {
         return float2(chord.x, min(chord.y, (-(num) / den)));
@@ -8064,24 +8068,24 @@ float2 airlight_clip(float2 chord, float2 a_23, float2 b_13, float2 q_6, float2 
     return chord;
 }
 
-float2 airlight_outline_chord(AirlightOutline o_4, float2 q_7, float2 e_6)
+float2 airlight_outline_chord(AirlightOutline o_4, float2 q_8, float2 e_6)
 {
     float2 chord_1 = float2(0.0, 3.4028235e38);
 
     if ((o_4.radius > 0.0)) {
-        float2 qc_1 = (q_7 - o_4.corners[0]);
+        float2 qc_1 = (q_8 - o_4.corners[0]);
         float a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        float b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        float b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        float k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        float disc_3 = ((b_22 * b_22) - (a_47 * k_13));
+        float k_12 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        float disc_3 = ((b_23 * b_23) - (a_47 * k_12));
         if (!((disc_3 > 0.0))) {
             return (0.0).xx;
         }
         float root_3 = sqrt(disc_3);
-        float t_12 = (-(b_22) - (((asuint(b_22) & 2147483648u) != 0u) ? -(root_3) : root_3));
-        float r1_2 = (t_12 / a_47);
-        float r2_4 = (k_13 / t_12);
+        float t_11 = (-(b_23) - (((asuint(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3));
+        float r1_2 = (t_11 / a_47);
+        float r2_4 = (k_12 / t_11);
         float hi_8 = max(r1_2, r2_4);
         if (!((hi_8 > 0.0))) {
             return (0.0).xx;
@@ -8089,16 +8093,16 @@ float2 airlight_outline_chord(AirlightOutline o_4, float2 q_7, float2 e_6)
         return float2(max(min(r1_2, r2_4), 0.0), hi_8);
     }
     float2 _e70 = chord_1;
-    const float2 _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_7, e_6);
+    const float2 _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_8, e_6);
     chord_1 = _e75;
     float2 _e76 = chord_1;
-    const float2 _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_7, e_6);
+    const float2 _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_8, e_6);
     chord_1 = _e81;
     float2 _e82 = chord_1;
-    const float2 _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_7, e_6);
+    const float2 _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_8, e_6);
     chord_1 = _e87;
     float2 _e88 = chord_1;
-    const float2 _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_7, e_6);
+    const float2 _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_8, e_6);
     return _e93;
 }
 
@@ -8133,64 +8137,64 @@ float airlight_flat_lobe_along(AirlightScene s_40, float z_13, AirlightOutline o
     float sum_8 = 0.0;
 
     float3 w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    float k_14 = (w_9.z / -(lobe_2.p.z));
-    const float2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
+    float k_13 = (w_9.z / -(lobe_2.p.z));
+    const float2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_13 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
-    const float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
-    const float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
+    const float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_13 * _e23.x)));
+    const float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_13 * _e23.y)));
     const float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
     float c_21 = (0.5 * _e42.y);
     float hw_3 = (0.5 * _e42.y);
     float _e52 = sum_8;
-    const float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
+    const float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    const float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
+    const float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    const float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
+    const float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    const float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
+    const float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    const float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
+    const float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    const float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
+    const float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    const float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
+    const float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    const float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
+    const float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    const float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
+    const float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    const float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
+    const float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    const float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
+    const float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    const float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
+    const float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    const float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
+    const float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    const float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
+    const float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    const float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
+    const float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    const float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
+    const float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -8225,16 +8229,16 @@ AirlightEdgeRule ConstructAirlightEdgeRule(float arg0, float2 arg1, float arg2, 
     return ret;
 }
 
-AirlightEdgeRule airlight_edge_rule(float2 a_24, float2 b_14, float width_1)
+AirlightEdgeRule airlight_edge_rule(float2 a_25, float2 b_15, float width_1)
 {
-    float2 e_17 = (b_14 - a_24);
+    float2 e_17 = (b_15 - a_25);
     float el = sqrt(((e_17.x * e_17.x) + (e_17.y * e_17.y)));
-    float2 t_13 = (e_17 / (el).xx);
-    float h_9 = (((a_24.x * b_14.y) - (a_24.y * b_14.x)) / el);
+    float2 t_12 = (e_17 / (el).xx);
+    float h_9 = (((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el);
     float reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    const float _e27 = airlight_atan2_(dot(a_24, t_13), reach_3);
-    const float _e29 = airlight_atan2_(dot(b_14, t_13), reach_3);
-    const AirlightEdgeRule airlightedgerule = ConstructAirlightEdgeRule(h_9, t_13, reach_3, _e27, _e29);
+    const float _e27 = airlight_atan2_(dot(a_25, t_12), reach_3);
+    const float _e29 = airlight_atan2_(dot(b_15, t_12), reach_3);
+    const AirlightEdgeRule airlightedgerule = ConstructAirlightEdgeRule(h_9, t_12, reach_3, _e27, _e29);
     return airlightedgerule;
 }
 
@@ -8249,8 +8253,8 @@ float4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_7)
 float4 airlight_sort4_(float4 x_25)
 {
     float4 a_48 = float4(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
-    float4 b_23 = float4(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
-    return float4(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
+    float4 b_24 = float4(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
+    return float4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
 AirlightChordEdges ConstructAirlightChordEdges(float2 arg0, float2 arg1, float arg2) {
@@ -8352,13 +8356,29 @@ float airlight_mercator(float2 n_3, float2 cs_3)
     return clamp(_e21, -(_e3), _e3);
 }
 
+float3 airlight_mercator_node(float ua, float ub, uint i_33)
+{
+    const float _e5 = airlight_mercator_cut(airlight_naga_div(i_33, 12u));
+    float lo_8 = max(ua, _e5);
+    const float _e11 = airlight_mercator_cut((airlight_naga_div(i_33, 12u) + 1u));
+    float hi_9 = min(ub, _e11);
+    if (!((lo_8 < hi_9))) {
+        return (0.0).xxx;
+    }
+    const float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
+    float hw_5 = (0.5 * (hi_9 - lo_8));
+    float x_38 = ((0.5 * (lo_8 + hi_9)) + (hw_5 * _e19.x));
+    float e_18 = exp(-(abs(x_38)));
+    float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
+    return float3(sech, ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+}
+
 float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, float3 u_6, float3 v_8, float2 n_4, float2 first_1, float2 last)
 {
     float sum_9 = 0.0;
-    uint k_9 = 0u;
-    uint j_8 = (uint)0;
+    uint i_34 = 0u;
 
-    float2 t_14 = float2(-(n_4.y), n_4.x);
+    float2 t_13 = float2(-(n_4.y), n_4.x);
     const float _e13 = airlight_mercator(n_4, first_1);
     const float _e14 = airlight_mercator(n_4, last);
     uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
@@ -8367,59 +8387,28 @@ float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_
         if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
         loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
         if (!loop_init_37) {
-            uint _e80 = k_9;
-            k_9 = (_e80 + 1u);
+            uint _e38 = i_34;
+            i_34 = (_e38 + 1u);
         }
         loop_init_37 = false;
-        uint _e19 = k_9;
-        if ((_e19 < 7u)) {
+        uint _e19 = i_34;
+        if ((_e19 < 84u)) {
         } else {
             break;
         }
         {
-            uint _e22 = k_9;
-            const float _e23 = airlight_mercator_cut(_e22);
-            float lo_8 = max(_e13, _e23);
-            uint _e25 = k_9;
-            const float _e28 = airlight_mercator_cut((_e25 + 1u));
-            float hi_9 = min(_e14, _e28);
-            if (!((lo_8 < hi_9))) {
+            uint _e22 = i_34;
+            const float3 _e23 = airlight_mercator_node(_e13, _e14, _e22);
+            if ((_e23.z == 0.0)) {
                 continue;
             }
-            float c_22 = ((lo_8 + hi_9) * 0.5);
-            float hw_5 = ((hi_9 - lo_8) * 0.5);
-            j_8 = 0u;
-            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-            bool loop_init_38 = true;
-            while(true) {
-                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-                if (!loop_init_38) {
-                    uint _e77 = j_8;
-                    j_8 = (_e77 + 1u);
-                }
-                loop_init_38 = false;
-                uint _e40 = j_8;
-                if ((_e40 < 12u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e43 = j_8;
-                    const float2 _e44 = airlight_triangle_rule(_e43);
-                    float x_38 = (c_22 + (hw_5 * _e44.x));
-                    float e_18 = exp(-(abs(x_38)));
-                    float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
-                    float th = ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)));
-                    float _e66 = sum_9;
-                    const float _e73 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * sech) + (t_14 * th)));
-                    sum_9 = (_e66 + (((_e44.y * hw_5) * sech) * _e73));
-                }
-            }
+            float _e27 = sum_9;
+            const float _e34 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
+            sum_9 = (_e27 + (_e23.z * _e34));
         }
     }
-    float _e82 = sum_9;
-    return _e82;
+    float _e40 = sum_9;
+    return _e40;
 }
 
 float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o_7, AirlightFlatLobe lobe_4)
@@ -8427,35 +8416,35 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     float sum_10 = 0.0;
     float2 m_4 = float2(1.0, 0.0);
     float2 t_4 = (float2)0;
-    uint j_9 = 0u;
-    uint i_33 = 0u;
-    uint i_34 = 0u;
-    float4 area = (0.0).xxxx;
+    uint j_8 = 0u;
     uint i_35 = 0u;
     uint i_36 = 0u;
+    float4 area = (0.0).xxxx;
+    uint i_37 = 0u;
+    uint i_38 = 0u;
     float2 ya = (float2)0;
     float2 yb = (float2)0;
+    uint j_9 = (uint)0;
+    uint i_39 = 0u;
     uint j_10 = (uint)0;
-    uint i_37 = 0u;
-    uint j_11 = (uint)0;
     float2 merc_first = (float2)0;
     float2 merc_last = (float2)0;
     bool local_187 = (bool)0;
     AirlightEdgeRule rule_4 = (AirlightEdgeRule)0;
-    uint j_12 = (uint)0;
+    uint j_11 = (uint)0;
 
     const float3 _e5 = airlight_basis_e1_(lobe_4.p);
     float3 v_10 = cross(lobe_4.p, _e5);
-    float2 q_14 = lobe_4.q;
+    float2 q_15 = lobe_4.q;
     if ((o_7.radius > 0.0)) {
         if (lobe_4.on_emitter) {
-            float2 dq_2 = (q_14 - o_7.corners[0]);
+            float2 dq_2 = (q_15 - o_7.corners[0]);
             float d_6 = sqrt(dot(dq_2, dq_2));
             if ((d_6 > 0.0)) {
                 m_4 = (dq_2 / (d_6).xx);
             }
             float2 _e31 = m_4;
-            float2 rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_14);
+            float2 rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_15);
             float2 rim = float2(dot(rim_e, _e5.xy), dot(rim_e, v_10.xy));
             float _e41 = m_4.y;
             float _e46 = m_4.x;
@@ -8480,17 +8469,17 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
             float width_5 = min((lobe_4.l * lobe_4.scale), half_chord);
             float2 _e108 = t_4;
             AirlightEdgeRule rule_7 = ConstructAirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964, 1.5707964);
-            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-            bool loop_init_39 = true;
+            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+            bool loop_init_38 = true;
             while(true) {
-                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                if (!loop_init_39) {
-                    uint _e143 = j_9;
-                    j_9 = (_e143 + 1u);
+                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (!loop_init_38) {
+                    uint _e143 = j_8;
+                    j_8 = (_e143 + 1u);
                 }
-                loop_init_39 = false;
-                uint _e118 = j_9;
+                loop_init_38 = false;
+                uint _e118 = j_8;
                 if ((_e118 < 16u)) {
                 } else {
                     break;
@@ -8499,7 +8488,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                     if (!((h_11 > 0.0))) {
                         break;
                     }
-                    uint _e124 = j_9;
+                    uint _e124 = j_8;
                     const float2 _e125 = airlight_radial_rule(_e124);
                     const float4 _e129 = airlight_edge_at(rule_7, (1.5707964 * _e125.x));
                     float _e130 = sum_10;
@@ -8510,23 +8499,23 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
             float _e146 = t_4.y;
             float _e148 = t_4.x;
             float2 n_9 = float2(_e146, -(_e148));
-            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-            bool loop_init_40 = true;
+            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+            bool loop_init_39 = true;
             while(true) {
-                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                if (!loop_init_40) {
-                    uint _e172 = i_33;
-                    i_33 = (_e172 + 1u);
+                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (!loop_init_39) {
+                    uint _e172 = i_35;
+                    i_35 = (_e172 + 1u);
                 }
-                loop_init_40 = false;
-                uint _e153 = i_33;
+                loop_init_39 = false;
+                uint _e153 = i_35;
                 if ((_e153 < 32u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = i_33;
+                    uint _e157 = i_35;
                     const float3 _e158 = airlight_azimuths(false, _e157);
                     float _e159 = sum_10;
                     float2 _e163 = t_4;
@@ -8537,7 +8526,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
             float _e174 = sum_10;
             return _e174;
         }
-        float2 d_7 = (o_7.corners[0] - q_14);
+        float2 d_7 = (o_7.corners[0] - q_15);
         float dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
         float sb_1 = (o_7.radius / dq_3);
         float cb = (sqrt(((dq_3 - o_7.radius) * (dq_3 + o_7.radius))) / dq_3);
@@ -8548,23 +8537,23 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
         const float _e223 = airlight_wrap_turn((_e221 - _e195));
         float centre_2 = (_e195 + ((_e209 + _e223) * 0.5));
         float half_19 = (abs((_e209 - _e223)) * 0.5);
-        uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-        bool loop_init_41 = true;
+        uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+        bool loop_init_40 = true;
         while(true) {
-            if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-            loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-            if (!loop_init_41) {
-                uint _e253 = i_34;
-                i_34 = (_e253 + 1u);
+            if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+            loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+            if (!loop_init_40) {
+                uint _e253 = i_36;
+                i_36 = (_e253 + 1u);
             }
-            loop_init_41 = false;
-            uint _e234 = i_34;
+            loop_init_40 = false;
+            uint _e234 = i_36;
             if ((_e234 < 32u)) {
             } else {
                 break;
             }
             {
-                uint _e238 = i_34;
+                uint _e238 = i_36;
                 const float3 _e239 = airlight_azimuths(false, _e238);
                 float _e240 = sum_10;
                 const float2 _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
@@ -8575,30 +8564,30 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
         float _e255 = sum_10;
         return _e255;
     }
-    float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_7.corners[0] - q_14), _e5.xy), dot((o_7.corners[0] - q_14), v_10.xy)), float2(dot((o_7.corners[1] - q_14), _e5.xy), dot((o_7.corners[1] - q_14), v_10.xy)), float2(dot((o_7.corners[2] - q_14), _e5.xy), dot((o_7.corners[2] - q_14), v_10.xy)), float2(dot((o_7.corners[3] - q_14), _e5.xy), dot((o_7.corners[3] - q_14), v_10.xy)));
+    float2 y_14[4] = airlight_Constructarray4_float2_(float2(dot((o_7.corners[0] - q_15), _e5.xy), dot((o_7.corners[0] - q_15), v_10.xy)), float2(dot((o_7.corners[1] - q_15), _e5.xy), dot((o_7.corners[1] - q_15), v_10.xy)), float2(dot((o_7.corners[2] - q_15), _e5.xy), dot((o_7.corners[2] - q_15), v_10.xy)), float2(dot((o_7.corners[3] - q_15), _e5.xy), dot((o_7.corners[3] - q_15), v_10.xy)));
     if (lobe_4.on_emitter) {
-        uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-        bool loop_init_42 = true;
+        uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+        bool loop_init_41 = true;
         while(true) {
-            if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-            loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-            if (!loop_init_42) {
-                uint _e330 = i_35;
-                i_35 = (_e330 + 1u);
+            if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+            loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+            if (!loop_init_41) {
+                uint _e330 = i_37;
+                i_37 = (_e330 + 1u);
             }
-            loop_init_42 = false;
-            uint _e307 = i_35;
+            loop_init_41 = false;
+            uint _e307 = i_37;
             if ((_e307 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e310 = i_35;
-                float2 b_24 = y_14[min(uint(airlight_naga_mod((_e310 + 1u), 4u)), 3u)];
-                uint _e316 = i_35;
-                uint _e318 = i_35;
-                uint _e323 = i_35;
-                area[min(uint(_e316), 3u)] = ((y_14[min(uint(_e318), 3u)].x * b_24.y) - (y_14[min(uint(_e323), 3u)].y * b_24.x));
+                uint _e310 = i_37;
+                float2 b_25 = y_14[min(uint(airlight_naga_mod((_e310 + 1u), 4u)), 3u)];
+                uint _e316 = i_37;
+                uint _e318 = i_37;
+                uint _e323 = i_37;
+                area[min(uint(_e316), 3u)] = ((y_14[min(uint(_e318), 3u)].x * b_25.y) - (y_14[min(uint(_e323), 3u)].y * b_25.x));
             }
         }
         float _e333 = area.x;
@@ -8606,58 +8595,58 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
         float _e338 = area.z;
         float _e341 = area.w;
         float turn = (((_e333 + _e335) + _e338) + _e341);
-        uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-        bool loop_init_43 = true;
+        uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+        bool loop_init_42 = true;
         while(true) {
-            if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-            loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-            if (!loop_init_43) {
-                uint _e398 = i_36;
-                i_36 = (_e398 + 1u);
+            if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+            loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+            if (!loop_init_42) {
+                uint _e398 = i_38;
+                i_38 = (_e398 + 1u);
             }
-            loop_init_43 = false;
-            uint _e345 = i_36;
+            loop_init_42 = false;
+            uint _e345 = i_38;
             if ((_e345 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e348 = i_36;
+                uint _e348 = i_38;
                 float _e350 = area[min(uint(_e348), 3u)];
                 if (!(((_e350 * turn) > 0.0))) {
                     continue;
                 }
-                uint _e355 = i_36;
+                uint _e355 = i_38;
                 ya = y_14[min(uint(_e355), 3u)];
-                uint _e358 = i_36;
+                uint _e358 = i_38;
                 yb = y_14[min(uint(airlight_naga_mod((_e358 + 1u), 4u)), 3u)];
                 if ((turn < 0.0)) {
-                    uint _e367 = i_36;
+                    uint _e367 = i_38;
                     ya = y_14[min(uint(airlight_naga_mod((_e367 + 1u), 4u)), 3u)];
-                    uint _e373 = i_36;
+                    uint _e373 = i_38;
                     yb = y_14[min(uint(_e373), 3u)];
                 }
                 float2 _e375 = ya;
                 float2 _e376 = yb;
                 const AirlightEdgeRule _e380 = airlight_edge_rule(_e375, _e376, (lobe_4.l * lobe_4.scale));
-                j_10 = 0u;
-                uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-                bool loop_init_44 = true;
+                j_9 = 0u;
+                uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+                bool loop_init_43 = true;
                 while(true) {
-                    if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-                    loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                    if (!loop_init_44) {
-                        uint _e395 = j_10;
-                        j_10 = (_e395 + 1u);
+                    if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                    loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                    if (!loop_init_43) {
+                        uint _e395 = j_9;
+                        j_9 = (_e395 + 1u);
                     }
-                    loop_init_44 = false;
-                    uint _e383 = j_10;
+                    loop_init_43 = false;
+                    uint _e383 = j_9;
                     if ((_e383 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e386 = j_10;
+                        uint _e386 = j_9;
                         const float4 _e387 = airlight_edge_node(_e380, _e386);
                         float _e388 = sum_10;
                         const float _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
@@ -8669,63 +8658,63 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
         float _e400 = sum_10;
         return _e400;
     }
-    const float _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5 * (o_7.corners[0] + o_7.corners[2])) - q_14));
-    const float _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_14));
+    const float _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5 * (o_7.corners[0] + o_7.corners[2])) - q_15));
+    const float _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_15));
     const float _e415 = airlight_wrap_turn((_e413 - _e409));
-    const float _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_14));
+    const float _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_15));
     const float _e421 = airlight_wrap_turn((_e419 - _e409));
-    const float _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_14));
+    const float _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_15));
     const float _e427 = airlight_wrap_turn((_e425 - _e409));
-    const float _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_14));
+    const float _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_15));
     const float _e433 = airlight_wrap_turn((_e431 - _e409));
     const float4 _e435 = airlight_sort4_(float4(_e415, _e421, _e427, _e433));
-    uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-    bool loop_init_45 = true;
+    uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+    bool loop_init_44 = true;
     while(true) {
-        if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-        loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-        if (!loop_init_45) {
-            uint _e558 = i_37;
-            i_37 = (_e558 + 1u);
+        if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+        loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+        if (!loop_init_44) {
+            uint _e558 = i_39;
+            i_39 = (_e558 + 1u);
         }
-        loop_init_45 = false;
-        uint _e438 = i_37;
+        loop_init_44 = false;
+        uint _e438 = i_39;
         if ((_e438 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e441 = i_37;
+            uint _e441 = i_39;
             float first_3 = (_e409 + _e435[min(uint(_e441), 3u)]);
-            uint _e444 = i_37;
+            uint _e444 = i_39;
             float last_2 = (_e409 + _e435[min(uint((_e444 + 1u)), 3u)]);
             const float2 _e452 = airlight_cos_sin_turns((0.5 * (first_3 + last_2)));
             const AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
             float2 n_10 = _e453.entry;
             if (all((n_10 == (0.0).xx))) {
-                float c_23 = ((first_3 + last_2) * 0.5);
+                float c_22 = ((first_3 + last_2) * 0.5);
                 float hw_6 = ((last_2 - first_3) * 0.5);
-                j_11 = 0u;
-                uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-                bool loop_init_46 = true;
+                j_10 = 0u;
+                uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+                bool loop_init_45 = true;
                 while(true) {
-                    if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-                    loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                    if (!loop_init_46) {
-                        uint _e483 = j_11;
-                        j_11 = (_e483 + 1u);
+                    if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+                    loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                    if (!loop_init_45) {
+                        uint _e483 = j_10;
+                        j_10 = (_e483 + 1u);
                     }
-                    loop_init_46 = false;
-                    uint _e467 = j_11;
+                    loop_init_45 = false;
+                    uint _e467 = j_10;
                     if ((_e467 < 12u)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e470 = j_11;
+                        uint _e470 = j_10;
                         const float2 _e471 = airlight_triangle_rule(_e470);
                         float _e472 = sum_10;
-                        const float2 _e478 = airlight_cos_sin_turns((c_23 + (hw_6 * _e471.x)));
+                        const float2 _e478 = airlight_cos_sin_turns((c_22 + (hw_6 * _e471.x)));
                         const float _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
                         sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
@@ -8767,25 +8756,25 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                     rule_4.last = _e534;
                     merc_last = _e452;
                 }
-                j_12 = 0u;
-                uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-                bool loop_init_47 = true;
+                j_11 = 0u;
+                uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+                bool loop_init_46 = true;
                 while(true) {
-                    if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-                    loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                    if (!loop_init_47) {
-                        uint _e550 = j_12;
-                        j_12 = (_e550 + 1u);
+                    if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+                    loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                    if (!loop_init_46) {
+                        uint _e550 = j_11;
+                        j_11 = (_e550 + 1u);
                     }
-                    loop_init_47 = false;
-                    uint _e537 = j_12;
+                    loop_init_46 = false;
+                    uint _e537 = j_11;
                     if ((_e537 < 12u)) {
                     } else {
                         break;
                     }
                     {
                         AirlightEdgeRule _e540 = rule_4;
-                        uint _e541 = j_12;
+                        uint _e541 = j_11;
                         const float4 _e542 = airlight_edge_node(_e540, _e541);
                         float _e543 = sum_10;
                         const float _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
@@ -8804,29 +8793,29 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     return _e560;
 }
 
-float airlight_disc(AirlightScene s_43, AirlightArea a_25, float3 x_26)
+float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_26)
 {
     bool local_188 = (bool)0;
     bool local_189 = (bool)0;
     float2 u_7 = (0.0).xx;
     AirlightAbove above_3 = (AirlightAbove)0;
     float sum_11 = 0.0;
-    uint i_38 = 0u;
+    uint i_40 = 0u;
     float2 e_9 = (float2)0;
     float r_max_1 = (float)0;
 
-    float3 rel_1 = (x_26 - a_25.c);
-    float z_21 = dot(rel_1, a_25.n);
+    float3 rel_1 = (x_26 - a_26.c);
+    float z_21 = dot(rel_1, a_26.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    float fx = dot(rel_1, a_25.a1_);
-    float fy_1 = dot(rel_1, a_25.a2_);
+    float fx = dot(rel_1, a_26.a1_);
+    float fy_1 = dot(rel_1, a_26.a2_);
     float rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    float radius_2 = a_25.radius;
+    float radius_2 = a_26.radius;
     float2 zero_2 = (0.0).xx;
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_25, z_21, outline, float2(-(fx), -(fy_1)), radius_2);
+    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_21, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
         const float _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
         return _e34;
@@ -8852,24 +8841,24 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_25, float3 x_26)
         const AirlightAbove _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    float k_15 = ((rf - radius_2) * (rf + radius_2));
-    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-    bool loop_init_48 = true;
+    float k_14 = ((rf - radius_2) * (rf + radius_2));
+    uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+    bool loop_init_47 = true;
     while(true) {
-        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-        if (!loop_init_48) {
-            uint _e127 = i_38;
-            i_38 = (_e127 + 1u);
+        if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+        loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+        if (!loop_init_47) {
+            uint _e127 = i_40;
+            i_40 = (_e127 + 1u);
         }
-        loop_init_48 = false;
-        uint _e73 = i_38;
+        loop_init_47 = false;
+        uint _e73 = i_40;
         if ((_e73 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e76 = i_38;
+            uint _e76 = i_40;
             const float3 _e77 = airlight_azimuths(inside_2, _e76);
             float _e80 = u_7.x;
             float _e84 = u_7.y;
@@ -8879,15 +8868,15 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_25, float3 x_26)
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if (inside_2) {
                 e_9 = _e77.xy;
-                float b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                float root_4 = sqrt(((b_25 * b_25) - k_15));
-                r_max_1 = ((b_25 > 0.0) ? (-(k_15) / (b_25 + root_4)) : (root_4 - b_25));
+                float b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                float root_4 = sqrt(((b_26 * b_26) - k_14));
+                r_max_1 = ((b_26 > 0.0) ? (-(k_14) / (b_26 + root_4)) : (root_4 - b_26));
             }
             float _e118 = sum_11;
             AirlightAbove _e120 = above_3;
             float2 _e121 = e_9;
             float _e122 = r_max_1;
-            const float _e123 = airlight_flat_radial(s_43, a_25, _e120, _e121, _e122);
+            const float _e123 = airlight_flat_radial(s_43, a_26, _e120, _e121, _e122);
             sum_11 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -8895,33 +8884,33 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_25, float3 x_26)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_44, AirlightArea a_26, float3 x_27)
+float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_27)
 {
-    float2 q_8 = (float2)0;
+    float2 q_9 = (float2)0;
     bool local_190 = (bool)0;
     float sum_12 = 0.0;
-    uint i_39 = 0u;
-    uint j_13 = (uint)0;
+    uint i_41 = 0u;
+    uint j_12 = (uint)0;
 
-    float3 rel_2 = (x_27 - a_26.c);
-    float z_22 = dot(rel_2, a_26.n);
+    float3 rel_2 = (x_27 - a_27.c);
+    float z_22 = dot(rel_2, a_27.n);
     if (!((z_22 > 0.0))) {
         return 0.0;
     }
-    float2 foot_1 = float2(dot(rel_2, a_26.a1_), dot(rel_2, a_26.a2_));
-    float2 u2_1 = float2(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
-    float2 v2_1 = float2(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
+    float2 foot_1 = float2(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
+    float2 u2_1 = float2(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
+    float2 v2_1 = float2(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
     float2 corners[5] = airlight_Constructarray5_float2_((0.0).xx, u2_1, (u2_1 + v2_1), v2_1, (0.0).xx);
     float det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     AirlightOutline about_foot = ConstructAirlightOutline(airlight_Constructarray4_float2_((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_26, z_22, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
+    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_22, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
     if ((_e69.scale > 0.0)) {
         const float _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
-    q_8 = (_e76.xy + foot_1);
+    q_9 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
         const bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
         local_190 = _e89;
@@ -8930,59 +8919,59 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_26, float3 x_27)
     }
     bool _e91 = local_190;
     if (_e91) {
-        q_8 = foot_1;
+        q_9 = foot_1;
     }
-    float2 _e92 = q_8;
+    float2 _e92 = q_9;
     const AirlightAbove _e94 = airlight_above(z_22, (_e92 - foot_1));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     const float _e99 = airlight_narrowed(s_44, _e94.rho0_);
-    uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-    bool loop_init_49 = true;
+    uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+    bool loop_init_48 = true;
     while(true) {
-        if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
-        loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-        if (!loop_init_49) {
-            uint _e145 = i_39;
-            i_39 = (_e145 + 1u);
+        if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+        loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+        if (!loop_init_48) {
+            uint _e145 = i_41;
+            i_41 = (_e145 + 1u);
         }
-        loop_init_49 = false;
-        uint _e104 = i_39;
+        loop_init_48 = false;
+        uint _e104 = i_41;
         if ((_e104 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e107 = i_39;
-            float2 _e109 = q_8;
+            uint _e107 = i_41;
+            float2 _e109 = q_9;
             float2 ca = (corners[min(uint(_e107), 4u)] - _e109);
-            uint _e111 = i_39;
-            float2 _e115 = q_8;
+            uint _e111 = i_41;
+            float2 _e115 = q_9;
             float2 cb_1 = (corners[min(uint((_e111 + 1u)), 4u)] - _e115);
             if (!((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin))) {
                 continue;
             }
             const AirlightEdgeRule _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_13 = 0u;
-            uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
-            bool loop_init_50 = true;
+            j_12 = 0u;
+            uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+            bool loop_init_49 = true;
             while(true) {
-                if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
-                loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
-                if (!loop_init_50) {
-                    uint _e142 = j_13;
-                    j_13 = (_e142 + 1u);
+                if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+                if (!loop_init_49) {
+                    uint _e142 = j_12;
+                    j_12 = (_e142 + 1u);
                 }
-                loop_init_50 = false;
-                uint _e129 = j_13;
+                loop_init_49 = false;
+                uint _e129 = j_12;
                 if ((_e129 < 12u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e132 = j_13;
+                    uint _e132 = j_12;
                     const float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_12;
-                    const float _e138 = airlight_flat_radial(s_44, a_26, _e94, _e133.xy, _e133.z);
+                    const float _e138 = airlight_flat_radial(s_44, a_27, _e94, _e133.xy, _e133.z);
                     sum_12 = (_e134 + (_e133.w * _e138));
                 }
             }
@@ -9011,55 +9000,55 @@ airlight_ret_Constructarray16_float3_ airlight_Constructarray16_float3_(float3 a
     return ret;
 }
 
-float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_27, AirlightCap cap_1)
+float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_28, AirlightCap cap_1)
 {
     float3 rows[16] = airlight_Constructarray16_float3_((0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx);
     float sum_13 = 0.0;
-    uint i_40 = 0u;
+    uint i_42 = 0u;
     float at_2 = (float)0;
 
     const float3 _e4 = airlight_basis_e1_(cap_1.a);
     float3 e2_2 = cross(cap_1.a, _e4);
-    float ad = dot(cap_1.a, a_27.d);
-    float e1d = dot(_e4, a_27.d);
-    float e2d = dot(e2_2, a_27.d);
+    float ad = dot(cap_1.a, a_28.d);
+    float e1d = dot(_e4, a_28.d);
+    float e2d = dot(e2_2, a_28.d);
     const float2 _e15 = airlight_graded_range(s_46, 1.5707964);
     float graded_9 = _e15.y;
-    float c_24 = (0.5 * _e15.x);
+    float c_23 = (0.5 * _e15.x);
     float hw_7 = (0.5 * _e15.x);
-    const float3 _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    const float3 _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[0] = _e63;
-    const float3 _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    const float3 _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[1] = _e70;
-    const float3 _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    const float3 _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[2] = _e77;
-    const float3 _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    const float3 _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[3] = _e84;
-    const float3 _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    const float3 _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[4] = _e91;
-    const float3 _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    const float3 _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[5] = _e98;
-    const float3 _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    const float3 _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[6] = _e105;
-    const float3 _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    const float3 _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[7] = _e112;
-    const float3 _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    const float3 _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[8] = _e119;
-    const float3 _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    const float3 _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[9] = _e126;
-    const float3 _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    const float3 _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[10] = _e133;
-    const float3 _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    const float3 _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[11] = _e140;
-    const float3 _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.944575 * hw_7)), (0.062253524 * hw_7));
+    const float3 _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[12] = _e147;
-    const float3 _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.944575 * hw_7)), (0.062253524 * hw_7));
+    const float3 _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[13] = _e154;
-    const float3 _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    const float3 _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[14] = _e161;
-    const float3 _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    const float3 _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[15] = _e168;
-    if (a_27.isotropic) {
+    if (a_28.isotropic) {
         const float _e174 = airlight_area_phase(s_46, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_13;
@@ -9113,23 +9102,23 @@ float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_27, AirlightCap cap
         float _e272 = sum_13;
         return _e272;
     }
-    uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
-    bool loop_init_51 = true;
+    uint2 loop_bound_51 = uint2(4294967295u, 4294967295u);
+    bool loop_init_50 = true;
     while(true) {
-        if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
-        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
-        if (!loop_init_51) {
-            uint _e550 = i_40;
-            i_40 = (_e550 + 1u);
+        if (all(loop_bound_51 == uint2(0u, 0u))) { break; }
+        loop_bound_51 -= uint2(loop_bound_51.y == 0u, 1u);
+        if (!loop_init_50) {
+            uint _e550 = i_42;
+            i_42 = (_e550 + 1u);
         }
-        loop_init_51 = false;
-        uint _e275 = i_40;
+        loop_init_50 = false;
+        uint _e275 = i_42;
         if ((_e275 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e279 = i_40;
+            uint _e279 = i_42;
             const float3 _e280 = airlight_azimuths(true, _e279);
             float across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0.0;
@@ -9249,13 +9238,13 @@ float airlight_sphere_lobe_node(AirlightScene s_47, AirlightCap cap_2, float sig
     return ((((_e37 * exp(min((-(s_47.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_28, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_3)
+float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_3)
 {
     float2 axis_2 = float2(1.0, 0.0);
     float half_15 = 0.0;
     uint count_3 = (uint)0;
     float sum_14 = 0.0;
-    uint i_41 = 0u;
+    uint i_43 = 0u;
     float big_b_1 = (float)0;
     float wpsi = (float)0;
     bool local_191 = (bool)0;
@@ -9266,9 +9255,9 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_28, Airlight
     float to_1 = (float)0;
     float around = (float)0;
 
-    float3 p_8 = (sign_2 * a_28.d);
-    const float3 _e8 = airlight_basis_e1_(p_8);
-    float3 v_11 = cross(p_8, _e8);
+    float3 p_6 = (sign_2 * a_29.d);
+    const float3 _e8 = airlight_basis_e1_(p_6);
+    float3 v_11 = cross(p_6, _e8);
     float au = dot(cap_3.a, _e8);
     float av = dot(cap_3.a, v_11);
     bool inside_3 = (cos_p_1 > cap_3.cos_a);
@@ -9281,225 +9270,215 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_28, Airlight
     const float _e43 = airlight_atan2_(sin_p, cos_p_1);
     const float _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
     float eps = (_e46 - _e43);
-    float width_7 = min(scale_3, sqrt(max(((_e46 - _e43) * (_e46 + _e43)), 0.0)));
-    float _e56 = axis_2.y;
-    float _e58 = axis_2.x;
-    AirlightEdgeRule rim_1 = ConstructAirlightEdgeRule(eps, float2(_e56, -(_e58)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964, 1.5707964);
-    bool beyond = (cos_p_1 < -(cap_3.cos_a));
+    float width_7 = min(scale_3, sqrt(max((eps * (_e46 + _e43)), 0.0)));
+    float _e55 = axis_2.y;
+    float _e57 = axis_2.x;
+    AirlightEdgeRule rim_1 = ConstructAirlightEdgeRule(eps, float2(_e55, -(_e57)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964, 1.5707964);
+    bool beside = (cos_p_1 < -(cap_3.cos_a));
     count_3 = (inside_3 ? 24u : 16u);
-    if (beyond) {
+    if (beside) {
         count_3 = 100u;
     }
-    uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
-    bool loop_init_52 = true;
+    uint2 loop_bound_52 = uint2(4294967295u, 4294967295u);
+    bool loop_init_51 = true;
     while(true) {
-        if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
-        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
-        if (!loop_init_52) {
-            uint _e431 = i_41;
-            i_41 = (_e431 + 1u);
+        if (all(loop_bound_52 == uint2(0u, 0u))) { break; }
+        loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
+        if (!loop_init_51) {
+            uint _e398 = i_43;
+            i_43 = (_e398 + 1u);
         }
-        loop_init_52 = false;
-        uint _e80 = i_41;
-        uint _e81 = count_3;
-        if ((_e80 < _e81)) {
+        loop_init_51 = false;
+        uint _e79 = i_43;
+        uint _e80 = count_3;
+        if ((_e79 < _e80)) {
         } else {
             break;
         }
         {
             big_b_1 = 0.0;
             wpsi = 0.0;
-            if (beyond) {
-                uint _e89 = i_41;
-                local_191 = (_e89 < 84u);
+            if (beside) {
+                uint _e88 = i_43;
+                local_191 = (_e88 < 84u);
             } else {
                 local_191 = false;
             }
-            bool _e93 = local_191;
-            if (_e93) {
-                uint _e94 = i_41;
-                const float _e97 = airlight_mercator_cut(airlight_naga_div(_e94, 12u));
-                float lo_9 = max(0.0, _e97);
-                const float _e101 = airlight_mercator_cut(7u);
-                uint _e102 = i_41;
-                const float _e107 = airlight_mercator_cut((airlight_naga_div(_e102, 12u) + 1u));
-                float hi_10 = min(_e101, _e107);
-                if (!((lo_9 < hi_10))) {
+            bool _e92 = local_191;
+            if (_e92) {
+                const float _e95 = airlight_mercator_cut(7u);
+                uint _e96 = i_43;
+                const float3 _e97 = airlight_mercator_node(0.0, _e95, _e96);
+                if ((_e97.z == 0.0)) {
                     continue;
                 }
-                uint _e111 = i_41;
-                const float2 _e114 = airlight_triangle_rule(airlight_naga_mod(_e111, 12u));
-                float hw_8 = (0.5 * (hi_10 - lo_9));
-                float x_39 = ((0.5 * (lo_9 + hi_10)) + (hw_8 * _e114.x));
-                float e_19 = exp(-(abs(x_39)));
-                float sech_1 = ((2.0 * e_19) / (1.0 + (e_19 * e_19)));
-                big_b_1 = (sin_p * sech_1);
-                wpsi = (((2.0 * _e114.y) * hw_8) * sech_1);
+                big_b_1 = (sin_p * _e97.x);
+                wpsi = (2.0 * _e97.z);
             } else {
-                if (beyond) {
-                    uint _e139 = i_41;
-                    const float3 _e142 = airlight_azimuths_even((_e139 - 84u));
-                    big_b_1 = (-(sin_p) * _e142.x);
-                    wpsi = _e142.z;
+                if (beside) {
+                    uint _e106 = i_43;
+                    const float3 _e109 = airlight_azimuths_even((_e106 - 84u));
+                    big_b_1 = (-(sin_p) * _e109.x);
+                    wpsi = _e109.z;
                 } else {
                     if (inside_3) {
-                        uint _e149 = i_41;
-                        local_192 = (_e149 < 8u);
+                        uint _e116 = i_43;
+                        local_192 = (_e116 < 8u);
                     } else {
                         local_192 = false;
                     }
-                    bool _e153 = local_192;
-                    if (_e153) {
+                    bool _e120 = local_192;
+                    if (_e120) {
                         if (!((eps > 0.0))) {
                             continue;
                         }
-                        uint _e158 = i_41;
-                        const float2 _e162 = airlight_radial_rule(((2u * _e158) + 1u));
-                        const float4 _e166 = airlight_edge_at(rim_1, (1.5707964 * _e162.x));
-                        float2 _e168 = axis_2;
-                        big_b_1 = (sin_p * dot(_e166.xy, _e168));
-                        wpsi = ((((2.0 * _e162.y) * 0.5) * AIRLIGHT_PI) * _e166.w);
+                        uint _e125 = i_43;
+                        const float2 _e129 = airlight_radial_rule(((2u * _e125) + 1u));
+                        const float4 _e133 = airlight_edge_at(rim_1, (1.5707964 * _e129.x));
+                        float2 _e135 = axis_2;
+                        big_b_1 = (sin_p * dot(_e133.xy, _e135));
+                        wpsi = ((((2.0 * _e129.y) * 0.5) * AIRLIGHT_PI) * _e133.w);
                     } else {
                         if (inside_3) {
-                            uint _e180 = i_41;
-                            const float3 _e183 = airlight_azimuths_even((_e180 - 8u));
-                            big_b_1 = (sin_p * _e183.x);
-                            wpsi = _e183.z;
+                            uint _e147 = i_43;
+                            const float3 _e150 = airlight_azimuths_even((_e147 - 8u));
+                            big_b_1 = (sin_p * _e150.x);
+                            wpsi = _e150.z;
                         } else {
-                            uint _e187 = i_41;
-                            const float3 _e188 = airlight_azimuths_even(_e187);
-                            float _e189 = half_15;
-                            const float2 _e192 = airlight_cos_sin((_e189 * _e188.y));
-                            big_b_1 = (sin_p * _e192.x);
-                            float _e196 = half_15;
-                            wpsi = ((_e188.z * _e196) * _e188.x);
+                            uint _e154 = i_43;
+                            const float3 _e155 = airlight_azimuths_even(_e154);
+                            float _e156 = half_15;
+                            const float2 _e159 = airlight_cos_sin((_e156 * _e155.y));
+                            big_b_1 = (sin_p * _e159.x);
+                            float _e163 = half_15;
+                            wpsi = ((_e155.z * _e163) * _e155.x);
                         }
                     }
                 }
             }
-            float _e200 = big_b_1;
-            const float _e201 = airlight_atan2_(_e200, cos_p_1);
-            mid = _e201;
-            if (beyond) {
-                float _e205 = mid;
-                local_193 = (_e205 < 0.0);
+            float _e167 = big_b_1;
+            const float _e168 = airlight_atan2_(_e167, cos_p_1);
+            mid = _e168;
+            if (beside) {
+                float _e172 = mid;
+                local_193 = (_e172 < 0.0);
             } else {
                 local_193 = false;
             }
-            bool _e209 = local_193;
-            if (_e209) {
-                float _e210 = mid;
-                mid = (_e210 + 6.2831855);
+            bool _e176 = local_193;
+            if (_e176) {
+                float _e177 = mid;
+                mid = (_e177 + 6.2831855);
             }
-            float _e215 = big_b_1;
-            float _e216 = big_b_1;
-            const float _e223 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e215 * _e216)))), 1.0));
+            float _e182 = big_b_1;
+            float _e183 = big_b_1;
+            const float _e190 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e182 * _e183)))), 1.0));
             start_5 = 0.0;
             if (!(inside_3)) {
-                float _e227 = mid;
-                start_5 = max((_e227 - _e223), 0.0);
+                float _e194 = mid;
+                start_5 = max((_e194 - _e190), 0.0);
             }
-            float _e231 = mid;
-            to_1 = (_e231 + _e223);
-            if (beyond) {
-                float _e234 = to_1;
-                to_1 = min(_e234, AIRLIGHT_PI);
+            float _e198 = mid;
+            to_1 = (_e198 + _e190);
+            if (beside) {
+                float _e201 = to_1;
+                to_1 = min(_e201, AIRLIGHT_PI);
             }
-            float _e237 = start_5;
-            float _e238 = to_1;
-            const float2 _e239 = airlight_graded_from(scale_3, _e237, _e238);
-            float graded_10 = _e239.x;
-            float c_25 = (0.5 * _e239.y);
-            float hw_9 = (0.5 * _e239.y);
+            float _e204 = start_5;
+            float _e205 = to_1;
+            const float2 _e206 = airlight_graded_from(scale_3, _e204, _e205);
+            float graded_10 = _e206.x;
+            float c_24 = (0.5 * _e206.y);
+            float hw_8 = (0.5 * _e206.y);
             around = 0.0;
+            float _e216 = around;
+            float _e219 = big_b_1;
+            float _e220 = start_5;
+            const float _e224 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e219, _e220, graded_10, (c_24 - (0.09501251 * hw_8)));
+            around = (_e216 + ((0.1894506 * hw_8) * _e224));
+            float _e227 = around;
+            float _e230 = big_b_1;
+            float _e231 = start_5;
+            const float _e235 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e230, _e231, graded_10, (c_24 + (0.09501251 * hw_8)));
+            around = (_e227 + ((0.1894506 * hw_8) * _e235));
+            float _e238 = around;
+            float _e241 = big_b_1;
+            float _e242 = start_5;
+            const float _e246 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e241, _e242, graded_10, (c_24 - (0.28160354 * hw_8)));
+            around = (_e238 + ((0.18260342 * hw_8) * _e246));
             float _e249 = around;
             float _e252 = big_b_1;
             float _e253 = start_5;
-            const float _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_25 - (0.09501251 * hw_9)));
-            around = (_e249 + ((0.1894506 * hw_9) * _e257));
+            const float _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_24 + (0.28160354 * hw_8)));
+            around = (_e249 + ((0.18260342 * hw_8) * _e257));
             float _e260 = around;
             float _e263 = big_b_1;
             float _e264 = start_5;
-            const float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_25 + (0.09501251 * hw_9)));
-            around = (_e260 + ((0.1894506 * hw_9) * _e268));
+            const float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_24 - (0.45801678 * hw_8)));
+            around = (_e260 + ((0.16915652 * hw_8) * _e268));
             float _e271 = around;
             float _e274 = big_b_1;
             float _e275 = start_5;
-            const float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_25 - (0.28160354 * hw_9)));
-            around = (_e271 + ((0.18260342 * hw_9) * _e279));
+            const float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_24 + (0.45801678 * hw_8)));
+            around = (_e271 + ((0.16915652 * hw_8) * _e279));
             float _e282 = around;
             float _e285 = big_b_1;
             float _e286 = start_5;
-            const float _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_25 + (0.28160354 * hw_9)));
-            around = (_e282 + ((0.18260342 * hw_9) * _e290));
+            const float _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_24 - (0.61787623 * hw_8)));
+            around = (_e282 + ((0.14959599 * hw_8) * _e290));
             float _e293 = around;
             float _e296 = big_b_1;
             float _e297 = start_5;
-            const float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_25 - (0.45801678 * hw_9)));
-            around = (_e293 + ((0.16915652 * hw_9) * _e301));
+            const float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_24 + (0.61787623 * hw_8)));
+            around = (_e293 + ((0.14959599 * hw_8) * _e301));
             float _e304 = around;
             float _e307 = big_b_1;
             float _e308 = start_5;
-            const float _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_25 + (0.45801678 * hw_9)));
-            around = (_e304 + ((0.16915652 * hw_9) * _e312));
+            const float _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_24 - (0.7554044 * hw_8)));
+            around = (_e304 + ((0.12462897 * hw_8) * _e312));
             float _e315 = around;
             float _e318 = big_b_1;
             float _e319 = start_5;
-            const float _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_25 - (0.61787623 * hw_9)));
-            around = (_e315 + ((0.14959599 * hw_9) * _e323));
+            const float _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_24 + (0.7554044 * hw_8)));
+            around = (_e315 + ((0.12462897 * hw_8) * _e323));
             float _e326 = around;
             float _e329 = big_b_1;
             float _e330 = start_5;
-            const float _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_25 + (0.61787623 * hw_9)));
-            around = (_e326 + ((0.14959599 * hw_9) * _e334));
+            const float _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_24 - (0.8656312 * hw_8)));
+            around = (_e326 + ((0.09515851 * hw_8) * _e334));
             float _e337 = around;
             float _e340 = big_b_1;
             float _e341 = start_5;
-            const float _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_25 - (0.7554044 * hw_9)));
-            around = (_e337 + ((0.12462897 * hw_9) * _e345));
+            const float _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_24 + (0.8656312 * hw_8)));
+            around = (_e337 + ((0.09515851 * hw_8) * _e345));
             float _e348 = around;
             float _e351 = big_b_1;
             float _e352 = start_5;
-            const float _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_25 + (0.7554044 * hw_9)));
-            around = (_e348 + ((0.12462897 * hw_9) * _e356));
+            const float _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_24 - (0.944575 * hw_8)));
+            around = (_e348 + ((0.062253524 * hw_8) * _e356));
             float _e359 = around;
             float _e362 = big_b_1;
             float _e363 = start_5;
-            const float _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_25 - (0.8656312 * hw_9)));
-            around = (_e359 + ((0.09515851 * hw_9) * _e367));
+            const float _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_24 + (0.944575 * hw_8)));
+            around = (_e359 + ((0.062253524 * hw_8) * _e367));
             float _e370 = around;
             float _e373 = big_b_1;
             float _e374 = start_5;
-            const float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_25 + (0.8656312 * hw_9)));
-            around = (_e370 + ((0.09515851 * hw_9) * _e378));
+            const float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_24 - (0.9894009 * hw_8)));
+            around = (_e370 + ((0.02715246 * hw_8) * _e378));
             float _e381 = around;
             float _e384 = big_b_1;
             float _e385 = start_5;
-            const float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_25 - (0.944575 * hw_9)));
-            around = (_e381 + ((0.062253524 * hw_9) * _e389));
-            float _e392 = around;
-            float _e395 = big_b_1;
-            float _e396 = start_5;
-            const float _e400 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, _e396, graded_10, (c_25 + (0.944575 * hw_9)));
-            around = (_e392 + ((0.062253524 * hw_9) * _e400));
-            float _e403 = around;
-            float _e406 = big_b_1;
-            float _e407 = start_5;
-            const float _e411 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, _e407, graded_10, (c_25 - (0.9894009 * hw_9)));
-            around = (_e403 + ((0.02715246 * hw_9) * _e411));
-            float _e414 = around;
-            float _e417 = big_b_1;
-            float _e418 = start_5;
-            const float _e422 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e417, _e418, graded_10, (c_25 + (0.9894009 * hw_9)));
-            around = (_e414 + ((0.02715246 * hw_9) * _e422));
-            float _e425 = sum_14;
-            float _e426 = wpsi;
-            float _e427 = around;
-            sum_14 = (_e425 + (_e426 * _e427));
+            const float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_24 + (0.9894009 * hw_8)));
+            around = (_e381 + ((0.02715246 * hw_8) * _e389));
+            float _e392 = sum_14;
+            float _e393 = wpsi;
+            float _e394 = around;
+            sum_14 = (_e392 + (_e393 * _e394));
         }
     }
-    float _e433 = sum_14;
-    return _e433;
+    float _e400 = sum_14;
+    return _e400;
 }
 
 AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -9512,12 +9491,12 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
+float airlight_sphere(AirlightScene s_49, AirlightArea a_30, float3 x_28)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
-    uint j_14 = 0u;
+    uint j_13 = 0u;
     bool local_194 = (bool)0;
     bool local_195 = (bool)0;
     bool local_196 = (bool)0;
@@ -9525,33 +9504,33 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
     bool local_198 = (bool)0;
     bool local_199 = (bool)0;
 
-    float3 v_12 = (a_29.c - x_28);
+    float3 v_12 = (a_30.c - x_28);
     const float _e5 = airlight_safe_length(v_12);
-    if (!((_e5 > a_29.radius))) {
+    if (!((_e5 > a_30.radius))) {
         return 0.0;
     }
-    float sin_a_2 = (a_29.radius / _e5);
-    AirlightCap cap_4 = ConstructAirlightCap((v_12 / (_e5).xxx), _e5, a_29.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
+    float sin_a_2 = (a_30.radius / _e5);
+    AirlightCap cap_4 = ConstructAirlightCap((v_12 / (_e5).xxx), _e5, a_30.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     const float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
-    bool loop_init_53 = true;
+    uint2 loop_bound_53 = uint2(4294967295u, 4294967295u);
+    bool loop_init_52 = true;
     while(true) {
-        if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
-        loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
-        if (!loop_init_53) {
-            uint _e101 = j_14;
-            j_14 = (_e101 + 1u);
+        if (all(loop_bound_53 == uint2(0u, 0u))) { break; }
+        loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
+        if (!loop_init_52) {
+            uint _e101 = j_13;
+            j_13 = (_e101 + 1u);
         }
-        loop_init_53 = false;
-        uint _e32 = j_14;
+        loop_init_52 = false;
+        uint _e32 = j_13;
         if ((_e32 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e39 = j_14;
-            float2 lobe_6 = ((_e39 == 1u) ? a_29.lobes.zw : a_29.lobes.xy);
-            float c_26 = dot(cap_4.a, (lobe_6.x * a_29.d));
+            uint _e39 = j_13;
+            float2 lobe_6 = ((_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy);
+            float c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
                 local_194 = (lobe_6.y > 0.0);
@@ -9566,7 +9545,7 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
             }
             bool _e64 = local_195;
             if (_e64) {
-                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                if (!(!((c_25 < -(cap_4.cos_a))))) {
                     local_197 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
                     local_197 = true;
@@ -9578,8 +9557,8 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
             }
             bool _e80 = local_196;
             if (_e80) {
-                if (!((c_26 > cap_4.cos_a))) {
-                    const float _e88 = airlight_acos(c_26);
+                if (!((c_25 > cap_4.cos_a))) {
+                    const float _e88 = airlight_acos(c_25);
                     local_199 = ((_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
                 } else {
                     local_199 = true;
@@ -9593,7 +9572,7 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
             if (_e97) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_26;
+                cos_p_2 = c_25;
             }
         }
     }
@@ -9602,48 +9581,48 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_29, float3 x_28)
         float _e106 = sign_3;
         float _e107 = cos_p_2;
         float _e108 = chosen;
-        const float _e109 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e106, _e107, _e108);
+        const float _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
         return _e109;
     }
-    const float _e110 = airlight_sphere_cap(s_49, a_29, cap_4);
+    const float _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
     return _e110;
 }
 
-float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_30, float3 x_29)
+float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, float3 x_29)
 {
     switch(s_50.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_50, a_30, x_29);
+            const float _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_50, a_30, x_29);
+            const float _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_50, a_30, x_29);
+            const float _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_51, AirlightArea a_31, float theta)
+float airlight_area_node(AirlightScene s_51, AirlightArea a_32, float theta)
 {
     const float2 _e3 = airlight_cos_sin(theta);
-    float along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
-    float t_15 = (a_31.x_h + along_1);
-    float fade = exp(min((-(s_51.sigma_t) * max(((a_31.x_h - s_51.t_min) + along_1), 0.0)), 0.0));
-    const float _e33 = airlight_emitter_radiance(s_51, a_31, (s_51.origin + (t_15 * a_31.d)));
-    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    float along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
+    float t_14 = (a_32.x_h + along_1);
+    float fade = exp(min((-(s_51.sigma_t) * max(((a_32.x_h - s_51.t_min) + along_1), 0.0)), 0.0));
+    const float _e33 = airlight_emitter_radiance(s_51, a_32, (s_51.origin + (t_14 * a_32.d)));
+    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 AirlightResult airlight_area_light(AirlightScene s_52)
 {
     AirlightAdaptive st_1 = (AirlightAdaptive)0;
     uint step_2 = 0u;
-    float k_10 = (float)0;
+    float k_9 = (float)0;
     float gauss_1 = (float)0;
-    uint j_15 = (uint)0;
+    uint j_14 = (uint)0;
     bool local_200 = (bool)0;
 
     const AirlightArea _e1 = airlight_area(s_52);
@@ -9656,16 +9635,16 @@ AirlightResult airlight_area_light(AirlightScene s_52)
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    uint2 loop_bound_55 = uint2(4294967295u, 4294967295u);
-    bool loop_init_54 = true;
+    uint2 loop_bound_54 = uint2(4294967295u, 4294967295u);
+    bool loop_init_53 = true;
     while(true) {
-        if (all(loop_bound_55 == uint2(0u, 0u))) { break; }
-        loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
-        if (!loop_init_54) {
+        if (all(loop_bound_54 == uint2(0u, 0u))) { break; }
+        loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
+        if (!loop_init_53) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_54 = false;
+        loop_init_53 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -9674,51 +9653,51 @@ AirlightResult airlight_area_light(AirlightScene s_52)
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_27 = (0.5 * (_e27 + _e29));
+            float c_26 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_10 = (0.5 * (_e34 - _e36));
-            k_10 = 0.0;
+            float hw_9 = (0.5 * (_e34 - _e36));
+            k_9 = 0.0;
             gauss_1 = 0.0;
-            j_15 = 0u;
-            uint2 loop_bound_56 = uint2(4294967295u, 4294967295u);
-            bool loop_init_55 = true;
+            j_14 = 0u;
+            uint2 loop_bound_55 = uint2(4294967295u, 4294967295u);
+            bool loop_init_54 = true;
             while(true) {
-                if (all(loop_bound_56 == uint2(0u, 0u))) { break; }
-                loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
-                if (!loop_init_55) {
-                    uint _e82 = j_15;
-                    j_15 = (_e82 + 1u);
+                if (all(loop_bound_55 == uint2(0u, 0u))) { break; }
+                loop_bound_55 -= uint2(loop_bound_55.y == 0u, 1u);
+                if (!loop_init_54) {
+                    uint _e82 = j_14;
+                    j_14 = (_e82 + 1u);
                 }
-                loop_init_55 = false;
-                uint _e46 = j_15;
+                loop_init_54 = false;
+                uint _e46 = j_14;
                 if ((_e46 < 15u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = j_15;
+                    uint _e49 = j_14;
                     float3 node_4 = _e8[min(uint(airlight_naga_div(_e49, 2u)), 7u)];
-                    uint _e59 = j_15;
+                    uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
-                        uint _e66 = j_15;
+                        uint _e66 = j_14;
                         local_200 = (_e66 < 14u);
                     } else {
                         local_200 = false;
                     }
                     bool _e70 = local_200;
-                    float x_40 = (_e70 ? (c_27 - (hw_10 * node_4.x)) : (c_27 + (hw_10 * node_4.x)));
-                    const float _e72 = airlight_area_node(s_52, _e1, x_40);
-                    float _e73 = k_10;
-                    k_10 = (_e73 + (node_4.y * _e72));
+                    float x_39 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
+                    const float _e72 = airlight_area_node(s_52, _e1, x_39);
+                    float _e73 = k_9;
+                    k_9 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_10;
+            float _e85 = k_9;
             float _e87 = gauss_1;
-            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            const AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -9791,10 +9770,10 @@ AirlightResult airlight_node_integral(AirlightNode n_5)
     bool local_204 = (bool)0;
     AirlightCanonical g_29 = (AirlightCanonical)0;
 
-    AirlightScene p_9 = n_5.scene;
-    const bool _e7 = airlight_vec_finite(p_9.light_position);
+    AirlightScene p_7 = n_5.scene;
+    const bool _e7 = airlight_vec_finite(p_7.light_position);
     if (_e7) {
-        const bool _e11 = airlight_vec_finite(p_9.dir);
+        const bool _e11 = airlight_vec_finite(p_7.dir);
         local_204 = _e11;
     } else {
         local_204 = false;
@@ -9803,12 +9782,12 @@ AirlightResult airlight_node_integral(AirlightNode n_5)
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
-            const AirlightCanonical _e18 = airlight_canonical(p_9);
-            const AirlightCanonical _e19 = airlight_refined(p_9, _e18);
+            const AirlightCanonical _e18 = airlight_canonical(p_7);
+            const AirlightCanonical _e19 = airlight_refined(p_7, _e18);
             g_29 = _e19;
         }
         AirlightCanonical _e20 = g_29;
-        const AirlightResult _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        const AirlightResult _e21 = airlight_in_scatter_canonical(p_7, _e20);
         r_6 = _e21;
     }
     AirlightResult _e22 = r_6;
@@ -9899,9 +9878,9 @@ AirlightResult airlight_in_scatter(AirlightScene s_56)
 {
     AirlightAdaptive st_2 = (AirlightAdaptive)0;
     uint step_3 = 0u;
-    float k_11 = (float)0;
+    float k_10 = (float)0;
     float gauss_2 = (float)0;
-    uint j_16 = (uint)0;
+    uint j_15 = (uint)0;
     bool local_209 = (bool)0;
     float f = (float)0;
     bool local_210 = (bool)0;
@@ -9928,16 +9907,16 @@ AirlightResult airlight_in_scatter(AirlightScene s_56)
     const AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    uint2 loop_bound_57 = uint2(4294967295u, 4294967295u);
-    bool loop_init_56 = true;
+    uint2 loop_bound_56 = uint2(4294967295u, 4294967295u);
+    bool loop_init_55 = true;
     while(true) {
-        if (all(loop_bound_57 == uint2(0u, 0u))) { break; }
-        loop_bound_57 -= uint2(loop_bound_57.y == 0u, 1u);
-        if (!loop_init_56) {
+        if (all(loop_bound_56 == uint2(0u, 0u))) { break; }
+        loop_bound_56 -= uint2(loop_bound_56.y == 0u, 1u);
+        if (!loop_init_55) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_56 = false;
+        loop_init_55 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -9946,40 +9925,40 @@ AirlightResult airlight_in_scatter(AirlightScene s_56)
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_28 = (0.5 * (_e42 + _e44));
+            float c_27 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_11 = (0.5 * (_e49 - _e51));
-            k_11 = 0.0;
+            float hw_10 = (0.5 * (_e49 - _e51));
+            k_10 = 0.0;
             gauss_2 = 0.0;
-            j_16 = 0u;
-            uint2 loop_bound_58 = uint2(4294967295u, 4294967295u);
-            bool loop_init_57 = true;
+            j_15 = 0u;
+            uint2 loop_bound_57 = uint2(4294967295u, 4294967295u);
+            bool loop_init_56 = true;
             while(true) {
-                if (all(loop_bound_58 == uint2(0u, 0u))) { break; }
-                loop_bound_58 -= uint2(loop_bound_58.y == 0u, 1u);
-                if (!loop_init_57) {
-                    uint _e121 = j_16;
-                    j_16 = (_e121 + 1u);
+                if (all(loop_bound_57 == uint2(0u, 0u))) { break; }
+                loop_bound_57 -= uint2(loop_bound_57.y == 0u, 1u);
+                if (!loop_init_56) {
+                    uint _e121 = j_15;
+                    j_15 = (_e121 + 1u);
                 }
-                loop_init_57 = false;
-                uint _e61 = j_16;
+                loop_init_56 = false;
+                uint _e61 = j_15;
                 if ((_e61 < 7u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e64 = j_16;
+                    uint _e64 = j_15;
                     float3 node_5 = _e25[min(uint(airlight_naga_div(_e64, 2u)), 3u)];
-                    uint _e74 = j_16;
+                    uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
-                        uint _e81 = j_16;
+                        uint _e81 = j_15;
                         local_209 = (_e81 < 6u);
                     } else {
                         local_209 = false;
                     }
                     bool _e85 = local_209;
-                    float w_11 = (_e85 ? (c_28 - (hw_11 * node_5.x)) : (c_28 + (hw_11 * node_5.x)));
+                    float w_11 = (_e85 ? (c_27 - (hw_10 * node_5.x)) : (c_27 + (hw_10 * node_5.x)));
                     const AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
@@ -10000,18 +9979,18 @@ AirlightResult airlight_in_scatter(AirlightScene s_56)
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e110 = k_11;
+                    float _e110 = k_10;
                     float _e112 = f;
-                    k_11 = (_e110 + (node_5.y * _e112));
+                    k_10 = (_e110 + (node_5.y * _e112));
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_11;
+            float _e124 = k_10;
             float _e126 = gauss_2;
-            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            const AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

@@ -675,8 +675,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_15 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_15);
+    let b_16 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_16);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -686,7 +686,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_15, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_16, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -753,12 +753,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_7 = f32(_e2);
-    let b_16 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
-    let a_32 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
-    let disc = (1f - ((4f * a_32) / (b_16 * b_16)));
-    t_2 = b_16;
+    let b_17 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
+    let a_33 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
+    let disc = (1f - ((4f * a_33) / (b_17 * b_17)));
+    t_2 = b_17;
     if (disc > 0f) {
-        t_2 = ((b_16 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_17 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -896,11 +896,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_33 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_33 * a_33));
+        let a_34 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_34 * a_34));
     }
-    let b_17 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_17 * b_17));
+    let b_18 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -1014,11 +1014,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_34 = abs(g_4);
-    if !((a_34 > 0f)) {
+    let a_35 = abs(g_4);
+    if !((a_35 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_34) * (1f - a_34)) / (a_34 + a_34));
+    return (((1f - a_35) * (1f - a_35)) / (a_35 + a_35));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1032,8 +1032,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_35 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_35) / a_35), (a_35 > 0f)), sigma_1);
+            let a_36 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_36) / a_36), (a_36 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1803,35 +1803,35 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
         return 1f;
     }
     let measured = sqrt((last_1 / before));
-    let q_9 = max(measured, select(0f, floor_, (floor_ > 0f)));
+    let q_10 = max(measured, select(0f, floor_, (floor_ > 0f)));
     let truncation = max(abs(m_1[7]), abs(m_1[6]));
-    if (q_9 < 1f) {
+    if (q_10 < 1f) {
         let _e45 = aliasing;
         let _e49 = aliasing;
-        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_9) + abs(m_1[0])), true);
+        aliasing = select((_e45 + abs(m_1[0])), ((_e49 * q_10) + abs(m_1[0])), true);
         let _e56 = aliasing;
         let _e60 = aliasing;
-        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_9) + abs(m_1[1])), true);
+        aliasing = select((_e56 + abs(m_1[1])), ((_e60 * q_10) + abs(m_1[1])), true);
         let _e67 = aliasing;
         let _e71 = aliasing;
-        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_9) + abs(m_1[2])), true);
+        aliasing = select((_e67 + abs(m_1[2])), ((_e71 * q_10) + abs(m_1[2])), true);
         let _e78 = aliasing;
         let _e82 = aliasing;
-        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_9) + abs(m_1[3])), true);
+        aliasing = select((_e78 + abs(m_1[3])), ((_e82 * q_10) + abs(m_1[3])), true);
         let _e89 = aliasing;
         let _e93 = aliasing;
-        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_9) + abs(m_1[4])), true);
+        aliasing = select((_e89 + abs(m_1[4])), ((_e93 * q_10) + abs(m_1[4])), true);
         let _e100 = aliasing;
         let _e104 = aliasing;
-        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_9) + abs(m_1[5])), true);
+        aliasing = select((_e100 + abs(m_1[5])), ((_e104 * q_10) + abs(m_1[5])), true);
         let _e111 = aliasing;
         let _e115 = aliasing;
-        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_9) + abs(m_1[6])), true);
+        aliasing = select((_e111 + abs(m_1[6])), ((_e115 * q_10) + abs(m_1[6])), true);
         let _e122 = aliasing;
         let _e126 = aliasing;
-        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_9) + abs(m_1[7])), false);
+        aliasing = select((_e122 + abs(m_1[7])), ((_e126 * q_10) + abs(m_1[7])), false);
         let _e133 = aliasing;
-        return min(((_e133 + (q_9 * truncation)) / m_1[0]), 1f);
+        return min(((_e133 + (q_10 * truncation)) / m_1[0]), 1f);
     }
     let _e142 = c_max;
     c_max = max(_e142, abs(c_2[0]));
@@ -1872,8 +1872,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_36 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_36 + sqrt(max(((a_36 * a_36) - 1f), 0f)));
+    let a_37 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_37 + sqrt(max(((a_37 * a_37) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -2893,9 +2893,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_37 = abs(p0_4);
+            let a_38 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_37) / a_37), (a_37 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_38) / a_38), (a_38 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -3042,23 +3042,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_38 = (a0_ / scale_4);
-    let b_18 = (b0_ / scale_4);
+    let a_39 = (a0_ / scale_4);
+    let b_19 = (b0_ / scale_4);
     let c_10 = (c0_ / scale_4);
-    let disc_1 = ((b_18 * b_18) - ((4f * a_38) * c_10));
+    let disc_1 = ((b_19 * b_19) - ((4f * a_39) * c_10));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_18 < 0f) {
+    if (b_19 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_10 = (-0.5f * (b_18 + (_e47 * sqrt(disc_1))));
-    if (q_10 != 0f) {
-        r1_ = (c_10 / q_10);
+    let q_11 = (-0.5f * (b_19 + (_e47 * sqrt(disc_1))));
+    if (q_11 != 0f) {
+        r1_ = (c_10 / q_11);
     }
-    if (a_38 != 0f) {
-        r2_2 = (q_10 / a_38);
+    if (a_39 != 0f) {
+        r2_2 = (q_11 / a_39);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3103,15 +3103,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_39 = (sigma_11 * g_15.d_el);
+    let a_40 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_39 * a_39) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_39) / d_3);
-    if (a_39 > 0f) {
-        y1_1 = (d_3 / (a_39 + root_1));
+    let root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_40) / d_3);
+    if (a_40 > 0f) {
+        y1_1 = (d_3 / (a_40 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -5025,10 +5025,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_40 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_40));
-    if (a_40 <= 4096f) {
-        let _e17 = airlight_log1p((a_40 + ((a_40 * a_40) / (1f + sqrt((1f + (a_40 * a_40)))))));
+    let a_41 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
+    if (a_41 <= 4096f) {
+        let _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1f + sqrt((1f + (a_41 * a_41)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5053,8 +5053,8 @@ fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_18: f32) -> f32 {
-    let a_41 = abs(x_18);
-    let _e8 = airlight_atan(sqrt(((1f - a_41) / (1f + a_41))));
+    let a_42 = abs(x_18);
+    let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
@@ -5064,12 +5064,12 @@ fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_42 = (cos_a * cos_g);
-    let b_19 = (sin_a * sin_g);
-    if (b_19 <= abs(a_42)) {
-        return select(0f, AIRLIGHT_PI, (a_42 > 0f));
+    let a_43 = (cos_a * cos_g);
+    let b_20 = (sin_a * sin_g);
+    if (b_20 <= abs(a_43)) {
+        return select(0f, AIRLIGHT_PI, (a_43 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_42) / b_19), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_43) / b_20), -1f, 1f));
     return _e18;
 }
 
@@ -5473,14 +5473,14 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     let _e20 = airlight_cos_sin((0.5f * (gamma - g_23.alpha_r)));
     let sin_gap = _e20.y;
     let _e34 = airlight_log1p(((-2f * sin_gap) * sin_gap));
-    let q_11 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
+    let q_12 = AirlightLobe((g_23.cos_a * cs.x), (g_23.sin_a * cs.y), ((2f * d_4) / peak), _e34, g_23.delta.y, g_23.delta.z, exponent_1);
     if (exponent_1 > 0f) {
         let _e46 = airlight_expm1_((AIRLIGHT_LN_LOBE_FLOOR / exponent_1));
         reach = -(_e46);
     }
     let _e48 = reach;
     let _e51 = reach;
-    let s2_1 = select(1f, (_e48 / q_11.k), (_e51 < q_11.k));
+    let s2_1 = select(1f, (_e48 / q_12.k), (_e51 < q_12.k));
     let _e60 = airlight_angle(sqrt((1f - s2_1)), sqrt(s2_1));
     let cut_2 = (2f * _e60);
     if (psi_n < AIRLIGHT_PI) {
@@ -5509,7 +5509,7 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
             let _e102 = sum_6;
             let _e103 = i_23;
             let _e105 = i_23;
-            let _e109 = airlight_lobe_piece(q_11, edges_2[_e103], edges_2[(_e105 + 1u)], smoothstep_2);
+            let _e109 = airlight_lobe_piece(q_12, edges_2[_e103], edges_2[(_e105 + 1u)], smoothstep_2);
             sum_6 = (_e102 + _e109);
         }
         continuing {
@@ -5800,15 +5800,15 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_42 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_9 = (x_21 - f32(i_42));
-        let a_43 = g_25.gamma[i_42];
-        let b_20 = g_25.gamma[(i_42 + 1u)];
-        let w_8 = (b_20 - a_43);
+        let i_44 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_9 = (x_21 - f32(i_44));
+        let a_44 = g_25.gamma[i_44];
+        let b_21 = g_25.gamma[(i_44 + 1u)];
+        let w_8 = (b_21 - a_44);
         let u_9 = (1f - t_9);
-        let smooth_a = (((g_25.smooth_edges >> i_42) & 1u) != 0u);
-        let smooth_b = (((g_25.smooth_edges >> (i_42 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_43 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        let smooth_a = (((g_25.smooth_edges >> i_44) & 1u) != 0u);
+        let smooth_b = (((g_25.smooth_edges >> (i_44 + 1u)) & 1u) != 0u);
+        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
         jacobian = (((w_8 * 6f) * t_9) * u_9);
         let _e58 = gamma_1;
         if smooth_b {
@@ -5817,7 +5817,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_163 = false;
         }
         let _e66 = local_163;
-        gamma_1 = select(_e58, (a_43 + ((w_8 * t_9) * t_9)), _e66);
+        gamma_1 = select(_e58, (a_44 + ((w_8 * t_9) * t_9)), _e66);
         let _e68 = jacobian;
         if smooth_b {
             local_164 = !(smooth_a);
@@ -5833,7 +5833,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_165 = false;
         }
         let _e85 = local_165;
-        gamma_1 = select(_e77, (b_20 - ((w_8 * u_9) * u_9)), _e85);
+        gamma_1 = select(_e77, (b_21 - ((w_8 * u_9) * u_9)), _e85);
         let _e87 = jacobian;
         if smooth_a {
             local_166 = !(smooth_b);
@@ -5849,7 +5849,7 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
             local_167 = false;
         }
         let _e102 = local_167;
-        gamma_1 = select(_e96, (a_43 + (w_8 * t_9)), _e102);
+        gamma_1 = select(_e96, (a_44 + (w_8 * t_9)), _e102);
         let _e104 = jacobian;
         if smooth_a {
             local_168 = smooth_b;
@@ -6129,8 +6129,8 @@ fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_44 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_44) / a_44), (a_44 > 0f)));
+            let a_45 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_45) / a_45), (a_45 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6180,6 +6180,11 @@ fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     return _e7;
 }
 
+fn airlight_edge_nearest(a_18: vec2<f32>, b_13: vec2<f32>, q_4: vec2<f32>) -> vec2<f32> {
+    let e_15 = (b_13 - a_18);
+    return (a_18 + (clamp(((((q_4.x - a_18.x) * e_15.x) + ((q_4.y - a_18.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
+}
+
 fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     var nearest: vec2<f32> = vec2(340282350000000000000000000000000000000f);
     var i_27: u32 = 0u;
@@ -6196,45 +6201,43 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
         }
         {
             let _e28 = i_27;
-            let a_45 = o.corners[_e28];
             let _e31 = i_27;
-            let e_15 = (o.corners[((_e31 + 1u) % 4u)] - a_45);
-            let p_4 = (a_45 + (clamp((-(((a_45.x * e_15.x) + (a_45.y * e_15.y))) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
-            let distance_ = sqrt(((p_4.x * p_4.x) + (p_4.y * p_4.y)));
-            let _e68 = nearest.x;
-            if (distance_ < _e68) {
-                let _e71 = nearest.x;
-                nearest = vec2<f32>(distance_, _e71);
+            let _e39 = airlight_edge_nearest(o.corners[_e28], o.corners[((_e31 + 1u) % 4u)], vec2(0f));
+            let distance_ = sqrt(((_e39.x * _e39.x) + (_e39.y * _e39.y)));
+            let _e49 = nearest.x;
+            if (distance_ < _e49) {
+                let _e52 = nearest.x;
+                nearest = vec2<f32>(distance_, _e52);
             } else {
-                let _e74 = nearest.y;
-                if (distance_ < _e74) {
+                let _e55 = nearest.y;
+                if (distance_ < _e55) {
                     nearest.y = distance_;
                 }
             }
         }
         continuing {
-            let _e78 = i_27;
-            i_27 = (_e78 + 1u);
+            let _e59 = i_27;
+            i_27 = (_e59 + 1u);
         }
     }
-    let _e80 = nearest;
-    return _e80;
+    let _e61 = nearest;
+    return _e61;
 }
 
-fn airlight_outline_at(s_35: AirlightScene, a_18: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
-    let rel = (x_22 - a_18.c);
-    let foot = vec2<f32>(dot(rel, a_18.a1_), dot(rel, a_18.a2_));
+fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
+    let rel = (x_22 - a_19.c);
+    let foot = vec2<f32>(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     let zero = vec2(0f);
     if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
-        return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_18.radius);
+        return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_19.radius);
     }
-    let u2_ = vec2<f32>(dot(a_18.eu, a_18.a1_), dot(a_18.eu, a_18.a2_));
-    let v2_ = vec2<f32>(dot(a_18.ev, a_18.a1_), dot(a_18.ev, a_18.a2_));
+    let u2_ = vec2<f32>(dot(a_19.eu, a_19.a1_), dot(a_19.eu, a_19.a2_));
+    let v2_ = vec2<f32>(dot(a_19.ev, a_19.a1_), dot(a_19.ev, a_19.a2_));
     return AirlightOutline(array<vec2<f32>, 4>(-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0f);
 }
 
 fn airlight_area(s_36: AirlightScene) -> AirlightArea {
-    var a_19: AirlightArea;
+    var a_20: AirlightArea;
     var local_172: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
@@ -6260,9 +6263,9 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
 
     let zero_1 = vec3(0f);
     let _e21 = airlight_phase_lobes(s_36);
-    a_19 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    a_20 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
     let _e28 = airlight_isotropic_phase(s_36);
-    a_19.isotropic = _e28;
+    a_20.isotropic = _e28;
     if !((s_36.intensity == 0f)) {
         local_172 = (s_36.sigma_s == 0f);
     } else {
@@ -6270,97 +6273,97 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
     }
     let _e39 = local_172;
     if _e39 {
-        a_19.outcome = 1u;
-        let _e42 = a_19;
+        a_20.outcome = 1u;
+        let _e42 = a_20;
         return _e42;
     }
     let o_8 = s_36.origin;
     let _e45 = airlight_normalize(s_36.dir);
-    a_19.d = _e45;
+    a_20.d = _e45;
     let infinite_6 = ((s_36.flags & 1u) != 0u);
     let t0_2 = s_36.t_min;
     centre = s_36.light_position;
     size = s_36.light_param_a;
     if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        let _e72 = a_19.c;
+        let _e72 = a_20.c;
         let oc = (o_8 - _e72);
-        let b_21 = dot(oc, _e45);
-        let _e77 = a_19.radius;
-        let _e79 = a_19.radius;
-        let k_12 = (dot(oc, oc) - (_e77 * _e79));
-        let _e84 = airlight_safe_length((oc - (b_21 * _e45)));
-        let _e86 = a_19.radius;
-        let _e89 = a_19.radius;
+        let b_22 = dot(oc, _e45);
+        let _e77 = a_20.radius;
+        let _e79 = a_20.radius;
+        let k_11 = (dot(oc, oc) - (_e77 * _e79));
+        let _e84 = airlight_safe_length((oc - (b_22 * _e45)));
+        let _e86 = a_20.radius;
+        let _e89 = a_20.radius;
         let disc_2 = ((_e86 - _e84) * (_e89 + _e84));
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_12 = (-(b_21) - select(root_2, -(root_2), ((bitcast<u32>(b_21) & 2147483648u) != 0u)));
-            cut0_ = q_12;
-            cut1_ = (k_12 / q_12);
+            let q_13 = (-(b_22) - select(root_2, -(root_2), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+            cut0_ = q_13;
+            cut1_ = (k_11 / q_13);
             cut_count = 2u;
         }
     } else {
         if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
             let _e111 = airlight_normalize(s_36.light_axis);
-            a_19.n = _e111;
-            let _e114 = a_19.n;
+            a_20.n = _e111;
+            let _e114 = a_20.n;
             let _e115 = airlight_basis_e1_(_e114);
-            a_19.a1_ = _e115;
+            a_20.a1_ = _e115;
         } else {
-            a_19.eu = s_36.light_axis;
-            a_19.ev = s_36.light_end;
-            let _e122 = a_19.eu;
-            let _e124 = a_19.ev;
+            a_20.eu = s_36.light_axis;
+            a_20.ev = s_36.light_end;
+            let _e122 = a_20.eu;
+            let _e124 = a_20.ev;
             let _e126 = airlight_normalize(cross(_e122, _e124));
-            a_19.n = _e126;
-            let _e129 = a_19.eu;
+            a_20.n = _e126;
+            let _e129 = a_20.eu;
             let _e130 = airlight_normalize(_e129);
-            a_19.a1_ = _e130;
-            let _e132 = a_19.eu;
-            let _e134 = a_19.ev;
+            a_20.a1_ = _e130;
+            let _e132 = a_20.eu;
+            let _e134 = a_20.ev;
             let diagonal = (_e132 + _e134);
-            let _e137 = a_19.c;
+            let _e137 = a_20.c;
             centre = (_e137 + (0.5f * diagonal));
             let _e141 = airlight_safe_length(diagonal);
-            let _e143 = a_19.eu;
-            let _e145 = a_19.ev;
+            let _e143 = a_20.eu;
+            let _e145 = a_20.ev;
             let _e147 = airlight_safe_length((_e143 - _e145));
             size = (0.5f * max(_e141, _e147));
         }
-        let _e153 = a_19.n;
-        let _e155 = a_19.a1_;
-        a_19.a2_ = cross(_e153, _e155);
-        let _e159 = a_19.a1_;
-        let _e162 = a_19.a2_;
-        let _e165 = a_19.n;
-        a_19.dirs = vec3<f32>(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
-        let _e169 = a_19.c;
-        let _e172 = a_19.n;
-        let _e175 = a_19.n;
+        let _e153 = a_20.n;
+        let _e155 = a_20.a1_;
+        a_20.a2_ = cross(_e153, _e155);
+        let _e159 = a_20.a1_;
+        let _e162 = a_20.a2_;
+        let _e165 = a_20.n;
+        a_20.dirs = vec3<f32>(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
+        let _e169 = a_20.c;
+        let _e172 = a_20.n;
+        let _e175 = a_20.n;
         cut0_ = (dot((_e169 - o_8), _e172) / dot(_e45, _e175));
         cut_count = 1u;
-        let _e179 = a_19;
+        let _e179 = a_20;
         let _e180 = cut0_;
         let _e183 = airlight_outline_at(s_36, _e179, (o_8 + (_e180 * _e45)));
         let _e184 = airlight_outline_distances(_e183);
         distances = _e184;
-        let _e186 = a_19.n;
+        let _e186 = a_20.n;
         front = select(1f, -1f, (dot(_e45, _e186) < 0f));
     }
     let _e193 = size;
     if !((_e193 > 0f)) {
-        a_19.outcome = 1u;
-        let _e199 = a_19;
+        a_20.outcome = 1u;
+        let _e199 = a_20;
         return _e199;
     }
     let _e200 = centre;
     let to_centre = (_e200 - o_8);
-    a_19.x_h = dot(to_centre, _e45);
-    let _e205 = a_19.x_h;
+    a_20.x_h = dot(to_centre, _e45);
+    let _e205 = a_20.x_h;
     let _e208 = airlight_safe_length((to_centre - (_e205 * _e45)));
     let _e211 = size;
     let _e212 = size;
-    a_19.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
+    a_20.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
     t_end_1 = s_36.t_max;
     end_infinite = infinite_6;
     if (s_36.sigma_t > 0f) {
@@ -6380,31 +6383,31 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
             end_infinite = false;
         }
     }
-    let _e242 = a_19;
+    let _e242 = a_20;
     let _e244 = airlight_area_theta(_e242, t0_2, false);
-    let _e245 = a_19;
+    let _e245 = a_20;
     let _e246 = t_end_1;
     let _e247 = end_infinite;
     let _e248 = airlight_area_theta(_e245, _e246, _e247);
-    let _e250 = a_19.x_h;
-    let _e252 = a_19.x_h;
+    let _e250 = a_20.x_h;
+    let _e252 = a_20.x_h;
     let _e253 = cut0_;
     let _e254 = cut_count;
-    let _e259 = a_19.x_h;
+    let _e259 = a_20.x_h;
     let _e260 = cut1_;
     let _e261 = cut_count;
-    let _e266 = a_19.x_h;
+    let _e266 = a_20.x_h;
     cuts_4 = array<f32, 4>(_e250, select(_e252, _e253, (_e254 > 0u)), select(_e259, _e260, (_e261 > 1u)), _e266);
-    let _e273 = a_19.lobes.y;
+    let _e273 = a_20.lobes.y;
     if (_e273 > 0f) {
         let _e276 = scale_1;
-        let _e279 = a_19.lobes.y;
+        let _e279 = a_20.lobes.y;
         scale_1 = min(_e276, _e279);
     }
-    let _e283 = a_19.lobes.w;
+    let _e283 = a_20.lobes.w;
     if (_e283 > 0f) {
         let _e286 = scale_1;
-        let _e289 = a_19.lobes.w;
+        let _e289 = a_20.lobes.w;
         scale_1 = min(_e286, _e289);
     }
     let _e291 = cut_count;
@@ -6449,7 +6452,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
                 let _e328 = distances[_e326];
                 let _e330 = scale_1;
                 let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e328) / _e330);
-                let _e333 = a_19.h_eff;
+                let _e333 = a_20.h_eff;
                 if (reach_2 < _e333) {
                     let _e335 = i_28;
                     let _e339 = cut0_;
@@ -6497,7 +6500,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
             let _e373 = local_179;
             if _e373 {
                 let _e374 = i_29;
-                let _e376 = a_19;
+                let _e376 = a_20;
                 let _e378 = airlight_area_theta(_e376, t_10, false);
                 cuts_4[_e374] = _e378;
             }
@@ -6509,9 +6512,9 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
     }
     let _e382 = cuts_4;
     let _e383 = airlight_edges_between(_e244, _e248, _e382);
-    a_19.edges = _e383.at;
-    a_19.panels = _e383.panels;
-    let _e388 = a_19;
+    a_20.edges = _e383.at;
+    a_20.panels = _e383.panels;
+    let _e388 = a_20;
     return _e388;
 }
 
@@ -6519,22 +6522,22 @@ fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_37: AirlightScene, a_20: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+fn airlight_flat_node(s_37: AirlightScene, a_21: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
     let dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    let p_5 = (above_1.off + (r_13 * e_3));
+    let p_4 = (above_1.off + (r_13 * e_3));
     let z_20 = above_1.z;
-    let dist = sqrt((((z_20 * z_20) + (p_5.x * p_5.x)) + (p_5.y * p_5.y)));
+    let dist = sqrt((((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_20 * inv_5);
-    let _e50 = airlight_area_phase(s_37, ((((p_5.x * a_20.dirs.x) + (p_5.y * a_20.dirs.y)) - (z_20 * a_20.dirs.z)) * inv_5));
+    let _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_20 * a_21.dirs.z)) * inv_5));
     let _e52 = airlight_emitted(s_37, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
 }
 
-fn airlight_flat_radial(s_38: AirlightScene, a_21: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_38: AirlightScene, a_22: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
@@ -6543,58 +6546,58 @@ fn airlight_flat_radial(s_38: AirlightScene, a_21: AirlightArea, above_2: Airlig
     let c_19 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_38, a_21, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
 }
 
-fn airlight_outline_boundary(o_1: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> {
+fn airlight_outline_boundary(o_1: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> {
     var best: f32 = AIRLIGHT_FLT_MAX;
     var nearest_1: vec2<f32>;
     var inside: bool = true;
@@ -6602,11 +6605,11 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> 
     var local_181: bool;
 
     if (o_1.radius > 0f) {
-        let qc = (q_4 - o_1.corners[0]);
+        let qc = (q_5 - o_1.corners[0]);
         let dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
         return vec3<f32>((o_1.corners[0] + ((qc * o_1.radius) / vec2(dq))), select(0f, 1f, (dq <= o_1.radius)));
     }
-    nearest_1 = q_4;
+    nearest_1 = q_5;
     loop {
         let _e36 = i_30;
         if (_e36 < 4u) {
@@ -6620,37 +6623,37 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_4: vec2<f32>) -> vec3<f32> 
             let e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_46);
             let _e50 = inside;
             if _e50 {
-                local_181 = ((((q_4.x - a_46.x) * e_16.y) - ((q_4.y - a_46.y) * e_16.x)) <= 0f);
+                local_181 = ((((q_5.x - a_46.x) * e_16.y) - ((q_5.y - a_46.y) * e_16.x)) <= 0f);
             } else {
                 local_181 = false;
             }
             let _e67 = local_181;
             inside = _e67;
-            let t_11 = clamp(((((q_4.x - a_46.x) * e_16.x) + ((q_4.y - a_46.y) * e_16.y)) / ((e_16.x * e_16.x) + (e_16.y * e_16.y))), 0f, 1f);
-            let p_6 = (a_46 + (t_11 * e_16));
-            let dd = (((p_6.x - q_4.x) * (p_6.x - q_4.x)) + ((p_6.y - q_4.y) * (p_6.y - q_4.y)));
-            let _e107 = best;
-            if (dd < _e107) {
+            let _e69 = i_30;
+            let _e75 = airlight_edge_nearest(a_46, o_1.corners[((_e69 + 1u) % 4u)], q_5);
+            let dd = (((_e75.x - q_5.x) * (_e75.x - q_5.x)) + ((_e75.y - q_5.y) * (_e75.y - q_5.y)));
+            let _e91 = best;
+            if (dd < _e91) {
                 best = dd;
-                nearest_1 = p_6;
+                nearest_1 = _e75;
             }
         }
         continuing {
-            let _e110 = i_30;
-            i_30 = (_e110 + 1u);
+            let _e94 = i_30;
+            i_30 = (_e94 + 1u);
         }
     }
-    let _e112 = nearest_1;
-    let _e113 = inside;
-    return vec3<f32>(_e112, select(0f, 1f, _e113));
+    let _e96 = nearest_1;
+    let _e97 = inside;
+    return vec3<f32>(_e96, select(0f, 1f, _e97));
 }
 
-fn airlight_outline_nearest(o_2: AirlightOutline, q_5: vec2<f32>) -> vec2<f32> {
-    let _e2 = airlight_outline_boundary(o_2, q_5);
-    return select(_e2.xy, q_5, (_e2.z > 0f));
+fn airlight_outline_nearest(o_2: AirlightOutline, q_6: vec2<f32>) -> vec2<f32> {
+    let _e2 = airlight_outline_boundary(o_2, q_6);
+    return select(_e2.xy, q_6, (_e2.z > 0f));
 }
 
-fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
+fn airlight_flat_lobe(a_23: AirlightArea, z_11: f32, o_3: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_6: u32 = 0u;
     var local_182: bool;
     var local_183: bool;
@@ -6665,10 +6668,10 @@ fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centr
         }
         {
             let _e20 = j_6;
-            let lobe_5 = select(a_22.lobes.xy, a_22.lobes.zw, (_e20 == 1u));
-            let p_7 = (lobe_5.x * a_22.dirs);
+            let lobe_5 = select(a_23.lobes.xy, a_23.lobes.zw, (_e20 == 1u));
+            let p_5 = (lobe_5.x * a_23.dirs);
             if (lobe_5.y > 0f) {
-                local_182 = (p_7.z < 0f);
+                local_182 = (p_5.z < 0f);
             } else {
                 local_182 = false;
             }
@@ -6680,12 +6683,12 @@ fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centr
             }
             let _e43 = local_183;
             if _e43 {
-                let l_4 = (z_11 / -(p_7.z));
-                let q_13 = (l_4 * p_7.xy);
-                let _e49 = airlight_outline_nearest(o_3, q_13);
+                let l_4 = (z_11 / -(p_5.z));
+                let q_14 = (l_4 * p_5.xy);
+                let _e49 = airlight_outline_nearest(o_3, q_14);
                 let to_near = vec3<f32>(_e49, -(z_11));
-                let cos_1 = min((dot(p_7, to_near) / sqrt(dot(to_near, to_near))), 1f);
-                let on_emitter = (length((_e49 - q_13)) <= (0.0000019073486f * ((length(q_13) + size_1) + z_11)));
+                let cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1f);
+                let on_emitter = (length((_e49 - q_14)) <= (0.0000019073486f * ((length(q_14) + size_1) + z_11)));
                 if !(on_emitter) {
                     let _e69 = airlight_acos(cos_1);
                     local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
@@ -6694,7 +6697,7 @@ fn airlight_flat_lobe(a_22: AirlightArea, z_11: f32, o_3: AirlightOutline, centr
                 }
                 let _e75 = local_184;
                 if _e75 {
-                    return AirlightFlatLobe(p_7, lobe_5.x, lobe_5.y, l_4, q_13, on_emitter);
+                    return AirlightFlatLobe(p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter);
                 }
             }
         }
@@ -6720,9 +6723,9 @@ fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
     return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
-fn airlight_clip(chord: vec2<f32>, a_23: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
-    let m_13 = vec2<f32>((b_13.y - a_23.y), (a_23.x - b_13.x));
-    let num = (((q_6.x - a_23.x) * m_13.x) + ((q_6.y - a_23.y) * m_13.y));
+fn airlight_clip(chord: vec2<f32>, a_24: vec2<f32>, b_14: vec2<f32>, q_7: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
+    let m_13 = vec2<f32>((b_14.y - a_24.y), (a_24.x - b_14.x));
+    let num = (((q_7.x - a_24.x) * m_13.x) + ((q_7.y - a_24.y) * m_13.y));
     let den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
     if (den > 0f) {
         return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
@@ -6736,23 +6739,23 @@ fn airlight_clip(chord: vec2<f32>, a_23: vec2<f32>, b_13: vec2<f32>, q_6: vec2<f
     return chord;
 }
 
-fn airlight_outline_chord(o_4: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
+fn airlight_outline_chord(o_4: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
     var chord_1: vec2<f32> = vec2<f32>(0f, 340282350000000000000000000000000000000f);
 
     if (o_4.radius > 0f) {
-        let qc_1 = (q_7 - o_4.corners[0]);
+        let qc_1 = (q_8 - o_4.corners[0]);
         let a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        let b_22 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        let disc_3 = ((b_22 * b_22) - (a_47 * k_13));
+        let k_12 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        let disc_3 = ((b_23 * b_23) - (a_47 * k_12));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_12 = (-(b_22) - select(root_3, -(root_3), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
-        let r1_2 = (t_12 / a_47);
-        let r2_4 = (k_13 / t_12);
+        let t_11 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
+        let r1_2 = (t_11 / a_47);
+        let r2_4 = (k_12 / t_11);
         let hi_8 = max(r1_2, r2_4);
         if !((hi_8 > 0f)) {
             return vec2(0f);
@@ -6760,16 +6763,16 @@ fn airlight_outline_chord(o_4: AirlightOutline, q_7: vec2<f32>, e_6: vec2<f32>) 
         return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_8);
     }
     let _e70 = chord_1;
-    let _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_7, e_6);
+    let _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_8, e_6);
     chord_1 = _e75;
     let _e76 = chord_1;
-    let _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_7, e_6);
+    let _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_8, e_6);
     chord_1 = _e81;
     let _e82 = chord_1;
-    let _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_7, e_6);
+    let _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_8, e_6);
     chord_1 = _e87;
     let _e88 = chord_1;
-    let _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_7, e_6);
+    let _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_8, e_6);
     return _e93;
 }
 
@@ -6800,64 +6803,64 @@ fn airlight_flat_lobe_along(s_40: AirlightScene, z_13: f32, o_5: AirlightOutline
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    let k_14 = (w_9.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
+    let k_13 = (w_9.z / -(lobe_2.p.z));
+    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_13 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
-    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
-    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
+    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_13 * _e23.x)));
+    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_13 * _e23.y)));
     let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     let graded_8 = _e42.x;
     let c_21 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -6879,15 +6882,15 @@ fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
 
-fn airlight_edge_rule(a_24: vec2<f32>, b_14: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
-    let e_17 = (b_14 - a_24);
+fn airlight_edge_rule(a_25: vec2<f32>, b_15: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
+    let e_17 = (b_15 - a_25);
     let el = sqrt(((e_17.x * e_17.x) + (e_17.y * e_17.y)));
-    let t_13 = (e_17 / vec2(el));
-    let h_9 = (((a_24.x * b_14.y) - (a_24.y * b_14.x)) / el);
+    let t_12 = (e_17 / vec2(el));
+    let h_9 = (((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el);
     let reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    let _e27 = airlight_atan2_(dot(a_24, t_13), reach_3);
-    let _e29 = airlight_atan2_(dot(b_14, t_13), reach_3);
-    return AirlightEdgeRule(h_9, t_13, reach_3, _e27, _e29);
+    let _e27 = airlight_atan2_(dot(a_25, t_12), reach_3);
+    let _e29 = airlight_atan2_(dot(b_15, t_12), reach_3);
+    return AirlightEdgeRule(h_9, t_12, reach_3, _e27, _e29);
 }
 
 fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
@@ -6899,8 +6902,8 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
 
 fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
     let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
-    let b_23 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
-    return vec4<f32>(b_23.x, min(b_23.y, b_23.z), max(b_23.y, b_23.z), b_23.w);
+    let b_24 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
+    return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
 
 fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
@@ -6984,98 +6987,87 @@ fn airlight_mercator(n_3: vec2<f32>, cs_3: vec2<f32>) -> f32 {
     return clamp(_e21, -(_e3), _e3);
 }
 
+fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
+    let _e5 = airlight_mercator_cut((i_33 / 12u));
+    let lo_8 = max(ua, _e5);
+    let _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
+    let hi_9 = min(ub, _e11);
+    if !((lo_8 < hi_9)) {
+        return vec3(0f);
+    }
+    let _e19 = airlight_triangle_rule((i_33 % 12u));
+    let hw_5 = (0.5f * (hi_9 - lo_8));
+    let x_38 = ((0.5f * (lo_8 + hi_9)) + (hw_5 * _e19.x));
+    let e_18 = exp(-(abs(x_38)));
+    let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
+    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+}
+
 fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
     var sum_9: f32 = 0f;
-    var k_9: u32 = 0u;
-    var j_8: u32;
+    var i_34: u32 = 0u;
 
-    let t_14 = vec2<f32>(-(n_4.y), n_4.x);
+    let t_13 = vec2<f32>(-(n_4.y), n_4.x);
     let _e13 = airlight_mercator(n_4, first_1);
     let _e14 = airlight_mercator(n_4, last);
     loop {
-        let _e19 = k_9;
-        if (_e19 < 7u) {
+        let _e19 = i_34;
+        if (_e19 < 84u) {
         } else {
             break;
         }
         {
-            let _e22 = k_9;
-            let _e23 = airlight_mercator_cut(_e22);
-            let lo_8 = max(_e13, _e23);
-            let _e25 = k_9;
-            let _e28 = airlight_mercator_cut((_e25 + 1u));
-            let hi_9 = min(_e14, _e28);
-            if !((lo_8 < hi_9)) {
+            let _e22 = i_34;
+            let _e23 = airlight_mercator_node(_e13, _e14, _e22);
+            if (_e23.z == 0f) {
                 continue;
             }
-            let c_22 = ((lo_8 + hi_9) * 0.5f);
-            let hw_5 = ((hi_9 - lo_8) * 0.5f);
-            j_8 = 0u;
-            loop {
-                let _e40 = j_8;
-                if (_e40 < 12u) {
-                } else {
-                    break;
-                }
-                {
-                    let _e43 = j_8;
-                    let _e44 = airlight_triangle_rule(_e43);
-                    let x_38 = (c_22 + (hw_5 * _e44.x));
-                    let e_18 = exp(-(abs(x_38)));
-                    let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
-                    let th = ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18)));
-                    let _e66 = sum_9;
-                    let _e73 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * sech) + (t_14 * th)));
-                    sum_9 = (_e66 + (((_e44.y * hw_5) * sech) * _e73));
-                }
-                continuing {
-                    let _e77 = j_8;
-                    j_8 = (_e77 + 1u);
-                }
-            }
+            let _e27 = sum_9;
+            let _e34 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
+            sum_9 = (_e27 + (_e23.z * _e34));
         }
         continuing {
-            let _e80 = k_9;
-            k_9 = (_e80 + 1u);
+            let _e38 = i_34;
+            i_34 = (_e38 + 1u);
         }
     }
-    let _e82 = sum_9;
-    return _e82;
+    let _e40 = sum_9;
+    return _e40;
 }
 
 fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
     var sum_10: f32 = 0f;
     var m_4: vec2<f32> = vec2<f32>(1f, 0f);
     var t_4: vec2<f32>;
-    var j_9: u32 = 0u;
-    var i_33: u32 = 0u;
-    var i_34: u32 = 0u;
-    var area: vec4<f32> = vec4(0f);
+    var j_8: u32 = 0u;
     var i_35: u32 = 0u;
     var i_36: u32 = 0u;
+    var area: vec4<f32> = vec4(0f);
+    var i_37: u32 = 0u;
+    var i_38: u32 = 0u;
     var ya: vec2<f32>;
     var yb: vec2<f32>;
+    var j_9: u32;
+    var i_39: u32 = 0u;
     var j_10: u32;
-    var i_37: u32 = 0u;
-    var j_11: u32;
     var merc_first: vec2<f32>;
     var merc_last: vec2<f32>;
     var local_187: bool;
     var rule_4: AirlightEdgeRule;
-    var j_12: u32;
+    var j_11: u32;
 
     let _e5 = airlight_basis_e1_(lobe_4.p);
     let v_10 = cross(lobe_4.p, _e5);
-    let q_14 = lobe_4.q;
+    let q_15 = lobe_4.q;
     if (o_7.radius > 0f) {
         if lobe_4.on_emitter {
-            let dq_2 = (q_14 - o_7.corners[0]);
+            let dq_2 = (q_15 - o_7.corners[0]);
             let d_6 = sqrt(dot(dq_2, dq_2));
             if (d_6 > 0f) {
                 m_4 = (dq_2 / vec2(d_6));
             }
             let _e31 = m_4;
-            let rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_14);
+            let rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_15);
             let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_10.xy));
             let _e41 = m_4.y;
             let _e46 = m_4.x;
@@ -7101,7 +7093,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
             let _e108 = t_4;
             let rule_7 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
             loop {
-                let _e118 = j_9;
+                let _e118 = j_8;
                 if (_e118 < 16u) {
                 } else {
                     break;
@@ -7110,7 +7102,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     if !((h_11 > 0f)) {
                         break;
                     }
-                    let _e124 = j_9;
+                    let _e124 = j_8;
                     let _e125 = airlight_radial_rule(_e124);
                     let _e129 = airlight_edge_at(rule_7, (1.5707964f * _e125.x));
                     let _e130 = sum_10;
@@ -7118,21 +7110,21 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     sum_10 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
-                    let _e143 = j_9;
-                    j_9 = (_e143 + 1u);
+                    let _e143 = j_8;
+                    j_8 = (_e143 + 1u);
                 }
             }
             let _e146 = t_4.y;
             let _e148 = t_4.x;
             let n_9 = vec2<f32>(_e146, -(_e148));
             loop {
-                let _e153 = i_33;
+                let _e153 = i_35;
                 if (_e153 < 32u) {
                 } else {
                     break;
                 }
                 {
-                    let _e157 = i_33;
+                    let _e157 = i_35;
                     let _e158 = airlight_azimuths(false, _e157);
                     let _e159 = sum_10;
                     let _e163 = t_4;
@@ -7140,14 +7132,14 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     sum_10 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
-                    let _e172 = i_33;
-                    i_33 = (_e172 + 1u);
+                    let _e172 = i_35;
+                    i_35 = (_e172 + 1u);
                 }
             }
             let _e174 = sum_10;
             return _e174;
         }
-        let d_7 = (o_7.corners[0] - q_14);
+        let d_7 = (o_7.corners[0] - q_15);
         let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
         let sb_1 = (o_7.radius / dq_3);
         let cb = (sqrt(((dq_3 - o_7.radius) * (dq_3 + o_7.radius))) / dq_3);
@@ -7159,13 +7151,13 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
         let centre_2 = (_e195 + ((_e209 + _e223) * 0.5f));
         let half_19 = (abs((_e209 - _e223)) * 0.5f);
         loop {
-            let _e234 = i_34;
+            let _e234 = i_36;
             if (_e234 < 32u) {
             } else {
                 break;
             }
             {
-                let _e238 = i_34;
+                let _e238 = i_36;
                 let _e239 = airlight_azimuths(false, _e238);
                 let _e240 = sum_10;
                 let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
@@ -7173,32 +7165,32 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                 sum_10 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
-                let _e253 = i_34;
-                i_34 = (_e253 + 1u);
+                let _e253 = i_36;
+                i_36 = (_e253 + 1u);
             }
         }
         let _e255 = sum_10;
         return _e255;
     }
-    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_7.corners[0] - q_14), _e5.xy), dot((o_7.corners[0] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[1] - q_14), _e5.xy), dot((o_7.corners[1] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[2] - q_14), _e5.xy), dot((o_7.corners[2] - q_14), v_10.xy)), vec2<f32>(dot((o_7.corners[3] - q_14), _e5.xy), dot((o_7.corners[3] - q_14), v_10.xy)));
+    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_7.corners[0] - q_15), _e5.xy), dot((o_7.corners[0] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[1] - q_15), _e5.xy), dot((o_7.corners[1] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[2] - q_15), _e5.xy), dot((o_7.corners[2] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[3] - q_15), _e5.xy), dot((o_7.corners[3] - q_15), v_10.xy)));
     if lobe_4.on_emitter {
         loop {
-            let _e307 = i_35;
+            let _e307 = i_37;
             if (_e307 < 4u) {
             } else {
                 break;
             }
             {
-                let _e310 = i_35;
-                let b_24 = y_14[((_e310 + 1u) % 4u)];
-                let _e316 = i_35;
-                let _e318 = i_35;
-                let _e323 = i_35;
-                area[_e316] = ((y_14[_e318].x * b_24.y) - (y_14[_e323].y * b_24.x));
+                let _e310 = i_37;
+                let b_25 = y_14[((_e310 + 1u) % 4u)];
+                let _e316 = i_37;
+                let _e318 = i_37;
+                let _e323 = i_37;
+                area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
             }
             continuing {
-                let _e330 = i_35;
-                i_35 = (_e330 + 1u);
+                let _e330 = i_37;
+                i_37 = (_e330 + 1u);
             }
         }
         let _e333 = area.x;
@@ -7207,103 +7199,103 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
         let _e341 = area.w;
         let turn = (((_e333 + _e335) + _e338) + _e341);
         loop {
-            let _e345 = i_36;
+            let _e345 = i_38;
             if (_e345 < 4u) {
             } else {
                 break;
             }
             {
-                let _e348 = i_36;
+                let _e348 = i_38;
                 let _e350 = area[_e348];
                 if !(((_e350 * turn) > 0f)) {
                     continue;
                 }
-                let _e355 = i_36;
+                let _e355 = i_38;
                 ya = y_14[_e355];
-                let _e358 = i_36;
+                let _e358 = i_38;
                 yb = y_14[((_e358 + 1u) % 4u)];
                 if (turn < 0f) {
-                    let _e367 = i_36;
+                    let _e367 = i_38;
                     ya = y_14[((_e367 + 1u) % 4u)];
-                    let _e373 = i_36;
+                    let _e373 = i_38;
                     yb = y_14[_e373];
                 }
                 let _e375 = ya;
                 let _e376 = yb;
                 let _e380 = airlight_edge_rule(_e375, _e376, (lobe_4.l * lobe_4.scale));
-                j_10 = 0u;
+                j_9 = 0u;
                 loop {
-                    let _e383 = j_10;
+                    let _e383 = j_9;
                     if (_e383 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e386 = j_10;
+                        let _e386 = j_9;
                         let _e387 = airlight_edge_node(_e380, _e386);
                         let _e388 = sum_10;
                         let _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
                         sum_10 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
-                        let _e395 = j_10;
-                        j_10 = (_e395 + 1u);
+                        let _e395 = j_9;
+                        j_9 = (_e395 + 1u);
                     }
                 }
             }
             continuing {
-                let _e398 = i_36;
-                i_36 = (_e398 + 1u);
+                let _e398 = i_38;
+                i_38 = (_e398 + 1u);
             }
         }
         let _e400 = sum_10;
         return _e400;
     }
-    let _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5f * (o_7.corners[0] + o_7.corners[2])) - q_14));
-    let _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_14));
+    let _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5f * (o_7.corners[0] + o_7.corners[2])) - q_15));
+    let _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_15));
     let _e415 = airlight_wrap_turn((_e413 - _e409));
-    let _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_14));
+    let _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_15));
     let _e421 = airlight_wrap_turn((_e419 - _e409));
-    let _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_14));
+    let _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_15));
     let _e427 = airlight_wrap_turn((_e425 - _e409));
-    let _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_14));
+    let _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_15));
     let _e433 = airlight_wrap_turn((_e431 - _e409));
     let _e435 = airlight_sort4_(vec4<f32>(_e415, _e421, _e427, _e433));
     loop {
-        let _e438 = i_37;
+        let _e438 = i_39;
         if (_e438 < 3u) {
         } else {
             break;
         }
         {
-            let _e441 = i_37;
+            let _e441 = i_39;
             let first_3 = (_e409 + _e435[_e441]);
-            let _e444 = i_37;
+            let _e444 = i_39;
             let last_2 = (_e409 + _e435[(_e444 + 1u)]);
             let _e452 = airlight_cos_sin_turns((0.5f * (first_3 + last_2)));
             let _e453 = airlight_chord_edges(y_14, _e452);
             let n_10 = _e453.entry;
             if all((n_10 == vec2(0f))) {
-                let c_23 = ((first_3 + last_2) * 0.5f);
+                let c_22 = ((first_3 + last_2) * 0.5f);
                 let hw_6 = ((last_2 - first_3) * 0.5f);
-                j_11 = 0u;
+                j_10 = 0u;
                 loop {
-                    let _e467 = j_11;
+                    let _e467 = j_10;
                     if (_e467 < 12u) {
                     } else {
                         break;
                     }
                     {
-                        let _e470 = j_11;
+                        let _e470 = j_10;
                         let _e471 = airlight_triangle_rule(_e470);
                         let _e472 = sum_10;
-                        let _e478 = airlight_cos_sin_turns((c_23 + (hw_6 * _e471.x)));
+                        let _e478 = airlight_cos_sin_turns((c_22 + (hw_6 * _e471.x)));
                         let _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
                         sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
                     continuing {
-                        let _e483 = j_11;
-                        j_11 = (_e483 + 1u);
+                        let _e483 = j_10;
+                        j_10 = (_e483 + 1u);
                     }
                 }
                 continue;
@@ -7343,24 +7335,24 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     rule_4.last = _e534;
                     merc_last = _e452;
                 }
-                j_12 = 0u;
+                j_11 = 0u;
                 loop {
-                    let _e537 = j_12;
+                    let _e537 = j_11;
                     if (_e537 < 12u) {
                     } else {
                         break;
                     }
                     {
                         let _e540 = rule_4;
-                        let _e541 = j_12;
+                        let _e541 = j_11;
                         let _e542 = airlight_edge_node(_e540, _e541);
                         let _e543 = sum_10;
                         let _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
                         sum_10 = (_e543 + (_e542.w * _e546));
                     }
                     continuing {
-                        let _e550 = j_12;
-                        j_12 = (_e550 + 1u);
+                        let _e550 = j_11;
+                        j_11 = (_e550 + 1u);
                     }
                 }
             }
@@ -7371,36 +7363,36 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
             sum_10 = (_e552 + _e555);
         }
         continuing {
-            let _e558 = i_37;
-            i_37 = (_e558 + 1u);
+            let _e558 = i_39;
+            i_39 = (_e558 + 1u);
         }
     }
     let _e560 = sum_10;
     return _e560;
 }
 
-fn airlight_disc(s_43: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
     var local_188: bool;
     var local_189: bool;
     var u_7: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_11: f32 = 0f;
-    var i_38: u32 = 0u;
+    var i_40: u32 = 0u;
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel_1 = (x_26 - a_25.c);
-    let z_21 = dot(rel_1, a_25.n);
+    let rel_1 = (x_26 - a_26.c);
+    let z_21 = dot(rel_1, a_26.n);
     if !((z_21 > 0f)) {
         return 0f;
     }
-    let fx = dot(rel_1, a_25.a1_);
-    let fy_1 = dot(rel_1, a_25.a2_);
+    let fx = dot(rel_1, a_26.a1_);
+    let fy_1 = dot(rel_1, a_26.a2_);
     let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_25.radius;
+    let radius_2 = a_26.radius;
     let zero_2 = vec2(0f);
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    let _e30 = airlight_flat_lobe(a_25, z_21, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let _e30 = airlight_flat_lobe(a_26, z_21, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
         let _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
         return _e34;
@@ -7426,15 +7418,15 @@ fn airlight_disc(s_43: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f3
         let _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    let k_15 = ((rf - radius_2) * (rf + radius_2));
+    let k_14 = ((rf - radius_2) * (rf + radius_2));
     loop {
-        let _e73 = i_38;
+        let _e73 = i_40;
         if (_e73 < 32u) {
         } else {
             break;
         }
         {
-            let _e76 = i_38;
+            let _e76 = i_40;
             let _e77 = airlight_azimuths(inside_2, _e76);
             let _e80 = u_7.x;
             let _e84 = u_7.y;
@@ -7444,52 +7436,52 @@ fn airlight_disc(s_43: AirlightScene, a_25: AirlightArea, x_26: vec3<f32>) -> f3
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
                 e_9 = _e77.xy;
-                let b_25 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_25 * b_25) - k_15));
-                r_max_1 = select((root_4 - b_25), (-(k_15) / (b_25 + root_4)), (b_25 > 0f));
+                let b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_26 * b_26) - k_14));
+                r_max_1 = select((root_4 - b_26), (-(k_14) / (b_26 + root_4)), (b_26 > 0f));
             }
             let _e118 = sum_11;
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_43, a_25, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_43, a_26, _e120, _e121, _e122);
             sum_11 = (_e118 + (_e77.z * _e123));
         }
         continuing {
-            let _e127 = i_38;
-            i_38 = (_e127 + 1u);
+            let _e127 = i_40;
+            i_40 = (_e127 + 1u);
         }
     }
     let _e129 = sum_11;
     return _e129;
 }
 
-fn airlight_parallelogram(s_44: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f32 {
-    var q_8: vec2<f32>;
+fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
+    var q_9: vec2<f32>;
     var local_190: bool;
     var sum_12: f32 = 0f;
-    var i_39: u32 = 0u;
-    var j_13: u32;
+    var i_41: u32 = 0u;
+    var j_12: u32;
 
-    let rel_2 = (x_27 - a_26.c);
-    let z_22 = dot(rel_2, a_26.n);
+    let rel_2 = (x_27 - a_27.c);
+    let z_22 = dot(rel_2, a_27.n);
     if !((z_22 > 0f)) {
         return 0f;
     }
-    let foot_1 = vec2<f32>(dot(rel_2, a_26.a1_), dot(rel_2, a_26.a2_));
-    let u2_1 = vec2<f32>(dot(a_26.eu, a_26.a1_), dot(a_26.eu, a_26.a2_));
-    let v2_1 = vec2<f32>(dot(a_26.ev, a_26.a1_), dot(a_26.ev, a_26.a2_));
+    let foot_1 = vec2<f32>(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
+    let u2_1 = vec2<f32>(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
+    let v2_1 = vec2<f32>(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
     let corners = array<vec2<f32>, 5>(vec2(0f), u2_1, (u2_1 + v2_1), v2_1, vec2(0f));
     let det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    let _e69 = airlight_flat_lobe(a_26, z_22, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
+    let _e69 = airlight_flat_lobe(a_27, z_22, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
         let _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
-    q_8 = (_e76.xy + foot_1);
+    q_9 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
         let _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
         local_190 = _e89;
@@ -7498,52 +7490,52 @@ fn airlight_parallelogram(s_44: AirlightScene, a_26: AirlightArea, x_27: vec3<f3
     }
     let _e91 = local_190;
     if _e91 {
-        q_8 = foot_1;
+        q_9 = foot_1;
     }
-    let _e92 = q_8;
+    let _e92 = q_9;
     let _e94 = airlight_above(z_22, (_e92 - foot_1));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     let _e99 = airlight_narrowed(s_44, _e94.rho0_);
     loop {
-        let _e104 = i_39;
+        let _e104 = i_41;
         if (_e104 < 4u) {
         } else {
             break;
         }
         {
-            let _e107 = i_39;
-            let _e109 = q_8;
+            let _e107 = i_41;
+            let _e109 = q_9;
             let ca = (corners[_e107] - _e109);
-            let _e111 = i_39;
-            let _e115 = q_8;
+            let _e111 = i_41;
+            let _e115 = q_9;
             let cb_1 = (corners[(_e111 + 1u)] - _e115);
             if !((((ca.x * cb_1.y) - (ca.y * cb_1.x)) > thin)) {
                 continue;
             }
             let _e126 = airlight_edge_rule(ca, cb_1, _e99);
-            j_13 = 0u;
+            j_12 = 0u;
             loop {
-                let _e129 = j_13;
+                let _e129 = j_12;
                 if (_e129 < 12u) {
                 } else {
                     break;
                 }
                 {
-                    let _e132 = j_13;
+                    let _e132 = j_12;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_12;
-                    let _e138 = airlight_flat_radial(s_44, a_26, _e94, _e133.xy, _e133.z);
+                    let _e138 = airlight_flat_radial(s_44, a_27, _e94, _e133.xy, _e133.z);
                     sum_12 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
-                    let _e142 = j_13;
-                    j_13 = (_e142 + 1u);
+                    let _e142 = j_12;
+                    j_12 = (_e142 + 1u);
                 }
             }
         }
         continuing {
-            let _e145 = i_39;
-            i_39 = (_e145 + 1u);
+            let _e145 = i_41;
+            i_41 = (_e145 + 1u);
         }
     }
     let _e147 = sum_12;
@@ -7562,54 +7554,54 @@ fn airlight_cap_row(s_45: AirlightScene, cap: AirlightCap, graded_4: f32, node_2
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_46: AirlightScene, a_27: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_46: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_13: f32 = 0f;
-    var i_40: u32 = 0u;
+    var i_42: u32 = 0u;
     var at_2: f32;
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_27.d);
-    let e1d = dot(_e4, a_27.d);
-    let e2d = dot(e2_2, a_27.d);
+    let ad = dot(cap_1.a, a_28.d);
+    let e1d = dot(_e4, a_28.d);
+    let e2d = dot(e2_2, a_28.d);
     let _e15 = airlight_graded_range(s_46, 1.5707964f);
     let graded_9 = _e15.y;
-    let c_24 = (0.5f * _e15.x);
+    let c_23 = (0.5f * _e15.x);
     let hw_7 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_24 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
-    if a_27.isotropic {
+    if a_28.isotropic {
         let _e174 = airlight_area_phase(s_46, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_13;
@@ -7664,13 +7656,13 @@ fn airlight_sphere_cap(s_46: AirlightScene, a_27: AirlightArea, cap_1: AirlightC
         return _e272;
     }
     loop {
-        let _e275 = i_40;
+        let _e275 = i_42;
         if (_e275 < 32u) {
         } else {
             break;
         }
         {
-            let _e279 = i_40;
+            let _e279 = i_42;
             let _e280 = airlight_azimuths(true, _e279);
             let across_1 = ((_e280.x * e1d) + (_e280.y * e2d));
             at_2 = 0f;
@@ -7775,8 +7767,8 @@ fn airlight_sphere_cap(s_46: AirlightScene, a_27: AirlightArea, cap_1: AirlightC
             sum_13 = (_e544 + (_e280.z * _e546));
         }
         continuing {
-            let _e550 = i_40;
-            i_40 = (_e550 + 1u);
+            let _e550 = i_42;
+            i_42 = (_e550 + 1u);
         }
     }
     let _e552 = sum_13;
@@ -7793,12 +7785,12 @@ fn airlight_sphere_lobe_node(s_47: AirlightScene, cap_2: AirlightCap, sign_1: f3
     return ((((_e37 * exp(min((-(s_47.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var count_3: u32;
     var sum_14: f32 = 0f;
-    var i_41: u32 = 0u;
+    var i_43: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
     var local_191: bool;
@@ -7809,9 +7801,9 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: Ai
     var to_1: f32;
     var around: f32;
 
-    let p_8 = (sign_2 * a_28.d);
-    let _e8 = airlight_basis_e1_(p_8);
-    let v_11 = cross(p_8, _e8);
+    let p_6 = (sign_2 * a_29.d);
+    let _e8 = airlight_basis_e1_(p_6);
+    let v_11 = cross(p_6, _e8);
     let au = dot(cap_3.a, _e8);
     let av = dot(cap_3.a, v_11);
     let inside_3 = (cos_p_1 > cap_3.cos_a);
@@ -7824,227 +7816,217 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_28: AirlightArea, cap_3: Ai
     let _e43 = airlight_atan2_(sin_p, cos_p_1);
     let _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
     let eps = (_e46 - _e43);
-    let width_7 = min(scale_3, sqrt(max(((_e46 - _e43) * (_e46 + _e43)), 0f)));
-    let _e56 = axis_2.y;
-    let _e58 = axis_2.x;
-    let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e56, -(_e58)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
-    let beyond = (cos_p_1 < -(cap_3.cos_a));
+    let width_7 = min(scale_3, sqrt(max((eps * (_e46 + _e43)), 0f)));
+    let _e55 = axis_2.y;
+    let _e57 = axis_2.x;
+    let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e55, -(_e57)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
+    let beside = (cos_p_1 < -(cap_3.cos_a));
     count_3 = select(16u, 24u, inside_3);
-    if beyond {
+    if beside {
         count_3 = 100u;
     }
     loop {
-        let _e80 = i_41;
-        let _e81 = count_3;
-        if (_e80 < _e81) {
+        let _e79 = i_43;
+        let _e80 = count_3;
+        if (_e79 < _e80) {
         } else {
             break;
         }
         {
             big_b_1 = 0f;
             wpsi = 0f;
-            if beyond {
-                let _e89 = i_41;
-                local_191 = (_e89 < 84u);
+            if beside {
+                let _e88 = i_43;
+                local_191 = (_e88 < 84u);
             } else {
                 local_191 = false;
             }
-            let _e93 = local_191;
-            if _e93 {
-                let _e94 = i_41;
-                let _e97 = airlight_mercator_cut((_e94 / 12u));
-                let lo_9 = max(0f, _e97);
-                let _e101 = airlight_mercator_cut(7u);
-                let _e102 = i_41;
-                let _e107 = airlight_mercator_cut(((_e102 / 12u) + 1u));
-                let hi_10 = min(_e101, _e107);
-                if !((lo_9 < hi_10)) {
+            let _e92 = local_191;
+            if _e92 {
+                let _e95 = airlight_mercator_cut(7u);
+                let _e96 = i_43;
+                let _e97 = airlight_mercator_node(0f, _e95, _e96);
+                if (_e97.z == 0f) {
                     continue;
                 }
-                let _e111 = i_41;
-                let _e114 = airlight_triangle_rule((_e111 % 12u));
-                let hw_8 = (0.5f * (hi_10 - lo_9));
-                let x_39 = ((0.5f * (lo_9 + hi_10)) + (hw_8 * _e114.x));
-                let e_19 = exp(-(abs(x_39)));
-                let sech_1 = ((2f * e_19) / (1f + (e_19 * e_19)));
-                big_b_1 = (sin_p * sech_1);
-                wpsi = (((2f * _e114.y) * hw_8) * sech_1);
+                big_b_1 = (sin_p * _e97.x);
+                wpsi = (2f * _e97.z);
             } else {
-                if beyond {
-                    let _e139 = i_41;
-                    let _e142 = airlight_azimuths_even((_e139 - 84u));
-                    big_b_1 = (-(sin_p) * _e142.x);
-                    wpsi = _e142.z;
+                if beside {
+                    let _e106 = i_43;
+                    let _e109 = airlight_azimuths_even((_e106 - 84u));
+                    big_b_1 = (-(sin_p) * _e109.x);
+                    wpsi = _e109.z;
                 } else {
                     if inside_3 {
-                        let _e149 = i_41;
-                        local_192 = (_e149 < 8u);
+                        let _e116 = i_43;
+                        local_192 = (_e116 < 8u);
                     } else {
                         local_192 = false;
                     }
-                    let _e153 = local_192;
-                    if _e153 {
+                    let _e120 = local_192;
+                    if _e120 {
                         if !((eps > 0f)) {
                             continue;
                         }
-                        let _e158 = i_41;
-                        let _e162 = airlight_radial_rule(((2u * _e158) + 1u));
-                        let _e166 = airlight_edge_at(rim_1, (1.5707964f * _e162.x));
-                        let _e168 = axis_2;
-                        big_b_1 = (sin_p * dot(_e166.xy, _e168));
-                        wpsi = ((((2f * _e162.y) * 0.5f) * AIRLIGHT_PI) * _e166.w);
+                        let _e125 = i_43;
+                        let _e129 = airlight_radial_rule(((2u * _e125) + 1u));
+                        let _e133 = airlight_edge_at(rim_1, (1.5707964f * _e129.x));
+                        let _e135 = axis_2;
+                        big_b_1 = (sin_p * dot(_e133.xy, _e135));
+                        wpsi = ((((2f * _e129.y) * 0.5f) * AIRLIGHT_PI) * _e133.w);
                     } else {
                         if inside_3 {
-                            let _e180 = i_41;
-                            let _e183 = airlight_azimuths_even((_e180 - 8u));
-                            big_b_1 = (sin_p * _e183.x);
-                            wpsi = _e183.z;
+                            let _e147 = i_43;
+                            let _e150 = airlight_azimuths_even((_e147 - 8u));
+                            big_b_1 = (sin_p * _e150.x);
+                            wpsi = _e150.z;
                         } else {
-                            let _e187 = i_41;
-                            let _e188 = airlight_azimuths_even(_e187);
-                            let _e189 = half_15;
-                            let _e192 = airlight_cos_sin((_e189 * _e188.y));
-                            big_b_1 = (sin_p * _e192.x);
-                            let _e196 = half_15;
-                            wpsi = ((_e188.z * _e196) * _e188.x);
+                            let _e154 = i_43;
+                            let _e155 = airlight_azimuths_even(_e154);
+                            let _e156 = half_15;
+                            let _e159 = airlight_cos_sin((_e156 * _e155.y));
+                            big_b_1 = (sin_p * _e159.x);
+                            let _e163 = half_15;
+                            wpsi = ((_e155.z * _e163) * _e155.x);
                         }
                     }
                 }
             }
-            let _e200 = big_b_1;
-            let _e201 = airlight_atan2_(_e200, cos_p_1);
-            mid = _e201;
-            if beyond {
-                let _e205 = mid;
-                local_193 = (_e205 < 0f);
+            let _e167 = big_b_1;
+            let _e168 = airlight_atan2_(_e167, cos_p_1);
+            mid = _e168;
+            if beside {
+                let _e172 = mid;
+                local_193 = (_e172 < 0f);
             } else {
                 local_193 = false;
             }
-            let _e209 = local_193;
-            if _e209 {
-                let _e210 = mid;
-                mid = (_e210 + 6.2831855f);
+            let _e176 = local_193;
+            if _e176 {
+                let _e177 = mid;
+                mid = (_e177 + 6.2831855f);
             }
-            let _e215 = big_b_1;
-            let _e216 = big_b_1;
-            let _e223 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e215 * _e216)))), 1f));
+            let _e182 = big_b_1;
+            let _e183 = big_b_1;
+            let _e190 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e182 * _e183)))), 1f));
             start_5 = 0f;
             if !(inside_3) {
-                let _e227 = mid;
-                start_5 = max((_e227 - _e223), 0f);
+                let _e194 = mid;
+                start_5 = max((_e194 - _e190), 0f);
             }
-            let _e231 = mid;
-            to_1 = (_e231 + _e223);
-            if beyond {
-                let _e234 = to_1;
-                to_1 = min(_e234, AIRLIGHT_PI);
+            let _e198 = mid;
+            to_1 = (_e198 + _e190);
+            if beside {
+                let _e201 = to_1;
+                to_1 = min(_e201, AIRLIGHT_PI);
             }
-            let _e237 = start_5;
-            let _e238 = to_1;
-            let _e239 = airlight_graded_from(scale_3, _e237, _e238);
-            let graded_10 = _e239.x;
-            let c_25 = (0.5f * _e239.y);
-            let hw_9 = (0.5f * _e239.y);
+            let _e204 = start_5;
+            let _e205 = to_1;
+            let _e206 = airlight_graded_from(scale_3, _e204, _e205);
+            let graded_10 = _e206.x;
+            let c_24 = (0.5f * _e206.y);
+            let hw_8 = (0.5f * _e206.y);
             around = 0f;
+            let _e216 = around;
+            let _e219 = big_b_1;
+            let _e220 = start_5;
+            let _e224 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e219, _e220, graded_10, (c_24 - (0.09501251f * hw_8)));
+            around = (_e216 + ((0.1894506f * hw_8) * _e224));
+            let _e227 = around;
+            let _e230 = big_b_1;
+            let _e231 = start_5;
+            let _e235 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e230, _e231, graded_10, (c_24 + (0.09501251f * hw_8)));
+            around = (_e227 + ((0.1894506f * hw_8) * _e235));
+            let _e238 = around;
+            let _e241 = big_b_1;
+            let _e242 = start_5;
+            let _e246 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e241, _e242, graded_10, (c_24 - (0.28160354f * hw_8)));
+            around = (_e238 + ((0.18260342f * hw_8) * _e246));
             let _e249 = around;
             let _e252 = big_b_1;
             let _e253 = start_5;
-            let _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_25 - (0.09501251f * hw_9)));
-            around = (_e249 + ((0.1894506f * hw_9) * _e257));
+            let _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_24 + (0.28160354f * hw_8)));
+            around = (_e249 + ((0.18260342f * hw_8) * _e257));
             let _e260 = around;
             let _e263 = big_b_1;
             let _e264 = start_5;
-            let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_25 + (0.09501251f * hw_9)));
-            around = (_e260 + ((0.1894506f * hw_9) * _e268));
+            let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_24 - (0.45801678f * hw_8)));
+            around = (_e260 + ((0.16915652f * hw_8) * _e268));
             let _e271 = around;
             let _e274 = big_b_1;
             let _e275 = start_5;
-            let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_25 - (0.28160354f * hw_9)));
-            around = (_e271 + ((0.18260342f * hw_9) * _e279));
+            let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_24 + (0.45801678f * hw_8)));
+            around = (_e271 + ((0.16915652f * hw_8) * _e279));
             let _e282 = around;
             let _e285 = big_b_1;
             let _e286 = start_5;
-            let _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_25 + (0.28160354f * hw_9)));
-            around = (_e282 + ((0.18260342f * hw_9) * _e290));
+            let _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_24 - (0.61787623f * hw_8)));
+            around = (_e282 + ((0.14959599f * hw_8) * _e290));
             let _e293 = around;
             let _e296 = big_b_1;
             let _e297 = start_5;
-            let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_25 - (0.45801678f * hw_9)));
-            around = (_e293 + ((0.16915652f * hw_9) * _e301));
+            let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_24 + (0.61787623f * hw_8)));
+            around = (_e293 + ((0.14959599f * hw_8) * _e301));
             let _e304 = around;
             let _e307 = big_b_1;
             let _e308 = start_5;
-            let _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_25 + (0.45801678f * hw_9)));
-            around = (_e304 + ((0.16915652f * hw_9) * _e312));
+            let _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_24 - (0.7554044f * hw_8)));
+            around = (_e304 + ((0.12462897f * hw_8) * _e312));
             let _e315 = around;
             let _e318 = big_b_1;
             let _e319 = start_5;
-            let _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_25 - (0.61787623f * hw_9)));
-            around = (_e315 + ((0.14959599f * hw_9) * _e323));
+            let _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_24 + (0.7554044f * hw_8)));
+            around = (_e315 + ((0.12462897f * hw_8) * _e323));
             let _e326 = around;
             let _e329 = big_b_1;
             let _e330 = start_5;
-            let _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_25 + (0.61787623f * hw_9)));
-            around = (_e326 + ((0.14959599f * hw_9) * _e334));
+            let _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_24 - (0.8656312f * hw_8)));
+            around = (_e326 + ((0.09515851f * hw_8) * _e334));
             let _e337 = around;
             let _e340 = big_b_1;
             let _e341 = start_5;
-            let _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_25 - (0.7554044f * hw_9)));
-            around = (_e337 + ((0.12462897f * hw_9) * _e345));
+            let _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_24 + (0.8656312f * hw_8)));
+            around = (_e337 + ((0.09515851f * hw_8) * _e345));
             let _e348 = around;
             let _e351 = big_b_1;
             let _e352 = start_5;
-            let _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_25 + (0.7554044f * hw_9)));
-            around = (_e348 + ((0.12462897f * hw_9) * _e356));
+            let _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_24 - (0.944575f * hw_8)));
+            around = (_e348 + ((0.062253524f * hw_8) * _e356));
             let _e359 = around;
             let _e362 = big_b_1;
             let _e363 = start_5;
-            let _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_25 - (0.8656312f * hw_9)));
-            around = (_e359 + ((0.09515851f * hw_9) * _e367));
+            let _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_24 + (0.944575f * hw_8)));
+            around = (_e359 + ((0.062253524f * hw_8) * _e367));
             let _e370 = around;
             let _e373 = big_b_1;
             let _e374 = start_5;
-            let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_25 + (0.8656312f * hw_9)));
-            around = (_e370 + ((0.09515851f * hw_9) * _e378));
+            let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_24 - (0.9894009f * hw_8)));
+            around = (_e370 + ((0.02715246f * hw_8) * _e378));
             let _e381 = around;
             let _e384 = big_b_1;
             let _e385 = start_5;
-            let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_25 - (0.944575f * hw_9)));
-            around = (_e381 + ((0.062253524f * hw_9) * _e389));
-            let _e392 = around;
-            let _e395 = big_b_1;
-            let _e396 = start_5;
-            let _e400 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, _e396, graded_10, (c_25 + (0.944575f * hw_9)));
-            around = (_e392 + ((0.062253524f * hw_9) * _e400));
-            let _e403 = around;
-            let _e406 = big_b_1;
-            let _e407 = start_5;
-            let _e411 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, _e407, graded_10, (c_25 - (0.9894009f * hw_9)));
-            around = (_e403 + ((0.02715246f * hw_9) * _e411));
-            let _e414 = around;
-            let _e417 = big_b_1;
-            let _e418 = start_5;
-            let _e422 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e417, _e418, graded_10, (c_25 + (0.9894009f * hw_9)));
-            around = (_e414 + ((0.02715246f * hw_9) * _e422));
-            let _e425 = sum_14;
-            let _e426 = wpsi;
-            let _e427 = around;
-            sum_14 = (_e425 + (_e426 * _e427));
+            let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_24 + (0.9894009f * hw_8)));
+            around = (_e381 + ((0.02715246f * hw_8) * _e389));
+            let _e392 = sum_14;
+            let _e393 = wpsi;
+            let _e394 = around;
+            sum_14 = (_e392 + (_e393 * _e394));
         }
         continuing {
-            let _e431 = i_41;
-            i_41 = (_e431 + 1u);
+            let _e398 = i_43;
+            i_43 = (_e398 + 1u);
         }
     }
-    let _e433 = sum_14;
-    return _e433;
+    let _e400 = sum_14;
+    return _e400;
 }
 
-fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
-    var j_14: u32 = 0u;
+    var j_13: u32 = 0u;
     var local_194: bool;
     var local_195: bool;
     var local_196: bool;
@@ -8052,24 +8034,24 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
     var local_198: bool;
     var local_199: bool;
 
-    let v_12 = (a_29.c - x_28);
+    let v_12 = (a_30.c - x_28);
     let _e5 = airlight_safe_length(v_12);
-    if !((_e5 > a_29.radius)) {
+    if !((_e5 > a_30.radius)) {
         return 0f;
     }
-    let sin_a_2 = (a_29.radius / _e5);
-    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_29.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
+    let sin_a_2 = (a_30.radius / _e5);
+    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
     let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
     loop {
-        let _e32 = j_14;
+        let _e32 = j_13;
         if (_e32 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_14;
-            let lobe_6 = select(a_29.lobes.xy, a_29.lobes.zw, (_e39 == 1u));
-            let c_26 = dot(cap_4.a, (lobe_6.x * a_29.d));
+            let _e39 = j_13;
+            let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
+            let c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
                 local_194 = (lobe_6.y > 0f);
@@ -8084,7 +8066,7 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
             }
             let _e64 = local_195;
             if _e64 {
-                if !(!((c_26 < -(cap_4.cos_a)))) {
+                if !(!((c_25 < -(cap_4.cos_a)))) {
                     local_197 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
                     local_197 = true;
@@ -8096,8 +8078,8 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
             }
             let _e80 = local_196;
             if _e80 {
-                if !((c_26 > cap_4.cos_a)) {
-                    let _e88 = airlight_acos(c_26);
+                if !((c_25 > cap_4.cos_a)) {
+                    let _e88 = airlight_acos(c_25);
                     local_199 = ((_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
                 } else {
                     local_199 = true;
@@ -8111,12 +8093,12 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
             if _e97 {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_26;
+                cos_p_2 = c_25;
             }
         }
         continuing {
-            let _e101 = j_14;
-            j_14 = (_e101 + 1u);
+            let _e101 = j_13;
+            j_13 = (_e101 + 1u);
         }
     }
     let _e103 = chosen;
@@ -8124,45 +8106,45 @@ fn airlight_sphere(s_49: AirlightScene, a_29: AirlightArea, x_28: vec3<f32>) -> 
         let _e106 = sign_3;
         let _e107 = cos_p_2;
         let _e108 = chosen;
-        let _e109 = airlight_sphere_about_lobe(s_49, a_29, cap_4, _e106, _e107, _e108);
+        let _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
         return _e109;
     }
-    let _e110 = airlight_sphere_cap(s_49, a_29, cap_4);
+    let _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
     return _e110;
 }
 
-fn airlight_emitter_radiance(s_50: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
+fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
     switch s_50.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_50, a_30, x_29);
+            let _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_50, a_30, x_29);
+            let _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_50, a_30, x_29);
+            let _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_51: AirlightScene, a_31: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_51: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along_1 = ((a_31.h_eff * _e3.y) / _e3.x);
-    let t_15 = (a_31.x_h + along_1);
-    let fade = exp(min((-(s_51.sigma_t) * max(((a_31.x_h - s_51.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_51, a_31, (s_51.origin + (t_15 * a_31.d)));
-    return (((a_31.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
+    let t_14 = (a_32.x_h + along_1);
+    let fade = exp(min((-(s_51.sigma_t) * max(((a_32.x_h - s_51.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_51, a_32, (s_51.origin + (t_14 * a_32.d)));
+    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
-    var k_10: f32;
+    var k_9: f32;
     var gauss_1: f32;
-    var j_15: u32;
+    var j_14: u32;
     var local_200: bool;
 
     let _e1 = airlight_area(s_52);
@@ -8183,46 +8165,46 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_27 = (0.5f * (_e27 + _e29));
+            let c_26 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_10 = (0.5f * (_e34 - _e36));
-            k_10 = 0f;
+            let hw_9 = (0.5f * (_e34 - _e36));
+            k_9 = 0f;
             gauss_1 = 0f;
-            j_15 = 0u;
+            j_14 = 0u;
             loop {
-                let _e46 = j_15;
+                let _e46 = j_14;
                 if (_e46 < 15u) {
                 } else {
                     break;
                 }
                 {
-                    let _e49 = j_15;
+                    let _e49 = j_14;
                     let node_4 = _e8[(_e49 / 2u)];
-                    let _e59 = j_15;
+                    let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
-                        let _e66 = j_15;
+                        let _e66 = j_14;
                         local_200 = (_e66 < 14u);
                     } else {
                         local_200 = false;
                     }
                     let _e70 = local_200;
-                    let x_40 = select((c_27 + (hw_10 * node_4.x)), (c_27 - (hw_10 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_52, _e1, x_40);
-                    let _e73 = k_10;
-                    k_10 = (_e73 + (node_4.y * _e72));
+                    let x_39 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_52, _e1, x_39);
+                    let _e73 = k_9;
+                    k_9 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
                 continuing {
-                    let _e82 = j_15;
-                    j_15 = (_e82 + 1u);
+                    let _e82 = j_14;
+                    j_14 = (_e82 + 1u);
                 }
             }
             let _e84 = st_1;
-            let _e85 = k_10;
+            let _e85 = k_9;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -8290,10 +8272,10 @@ fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var local_204: bool;
     var g_29: AirlightCanonical;
 
-    let p_9 = n_5.scene;
-    let _e7 = airlight_vec_finite(p_9.light_position);
+    let p_7 = n_5.scene;
+    let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
-        let _e11 = airlight_vec_finite(p_9.dir);
+        let _e11 = airlight_vec_finite(p_7.dir);
         local_204 = _e11;
     } else {
         local_204 = false;
@@ -8302,12 +8284,12 @@ fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
-            let _e18 = airlight_canonical(p_9);
-            let _e19 = airlight_refined(p_9, _e18);
+            let _e18 = airlight_canonical(p_7);
+            let _e19 = airlight_refined(p_7, _e18);
             g_29 = _e19;
         }
         let _e20 = g_29;
-        let _e21 = airlight_in_scatter_canonical(p_9, _e20);
+        let _e21 = airlight_in_scatter_canonical(p_7, _e20);
         r_6 = _e21;
     }
     let _e22 = r_6;
@@ -8386,9 +8368,9 @@ fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
 fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
-    var k_11: f32;
+    var k_10: f32;
     var gauss_2: f32;
-    var j_16: u32;
+    var j_15: u32;
     var local_209: bool;
     var f: f32;
     var local_210: bool;
@@ -8420,31 +8402,31 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_28 = (0.5f * (_e42 + _e44));
+            let c_27 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_11 = (0.5f * (_e49 - _e51));
-            k_11 = 0f;
+            let hw_10 = (0.5f * (_e49 - _e51));
+            k_10 = 0f;
             gauss_2 = 0f;
-            j_16 = 0u;
+            j_15 = 0u;
             loop {
-                let _e61 = j_16;
+                let _e61 = j_15;
                 if (_e61 < 7u) {
                 } else {
                     break;
                 }
                 {
-                    let _e64 = j_16;
+                    let _e64 = j_15;
                     let node_5 = _e25[(_e64 / 2u)];
-                    let _e74 = j_16;
+                    let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
-                        let _e81 = j_16;
+                        let _e81 = j_15;
                         local_209 = (_e81 < 6u);
                     } else {
                         local_209 = false;
                     }
                     let _e85 = local_209;
-                    let w_11 = select((c_28 + (hw_11 * node_5.x)), (c_28 - (hw_11 * node_5.x)), _e85);
+                    let w_11 = select((c_27 + (hw_10 * node_5.x)), (c_27 - (hw_10 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8463,22 +8445,22 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e110 = k_11;
+                    let _e110 = k_10;
                     let _e112 = f;
-                    k_11 = (_e110 + (node_5.y * _e112));
+                    k_10 = (_e110 + (node_5.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
                 continuing {
-                    let _e121 = j_16;
-                    j_16 = (_e121 + 1u);
+                    let _e121 = j_15;
+                    j_15 = (_e121 + 1u);
                 }
             }
             let _e123 = st_2;
-            let _e124 = k_11;
+            let _e124 = k_10;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

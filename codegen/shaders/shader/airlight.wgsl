@@ -3109,8 +3109,7 @@ fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
         let a = o.corners[i];
         let e = o.corners[(i + 1u) % 4u] - a;
         inside = inside && (q.x - a.x) * e.y - (q.y - a.y) * e.x <= 0.0;
-        let t = clamp(((q.x - a.x) * e.x + (q.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
-        let p = a + t * e;
+        let p = airlight_edge_nearest(a, o.corners[(i + 1u) % 4u], q);
         let dd = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
         if (dd < best) {
             best = dd;
@@ -3118,6 +3117,12 @@ fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
         }
     }
     return vec3<f32>(nearest, select(0.0, 1.0, inside));
+}
+
+/// The point of the edge a → b nearest q (outer.rs `edge_nearest`).
+fn airlight_edge_nearest(a: vec2<f32>, b: vec2<f32>, q: vec2<f32>) -> vec2<f32> {
+    let e = b - a;
+    return a + clamp(((q.x - a.x) * e.x + (q.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0) * e;
 }
 
 /// The distances of the foot (the origin) from the outline's nearest edge and from the next, a
@@ -3129,9 +3134,7 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     }
     var nearest = vec2<f32>(AIRLIGHT_FLT_MAX);
     for (var i = 0u; i < 4u; i++) {
-        let a = o.corners[i];
-        let e = o.corners[(i + 1u) % 4u] - a;
-        let p = a + clamp(-(a.x * e.x + a.y * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0) * e;
+        let p = airlight_edge_nearest(o.corners[i], o.corners[(i + 1u) % 4u], vec2<f32>(0.0));
         let distance = sqrt(p.x * p.x + p.y * p.y);
         if (distance < nearest.x) {
             nearest = vec2<f32>(distance, nearest.x);
@@ -3419,23 +3422,28 @@ fn airlight_mercator_wedge(s: AirlightScene, z: f32, o: AirlightOutline, lobe: A
     let ua = airlight_mercator(n, first);
     let ub = airlight_mercator(n, last);
     var sum = 0.0;
-    for (var k = 0u; k < 7u; k++) {
-        let lo = max(ua, airlight_mercator_cut(k));
-        let hi = min(ub, airlight_mercator_cut(k + 1u));
-        if (!(lo < hi)) { continue; }
-        let c = (lo + hi) * 0.5;
-        let hw = (hi - lo) * 0.5;
-        for (var j = 0u; j < 12u; j++) {
-            let node = airlight_triangle_rule(j);
-            let x = c + hw * node.x;
-            // sech x and tanh x from e^{−|x|}
-            let e = exp(-abs(x));
-            let sech = 2.0 * e / (1.0 + e * e);
-            let th = sign(x) * (1.0 - e * e) / (1.0 + e * e);
-            sum += node.y * hw * sech * airlight_flat_lobe_along(s, z, o, lobe, u, v, n * sech + t * th);
-        }
+    for (var i = 0u; i < 7u * 12u; i++) {
+        let node = airlight_mercator_node(ua, ub, i);
+        if (node.z == 0.0) { continue; }
+        sum += node.z * airlight_flat_lobe_along(s, z, o, lobe, u, v, n * node.x + t * node.y);
     }
     return sum;
+}
+
+/// Slot i = 12 k + j of the Mercator rule on [ua, ub] (outer.rs `mercator_rule`): node j of panel
+/// k between MERCATOR_CUTS as (sech u, tanh u, its weight in ψ: the node's weight in u times
+/// sech u), the weight 0 where the panel lies outside [ua, ub].
+fn airlight_mercator_node(ua: f32, ub: f32, i: u32) -> vec3<f32> {
+    let lo = max(ua, airlight_mercator_cut(i / 12u));
+    let hi = min(ub, airlight_mercator_cut(i / 12u + 1u));
+    if (!(lo < hi)) { return vec3<f32>(0.0); }
+    let node = airlight_triangle_rule(i % 12u);
+    let hw = 0.5 * (hi - lo);
+    let x = 0.5 * (lo + hi) + hw * node.x;
+    // sech x and tanh x from e^{−|x|}
+    let e = exp(-abs(x));
+    let sech = 2.0 * e / (1.0 + e * e);
+    return vec3<f32>(sech, sign(x) * (1.0 - e * e) / (1.0 + e * e), node.y * hw * sech);
 }
 
 /// outer.rs RADIAL (Gauss–Legendre, 16 points) on [−1, 1]: (x, weight).
@@ -3583,7 +3591,7 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
     let beta_p = airlight_atan2(sin_p, cos_p);
     let alpha = airlight_atan2_upper(cap.sin_a, cap.cos_a);
     let eps = alpha - beta_p;
-    let width = min(scale, sqrt(max((alpha - beta_p) * (alpha + beta_p), 0.0)));
+    let width = min(scale, sqrt(max(eps * (alpha + beta_p), 0.0)));
     // (both halves even about axis, as the wedge outside is in φ: the rules' nodes on one side,
     // weights doubled)
     let rim = AirlightEdgeRule(eps, vec2<f32>(axis.y, -axis.x), sqrt(eps * eps + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
@@ -3591,28 +3599,21 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
     // great circle from p meets the cap, up to θ = π; the half towards the rim's nearest point
     // (axis) in the Mercator angle of the rim's tangent there (MERCATOR_CUTS from 0, 12 nodes
     // each, 7 × 12 slots), the far half in ψ, 16
-    let beyond = cos_p < -cap.cos_a;
+    let beside = cos_p < -cap.cos_a;
     var count = select(16u, 24u, inside);
-    if (beyond) { count = 7u * 12u + 16u; }
+    if (beside) { count = 7u * 12u + 16u; }
     var sum = 0.0;
     for (var i = 0u; i < count; i++) {
         // a·e_ψ = sin β_p cos(ψ − ψ_a) and the weight in ψ (outside: ψ − ψ_a = Ψ sin φ,
         // dψ = Ψ cos φ dφ)
         var big_b = 0.0;
         var wpsi = 0.0;
-        if (beyond && i < 84u) {
-            let lo = max(0.0, airlight_mercator_cut(i / 12u));
-            let hi = min(airlight_mercator_cut(7u), airlight_mercator_cut(i / 12u + 1u));
-            if (!(lo < hi)) { continue; }
-            let node = airlight_triangle_rule(i % 12u);
-            let hw = 0.5 * (hi - lo);
-            let x = 0.5 * (lo + hi) + hw * node.x;
-            // sech x from e^{−|x|}
-            let e = exp(-abs(x));
-            let sech = 2.0 * e / (1.0 + e * e);
-            big_b = sin_p * sech;
-            wpsi = 2.0 * node.y * hw * sech;
-        } else if (beyond) {
+        if (beside && i < 84u) {
+            let node = airlight_mercator_node(0.0, airlight_mercator_cut(7u), i);
+            if (node.z == 0.0) { continue; }
+            big_b = sin_p * node.x;
+            wpsi = 2.0 * node.z;
+        } else if (beside) {
             let az = airlight_azimuths_even(i - 84u);
             big_b = -sin_p * az.x;
             wpsi = az.z;
@@ -3632,12 +3633,12 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
             wpsi = az.z * half * az.x;
         }
         var mid = airlight_atan2(big_b, cos_p);
-        if (beyond && mid < 0.0) { mid += 2.0 * AIRLIGHT_PI; }
+        if (beside && mid < 0.0) { mid += 2.0 * AIRLIGHT_PI; }
         let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
         var start = 0.0;
         if (!inside) { start = max(mid - spread, 0.0); }
         var to = mid + spread;
-        if (beyond) { to = min(to, AIRLIGHT_PI); }
+        if (beside) { to = min(to, AIRLIGHT_PI); }
         let range = airlight_graded_from(scale, start, to);
         let graded = range.x;
         let c = 0.5 * range.y;

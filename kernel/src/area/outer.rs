@@ -446,6 +446,13 @@ fn parallelogram_corners<T: Real>(rel: [T; 3], (eu, ev): ([T; 3], [T; 3]), (_, a
     ([(T::zero(), T::zero()), u2, (u2.0 + v2.0, u2.1 + v2.1), v2], (dot(rel, a1), dot(rel, a2)))
 }
 
+/// The point of the edge `a → b` nearest `q`.
+fn edge_nearest<T: Real>(a: (T, T), b: (T, T), q: (T, T)) -> (T, T) {
+    let e = (b.0 - a.0, b.1 - a.1);
+    let s = (((q.0 - a.0) * e.0 + (q.1 - a.1) * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
+    (a.0 + s * e.0, a.1 + s * e.1)
+}
+
 /// A flat emitter's outline in its plane's coordinates (along `a1`, `a2` of [`Frame`]) about
 /// `x`'s foot.
 enum Outline<T> {
@@ -515,10 +522,8 @@ impl<T: Real> Outline<T> {
                 let mut inside = true;
                 for i in 0..4 {
                     let (a, b) = (corners[i], corners[(i + 1) % 4]);
-                    let e = (b.0 - a.0, b.1 - a.1);
-                    inside = inside && (q.0 - a.0) * e.1 - (q.1 - a.1) * e.0 <= T::zero();
-                    let s = (((q.0 - a.0) * e.0 + (q.1 - a.1) * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
-                    let p = (a.0 + s * e.0, a.1 + s * e.1);
+                    inside = inside && (q.0 - a.0) * (b.1 - a.1) - (q.1 - a.1) * (b.0 - a.0) <= T::zero();
+                    let p = edge_nearest(a, b, q);
                     let dd = (p.0 - q.0) * (p.0 - q.0) + (p.1 - q.1) * (p.1 - q.1);
                     if dd < best.0 {
                         best = (dd, p);
@@ -537,10 +542,8 @@ impl<T: Real> Outline<T> {
             Outline::Polygon(corners) => {
                 let mut nearest = [T::infinity(); 2];
                 for i in 0..4 {
-                    let (a, b) = (corners[i], corners[(i + 1) % 4]);
-                    let e = (b.0 - a.0, b.1 - a.1);
-                    let s = (-(a.0 * e.0 + a.1 * e.1) / (e.0 * e.0 + e.1 * e.1)).max(T::zero()).min(T::one());
-                    let distance = (a.0 + s * e.0).hypot(a.1 + s * e.1);
+                    let p = edge_nearest(corners[i], corners[(i + 1) % 4], (T::zero(), T::zero()));
+                    let distance = p.0.hypot(p.1);
                     if distance < nearest[0] {
                         nearest = [distance, nearest[0]];
                     } else if distance < nearest[1] {
@@ -817,8 +820,9 @@ pub const BESIDE_SCALE: f64 = 0.25;
 /// [`flat_about_lobe`]: over the whole circle in `ψ` a ray entering the sphere 1e-5 of its radius
 /// inside its limb was 8.7e-3 off in `g = 0.95` fog), outside [`AZIMUTHAL`] over the wedge that
 /// meets the cap, or, beside the sphere (`−p` in the cap too, [`BESIDE_SCALE`]), the half towards
-/// the rim in its tangent's Mercator angle ([`mercator_rule`]) and the far half in `ψ`; the distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted
-/// cosine that root over `R`.
+/// the rim in its tangent's Mercator angle ([`mercator_rule`]) and the far half in `ψ`; the
+/// distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted cosine that root
+/// over `R`.
 fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap: &Cap<T>, (p, sign, cos_p): ([T; 3], T, T), scale: T) -> T {
     let Cap { a, dc, radius, cos_a } = *cap;
     let (u, v) = basis(p);
@@ -828,20 +832,20 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
     // taken as ψ = ψ_a + Ψ sin φ (the θ range closes like a square root at its edges)
     let sin_p = au.hypot(av);
     let (axis, half) = if sin_p > T::zero() { ((au / sin_p, av / sin_p), (((cos_a - cos_p) * (cos_a + cos_p)).max(T::zero()).sqrt() / sin_p).min(T::one()).acos()) } else { ((T::one(), T::zero()), T::zero()) };
+    // −p inside the cap as well (`x` beside the sphere, the lobe pointing along its surface): every
+    // half great circle from p meets the cap, up to θ = π
+    let beside = cos_p < -cos_a;
     // the θ integral along e_ψ, given a·e_ψ = sin β_p cos(ψ − ψ_a): the rim where
     // A cos θ + B sin θ = cos α; θ from its least (0 inside, the near rim outside), graded from
     // there by s (outside by the larger of s and that least θ: the lobe's tail there is as wide
     // as its distance)
-    // −p inside the cap as well (`x` beside the sphere, the lobe pointing along its surface): every
-    // half great circle from p meets the cap, up to θ = π
-    let beyond = cos_p < -cos_a;
     let along = |big_b: T| {
         let (mut mid, spread) = (big_b.atan2(cos_p), (cos_a / cos_p.hypot(big_b)).min(T::one()).acos());
-        if beyond && mid < T::zero() {
+        if beside && mid < T::zero() {
             mid = mid + T::PI() + T::PI();
         }
         let from = if inside { T::zero() } else { (mid - spread).max(T::zero()) };
-        let to = if beyond { (mid + spread).min(T::PI()) } else { mid + spread };
+        let to = if beside { (mid + spread).min(T::PI()) } else { mid + spread };
         let mut around = T::zero();
         graded_from(scale, from, to, |st, ct, w| {
             let toward_a = ct * cos_p + st * big_b;
@@ -862,7 +866,7 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
         // t with m = (t.1, −t.0) = −axis
         let t = (axis.1, -axis.0);
         let eps = alpha - beta_p;
-        let half_chord = ((alpha - beta_p) * (alpha + beta_p)).max(T::zero()).sqrt();
+        let half_chord = (eps * (alpha + beta_p)).max(T::zero()).sqrt();
         // (both halves are even about axis: their rules' nodes on one side, weights doubled)
         if eps > T::zero() {
             let reach = eps.hypot(scale.min(half_chord));
@@ -877,7 +881,7 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
         }
         return sum;
     }
-    if beyond {
+    if beside {
         // the half towards the rim's nearest point (axis) in the Mercator angle of the rim's
         // tangent there, as a flat emitter's wedge off it (the lobe's edge a step where its
         // chords start, ε/s wide in ψ before ±π/2); the far half in ψ (both even about axis)
