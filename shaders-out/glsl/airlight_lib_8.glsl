@@ -278,6 +278,7 @@ const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 const float AIRLIGHT_LOBE_REACH = 8.0;
+const float AIRLIGHT_LOBE_TAIL = 0.25;
 const float AIRLIGHT_BESIDE_SCALE = 0.25;
 const float AIRLIGHT_EDGE_REACH = 0.5;
 const float AIRLIGHT_CROSSING_REACH = 16.0;
@@ -572,9 +573,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_31 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_30 * x_30) + (y_7 * y_7)) < 1.0);
+    return (((x_31 * x_31) + (y_7 * y_7)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -968,8 +969,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_2 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_31 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
-            return ((x_31 * x_31) * (3.0 - (2.0 * x_31)));
+            float x_32 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
+            return ((x_32 * x_32) * (3.0 - (2.0 * x_32)));
         }
         default: {
             return 1.0;
@@ -1232,10 +1233,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_32);
+            float x_33 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_33);
             if (_e42) {
-                float _e43 = airlight_log1p(x_32);
+                float _e43 = airlight_log1p(x_33);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1367,8 +1368,8 @@ vec2[4] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[4], uint i_3) {
-    float x_33 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_33) : x_33);
+    float x_34 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_34) : x_34);
 }
 
 float[8] airlight_legendre(float g_7[8]) {
@@ -1443,8 +1444,8 @@ float[8] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_34 = (lambda / float((2u * k0_)));
-            float per_step = (x_34 * x_34);
+            float x_35 = (lambda / float((2u * k0_)));
+            float per_step = (x_35 * x_35);
             share = per_step;
             bool loop_init_6 = true;
             while(true) {
@@ -1870,8 +1871,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_35 = (half_5.big_h * _e13);
-    return ((x_35 > 0.0) ? exp(-(x_35)) : 1.0);
+    float x_36 = (half_5.big_h * _e13);
+    return ((x_36 > 0.0) ? exp(-(x_36)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2334,13 +2335,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    float x_36 = (abs(alpha) + abs(beta_1));
+    float x_37 = (abs(alpha) + abs(beta_1));
     float _e542 = spread;
     float _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = ((((1.0 * x_36) * _e550) + (0.0 * _e552)) / 1.0);
+    next = ((((1.0 * x_37) * _e550) + (0.0 * _e552)) / 1.0);
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2350,7 +2351,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e560 + (_e561 * abs(_e54[1])));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = ((((3.0 * x_36) * _e568) + (1.0 * _e570)) / 2.0);
+    next = ((((3.0 * x_37) * _e568) + (1.0 * _e570)) / 2.0);
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2360,7 +2361,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e578 + (_e579 * abs(_e54[2])));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = ((((5.0 * x_36) * _e586) + (2.0 * _e588)) / 3.0);
+    next = ((((5.0 * x_37) * _e586) + (2.0 * _e588)) / 3.0);
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2370,7 +2371,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e596 + (_e597 * abs(_e54[3])));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = ((((7.0 * x_36) * _e604) + (3.0 * _e606)) / 4.0);
+    next = ((((7.0 * x_37) * _e604) + (3.0 * _e606)) / 4.0);
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2380,7 +2381,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e614 + (_e615 * abs(_e54[4])));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = ((((9.0 * x_36) * _e622) + (4.0 * _e624)) / 5.0);
+    next = ((((9.0 * x_37) * _e622) + (4.0 * _e624)) / 5.0);
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2390,7 +2391,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e632 + (_e633 * abs(_e54[5])));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = ((((11.0 * x_36) * _e640) + (5.0 * _e642)) / 6.0);
+    next = ((((11.0 * x_37) * _e640) + (5.0 * _e642)) / 6.0);
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2400,7 +2401,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e650 + (_e651 * abs(_e54[6])));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = ((((13.0 * x_36) * _e658) + (6.0 * _e660)) / 7.0);
+    next = ((((13.0 * x_37) * _e658) + (6.0 * _e660)) / 7.0);
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2410,7 +2411,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e668 + (_e669 * abs(_e54[7])));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = ((((15.0 * x_36) * _e676) + (7.0 * _e678)) / 8.0);
+    next = ((((15.0 * x_37) * _e676) + (7.0 * _e678)) / 8.0);
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -4451,10 +4452,10 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain) 
     vec2 _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_4);
     vec2 _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_4);
     vec2 _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_4);
-    vec3 hi_6 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_7 = vec3(_e11.y, _e17.y, _e23.y);
+    vec3 hi_7 = vec3(_e11.x, _e17.x, _e23.x);
+    vec3 lo_8 = vec3(_e11.y, _e17.y, _e23.y);
     vec3 dir_2 = s_21.dir;
-    bool _e33 = airlight_in_exact_range(hi_6);
+    bool _e33 = airlight_in_exact_range(hi_7);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
         local_128 = !(_e38);
@@ -4465,10 +4466,10 @@ AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain) 
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_6.y, dir_2.z, hi_6.z, dir_2.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_6.z, dir_2.x, hi_6.x, dir_2.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_6.x, dir_2.y, hi_6.y, dir_2.x, key_4);
-    vec3 w_6 = vec3((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
+    float _e46 = airlight_diff_of_products(hi_7.y, dir_2.z, hi_7.z, dir_2.y, key_4);
+    float _e59 = airlight_diff_of_products(hi_7.z, dir_2.x, hi_7.x, dir_2.z, key_4);
+    float _e72 = airlight_diff_of_products(hi_7.x, dir_2.y, hi_7.y, dir_2.x, key_4);
+    vec3 w_6 = vec3((_e46 + ((lo_8.y * dir_2.z) - (lo_8.z * dir_2.y))), (_e59 + ((lo_8.z * dir_2.x) - (lo_8.x * dir_2.z))), (_e72 + ((lo_8.x * dir_2.y) - (lo_8.y * dir_2.x))));
     bool _e82 = airlight_vec_finite(w_6);
     if (!(_e82)) {
         return plain;
@@ -5045,10 +5046,19 @@ vec2 airlight_cos_sin_half_turn(float x_17) {
     return vec2(-(sin_r), cos_r);
 }
 
-float airlight_acos(float x_18) {
-    float a_42 = abs(x_18);
+vec2 airlight_cos_sin_to_pi(float x_18) {
+    if ((x_18 <= 1.5707964)) {
+        vec2 _e3 = airlight_cos_sin(x_18);
+        return _e3;
+    }
+    vec2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_18));
+    return vec2(-(_e6.x), _e6.y);
+}
+
+float airlight_acos(float x_19) {
+    float a_42 = abs(x_19);
     float _e8 = airlight_atan(sqrt(((1.0 - a_42) / (1.0 + a_42))));
-    return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_19 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_23) {
@@ -5144,22 +5154,22 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         vec3 _e105 = airlight_normalize(s_25.brdf_view);
         vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         vec3 _e112 = u_1;
-        float x_37 = dot(_e111, _e112);
+        float x_38 = dot(_e111, _e112);
         vec3 _e114 = u_1;
         float y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_38 * x_38) + (y_12 * y_12)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_37, abs(y_12));
+            float _e140 = airlight_angle(x_38, abs(y_12));
             float phi_r = (((y_12 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3(-(phi_r), (x_38 / _e145), (-(y_12) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5237,7 +5247,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
             cuts_2[_e255] = c_16;
         }
     }
-    float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2));
+    float hi_8 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2));
     g_22.gamma[0] = ((cos_a_1 < 0.0) ? first_2 : 0.0);
     bool loop_init_25 = true;
     while(true) {
@@ -5259,7 +5269,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[_e289];
-                local_136 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_8);
             } else {
                 local_136 = false;
             }
@@ -5275,7 +5285,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         }
     }
     uint _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_7;
+    g_22.gamma[(_e308 + 1u)] = hi_8;
     uint _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     bool loop_init_26 = true;
@@ -5354,9 +5364,9 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
     return _e390;
 }
 
-float airlight_lobe_at(AirlightLobe q_1, float x_19) {
+float airlight_lobe_at(AirlightLobe q_1, float x_20) {
     bool local_142 = false;
-    vec2 _e4 = airlight_cos_sin((0.5 * x_19));
+    vec2 _e4 = airlight_cos_sin((0.5 * x_20));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
@@ -5386,10 +5396,10 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
     return (w_1 * _e22);
 }
 
-float airlight_arc_end(float x_20, float cut) {
+float airlight_arc_end(float x_21, float cut) {
     float end_1 = 0.0;
     bool local_143 = false;
-    end_1 = x_20;
+    end_1 = x_21;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
         float _e6 = end_1;
@@ -5782,7 +5792,7 @@ AirlightCanonical airlight_no_canonical() {
     return AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_21) {
+AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_22) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
     float gamma_1 = 0.0;
     float jacobian = 0.0;
@@ -5800,8 +5810,8 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_44 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_21 - float(i_44));
+        uint i_44 = min(uint(max(floor(x_22), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_22 - float(i_44));
         float a_44 = g_25.gamma[i_44];
         float b_21 = g_25.gamma[(i_44 + 1u)];
         float w_8 = (b_21 - a_44);
@@ -5894,10 +5904,10 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if ((s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_21;
+        at_1 = x_22;
         if ((g_25.scale > 0.0)) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
-            ds = (g_25.scale * cosh(x_21));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_22)));
+            ds = (g_25.scale * cosh(x_22));
         }
         float _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -6225,8 +6235,8 @@ vec2 airlight_outline_distances(AirlightOutline o) {
     return _e61;
 }
 
-AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 x_22) {
-    vec3 rel = (x_22 - a_19.c);
+AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 x_23) {
+    vec3 rel = (x_23 - a_19.c);
     vec2 foot = vec2(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     vec2 zero = vec2(0.0);
     if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
@@ -6760,11 +6770,11 @@ vec2 airlight_outline_chord(AirlightOutline o_4, vec2 q_8, vec2 e_6) {
         float t_11 = (-(b_23) - (((floatBitsToUint(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3));
         float r1_2 = (t_11 / a_47);
         float r2_4 = (k_12 / t_11);
-        float hi_8 = max(r1_2, r2_4);
-        if (!((hi_8 > 0.0))) {
+        float hi_9 = max(r1_2, r2_4);
+        if (!((hi_9 > 0.0))) {
             return vec2(0.0);
         }
-        return vec2(max(min(r1_2, r2_4), 0.0), hi_8);
+        return vec2(max(min(r1_2, r2_4), 0.0), hi_9);
     }
     vec2 _e70 = chord_1;
     vec2 _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_8, e_6);
@@ -6788,7 +6798,7 @@ vec2 airlight_graded_from(float scale_2, float start_1, float to) {
 
 vec3 airlight_graded_from_node(float start_2, float graded_2, float g_26) {
     vec2 _e3 = airlight_cos_sin_half_turn(g_26);
-    vec2 _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    vec2 _e9 = airlight_cos_sin_to_pi((start_2 + ((graded_2 * _e3.y) / _e3.x)));
     return vec3(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
@@ -6875,12 +6885,12 @@ float airlight_lobe_azimuth(vec3 u_5, vec3 v_7, vec2 e_7) {
     return _e17;
 }
 
-float airlight_wrap_turn(float x_23) {
-    return (x_23 - (6.2831855 * roundEven((x_23 / 6.2831855))));
+float airlight_wrap_turn(float x_24) {
+    return (x_24 - (6.2831855 * roundEven((x_24 / 6.2831855))));
 }
 
-vec2 airlight_cos_sin_turns(float x_24) {
-    float _e1 = airlight_wrap_turn(x_24);
+vec2 airlight_cos_sin_turns(float x_25) {
+    float _e1 = airlight_wrap_turn(x_25);
     vec2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
@@ -6903,8 +6913,8 @@ vec4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_7) {
     return vec4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-vec4 airlight_sort4_(vec4 x_25) {
-    vec4 a_48 = vec4(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+vec4 airlight_sort4_(vec4 x_26) {
+    vec4 a_48 = vec4(min(x_26.x, x_26.y), max(x_26.x, x_26.y), min(x_26.z, x_26.w), max(x_26.z, x_26.w));
     vec4 b_24 = vec4(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
     return vec4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
@@ -6993,18 +7003,18 @@ float airlight_mercator(vec2 n_3, vec2 cs_3) {
 
 vec3 airlight_mercator_node(float ua, float ub, uint i_33) {
     float _e5 = airlight_mercator_cut((i_33 / 12u));
-    float lo_8 = max(ua, _e5);
+    float lo_9 = max(ua, _e5);
     float _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
-    float hi_9 = min(ub, _e11);
-    if (!((lo_8 < hi_9))) {
+    float hi_10 = min(ub, _e11);
+    if (!((lo_9 < hi_10))) {
         return vec3(0.0);
     }
     vec2 _e19 = airlight_triangle_rule((i_33 % 12u));
-    float hw_5 = (0.5 * (hi_9 - lo_8));
-    float x_38 = ((0.5 * (lo_8 + hi_9)) + (hw_5 * _e19.x));
-    float e_18 = exp(-(abs(x_38)));
+    float hw_5 = (0.5 * (hi_10 - lo_9));
+    float x_39 = ((0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x));
+    float e_18 = exp(-(abs(x_39)));
     float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
-    return vec3(sech, ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    return vec3(sech, ((sign(x_39) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
 }
 
 float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, vec3 u_6, vec3 v_8, vec2 n_4, vec2 first_1, vec2 last) {
@@ -7393,7 +7403,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     return _e560;
 }
 
-float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
+float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
     bool local_188 = false;
     bool local_189 = false;
     vec2 u_7 = vec2(0.0);
@@ -7402,7 +7412,7 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
     uint i_40 = 0u;
     vec2 e_9 = vec2(0.0);
     float r_max_1 = 0.0;
-    vec3 rel_1 = (x_26 - a_26.c);
+    vec3 rel_1 = (x_27 - a_26.c);
     float z_21 = dot(rel_1, a_26.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
@@ -7479,13 +7489,13 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
+float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_28) {
     vec2 q_9 = vec2(0.0);
     bool local_190 = false;
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = 0u;
-    vec3 rel_2 = (x_27 - a_27.c);
+    vec3 rel_2 = (x_28 - a_27.c);
     float z_22 = dot(rel_2, a_27.n);
     if (!((z_22 > 0.0))) {
         return 0.0;
@@ -7824,8 +7834,9 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     bool local_192 = false;
     float mid = 0.0;
     bool local_193 = false;
-    float start_5 = 0.0;
-    float to_1 = 0.0;
+    float lo_7 = 0.0;
+    float hi_6 = 0.0;
+    bool local_194 = false;
     float around = 0.0;
     vec3 p_6 = (sign_2 * a_29.d);
     vec3 _e8 = airlight_basis_e1_(p_6);
@@ -7854,8 +7865,8 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     bool loop_init_51 = true;
     while(true) {
         if (!loop_init_51) {
-            uint _e398 = i_43;
-            i_43 = (_e398 + 1u);
+            uint _e569 = i_43;
+            i_43 = (_e569 + 1u);
         }
         loop_init_51 = false;
         uint _e79 = i_43;
@@ -7942,126 +7953,196 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
             float _e182 = big_b_1;
             float _e183 = big_b_1;
             float _e190 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e182 * _e183)))), 1.0));
-            start_5 = 0.0;
+            lo_7 = 0.0;
             if (!(inside_3)) {
                 float _e194 = mid;
-                start_5 = max((_e194 - _e190), 0.0);
+                lo_7 = max((_e194 - _e190), 0.0);
             }
             float _e198 = mid;
-            to_1 = (_e198 + _e190);
+            hi_6 = (_e198 + _e190);
             if (beside) {
-                float _e201 = to_1;
-                to_1 = min(_e201, AIRLIGHT_PI);
+                float _e201 = hi_6;
+                hi_6 = min(_e201, AIRLIGHT_PI);
             }
-            float _e204 = start_5;
-            float _e205 = to_1;
-            vec2 _e206 = airlight_graded_from(scale_3, _e204, _e205);
-            float graded_10 = _e206.x;
-            float c_24 = (0.5 * _e206.y);
-            float hw_8 = (0.5 * _e206.y);
+            float _e204 = lo_7;
+            float start_5 = (_e204 + AIRLIGHT_LOBE_TAIL);
+            float _e207 = hi_6;
+            if ((_e207 > start_5)) {
+                float _e211 = hi_6;
+                float _e212 = lo_7;
+                float _e215 = lo_7;
+                local_194 = ((_e211 - _e212) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e215)));
+            } else {
+                local_194 = false;
+            }
+            bool cut_3 = local_194;
             around = 0.0;
-            float _e216 = around;
-            float _e219 = big_b_1;
-            float _e220 = start_5;
-            float _e224 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e219, _e220, graded_10, (c_24 - (0.09501251 * hw_8)));
-            around = (_e216 + ((0.1894506 * hw_8) * _e224));
-            float _e227 = around;
-            float _e230 = big_b_1;
-            float _e231 = start_5;
-            float _e235 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e230, _e231, graded_10, (c_24 + (0.09501251 * hw_8)));
-            around = (_e227 + ((0.1894506 * hw_8) * _e235));
-            float _e238 = around;
-            float _e241 = big_b_1;
-            float _e242 = start_5;
-            float _e246 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e241, _e242, graded_10, (c_24 - (0.28160354 * hw_8)));
-            around = (_e238 + ((0.18260342 * hw_8) * _e246));
-            float _e249 = around;
-            float _e252 = big_b_1;
-            float _e253 = start_5;
-            float _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_24 + (0.28160354 * hw_8)));
-            around = (_e249 + ((0.18260342 * hw_8) * _e257));
-            float _e260 = around;
-            float _e263 = big_b_1;
-            float _e264 = start_5;
-            float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_24 - (0.45801678 * hw_8)));
-            around = (_e260 + ((0.16915652 * hw_8) * _e268));
-            float _e271 = around;
-            float _e274 = big_b_1;
-            float _e275 = start_5;
-            float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_24 + (0.45801678 * hw_8)));
-            around = (_e271 + ((0.16915652 * hw_8) * _e279));
-            float _e282 = around;
-            float _e285 = big_b_1;
-            float _e286 = start_5;
-            float _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_24 - (0.61787623 * hw_8)));
-            around = (_e282 + ((0.14959599 * hw_8) * _e290));
-            float _e293 = around;
-            float _e296 = big_b_1;
-            float _e297 = start_5;
-            float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_24 + (0.61787623 * hw_8)));
-            around = (_e293 + ((0.14959599 * hw_8) * _e301));
-            float _e304 = around;
-            float _e307 = big_b_1;
-            float _e308 = start_5;
-            float _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_24 - (0.7554044 * hw_8)));
-            around = (_e304 + ((0.12462897 * hw_8) * _e312));
-            float _e315 = around;
-            float _e318 = big_b_1;
-            float _e319 = start_5;
-            float _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_24 + (0.7554044 * hw_8)));
-            around = (_e315 + ((0.12462897 * hw_8) * _e323));
-            float _e326 = around;
-            float _e329 = big_b_1;
-            float _e330 = start_5;
-            float _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_24 - (0.8656312 * hw_8)));
-            around = (_e326 + ((0.09515851 * hw_8) * _e334));
-            float _e337 = around;
-            float _e340 = big_b_1;
-            float _e341 = start_5;
-            float _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_24 + (0.8656312 * hw_8)));
-            around = (_e337 + ((0.09515851 * hw_8) * _e345));
-            float _e348 = around;
-            float _e351 = big_b_1;
-            float _e352 = start_5;
-            float _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_24 - (0.944575 * hw_8)));
-            around = (_e348 + ((0.062253524 * hw_8) * _e356));
-            float _e359 = around;
-            float _e362 = big_b_1;
-            float _e363 = start_5;
-            float _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_24 + (0.944575 * hw_8)));
-            around = (_e359 + ((0.062253524 * hw_8) * _e367));
-            float _e370 = around;
-            float _e373 = big_b_1;
-            float _e374 = start_5;
-            float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_24 - (0.9894009 * hw_8)));
-            around = (_e370 + ((0.02715246 * hw_8) * _e378));
-            float _e381 = around;
-            float _e384 = big_b_1;
-            float _e385 = start_5;
-            float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_24 + (0.9894009 * hw_8)));
-            around = (_e381 + ((0.02715246 * hw_8) * _e389));
-            float _e392 = sum_14;
-            float _e393 = wpsi;
-            float _e394 = around;
-            sum_14 = (_e392 + (_e393 * _e394));
+            {
+                float start_6 = lo_7;
+                float _e224 = hi_6;
+                float to_1 = (cut_3 ? start_5 : _e224);
+                vec2 _e226 = airlight_graded_from(scale_3, start_6, to_1);
+                float graded_10 = _e226.x;
+                float c_24 = (0.5 * _e226.y);
+                float hw_8 = (0.5 * _e226.y);
+                float _e234 = around;
+                float _e237 = big_b_1;
+                float _e241 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e237, start_6, graded_10, (c_24 - (0.09501251 * hw_8)));
+                around = (_e234 + ((0.1894506 * hw_8) * _e241));
+                float _e244 = around;
+                float _e247 = big_b_1;
+                float _e251 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e247, start_6, graded_10, (c_24 + (0.09501251 * hw_8)));
+                around = (_e244 + ((0.1894506 * hw_8) * _e251));
+                float _e254 = around;
+                float _e257 = big_b_1;
+                float _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e257, start_6, graded_10, (c_24 - (0.28160354 * hw_8)));
+                around = (_e254 + ((0.18260342 * hw_8) * _e261));
+                float _e264 = around;
+                float _e267 = big_b_1;
+                float _e271 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, start_6, graded_10, (c_24 + (0.28160354 * hw_8)));
+                around = (_e264 + ((0.18260342 * hw_8) * _e271));
+                float _e274 = around;
+                float _e277 = big_b_1;
+                float _e281 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e277, start_6, graded_10, (c_24 - (0.45801678 * hw_8)));
+                around = (_e274 + ((0.16915652 * hw_8) * _e281));
+                float _e284 = around;
+                float _e287 = big_b_1;
+                float _e291 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e287, start_6, graded_10, (c_24 + (0.45801678 * hw_8)));
+                around = (_e284 + ((0.16915652 * hw_8) * _e291));
+                float _e294 = around;
+                float _e297 = big_b_1;
+                float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e297, start_6, graded_10, (c_24 - (0.61787623 * hw_8)));
+                around = (_e294 + ((0.14959599 * hw_8) * _e301));
+                float _e304 = around;
+                float _e307 = big_b_1;
+                float _e311 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, start_6, graded_10, (c_24 + (0.61787623 * hw_8)));
+                around = (_e304 + ((0.14959599 * hw_8) * _e311));
+                float _e314 = around;
+                float _e317 = big_b_1;
+                float _e321 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e317, start_6, graded_10, (c_24 - (0.7554044 * hw_8)));
+                around = (_e314 + ((0.12462897 * hw_8) * _e321));
+                float _e324 = around;
+                float _e327 = big_b_1;
+                float _e331 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e327, start_6, graded_10, (c_24 + (0.7554044 * hw_8)));
+                around = (_e324 + ((0.12462897 * hw_8) * _e331));
+                float _e334 = around;
+                float _e337 = big_b_1;
+                float _e341 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e337, start_6, graded_10, (c_24 - (0.8656312 * hw_8)));
+                around = (_e334 + ((0.09515851 * hw_8) * _e341));
+                float _e344 = around;
+                float _e347 = big_b_1;
+                float _e351 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e347, start_6, graded_10, (c_24 + (0.8656312 * hw_8)));
+                around = (_e344 + ((0.09515851 * hw_8) * _e351));
+                float _e354 = around;
+                float _e357 = big_b_1;
+                float _e361 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e357, start_6, graded_10, (c_24 - (0.944575 * hw_8)));
+                around = (_e354 + ((0.062253524 * hw_8) * _e361));
+                float _e364 = around;
+                float _e367 = big_b_1;
+                float _e371 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e367, start_6, graded_10, (c_24 + (0.944575 * hw_8)));
+                around = (_e364 + ((0.062253524 * hw_8) * _e371));
+                float _e374 = around;
+                float _e377 = big_b_1;
+                float _e381 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e377, start_6, graded_10, (c_24 - (0.9894009 * hw_8)));
+                around = (_e374 + ((0.02715246 * hw_8) * _e381));
+                float _e384 = around;
+                float _e387 = big_b_1;
+                float _e391 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e387, start_6, graded_10, (c_24 + (0.9894009 * hw_8)));
+                around = (_e384 + ((0.02715246 * hw_8) * _e391));
+            }
+            if (cut_3) {
+                float to_2 = hi_6;
+                vec2 _e395 = airlight_graded_from(scale_3, start_5, to_2);
+                float graded_11 = _e395.x;
+                float c_25 = (0.5 * _e395.y);
+                float hw_9 = (0.5 * _e395.y);
+                float _e403 = around;
+                float _e406 = big_b_1;
+                float _e410 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, start_5, graded_11, (c_25 - (0.09501251 * hw_9)));
+                around = (_e403 + ((0.1894506 * hw_9) * _e410));
+                float _e413 = around;
+                float _e416 = big_b_1;
+                float _e420 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e416, start_5, graded_11, (c_25 + (0.09501251 * hw_9)));
+                around = (_e413 + ((0.1894506 * hw_9) * _e420));
+                float _e423 = around;
+                float _e426 = big_b_1;
+                float _e430 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e426, start_5, graded_11, (c_25 - (0.28160354 * hw_9)));
+                around = (_e423 + ((0.18260342 * hw_9) * _e430));
+                float _e433 = around;
+                float _e436 = big_b_1;
+                float _e440 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e436, start_5, graded_11, (c_25 + (0.28160354 * hw_9)));
+                around = (_e433 + ((0.18260342 * hw_9) * _e440));
+                float _e443 = around;
+                float _e446 = big_b_1;
+                float _e450 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e446, start_5, graded_11, (c_25 - (0.45801678 * hw_9)));
+                around = (_e443 + ((0.16915652 * hw_9) * _e450));
+                float _e453 = around;
+                float _e456 = big_b_1;
+                float _e460 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e456, start_5, graded_11, (c_25 + (0.45801678 * hw_9)));
+                around = (_e453 + ((0.16915652 * hw_9) * _e460));
+                float _e463 = around;
+                float _e466 = big_b_1;
+                float _e470 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e466, start_5, graded_11, (c_25 - (0.61787623 * hw_9)));
+                around = (_e463 + ((0.14959599 * hw_9) * _e470));
+                float _e473 = around;
+                float _e476 = big_b_1;
+                float _e480 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e476, start_5, graded_11, (c_25 + (0.61787623 * hw_9)));
+                around = (_e473 + ((0.14959599 * hw_9) * _e480));
+                float _e483 = around;
+                float _e486 = big_b_1;
+                float _e490 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e486, start_5, graded_11, (c_25 - (0.7554044 * hw_9)));
+                around = (_e483 + ((0.12462897 * hw_9) * _e490));
+                float _e493 = around;
+                float _e496 = big_b_1;
+                float _e500 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e496, start_5, graded_11, (c_25 + (0.7554044 * hw_9)));
+                around = (_e493 + ((0.12462897 * hw_9) * _e500));
+                float _e503 = around;
+                float _e506 = big_b_1;
+                float _e510 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e506, start_5, graded_11, (c_25 - (0.8656312 * hw_9)));
+                around = (_e503 + ((0.09515851 * hw_9) * _e510));
+                float _e513 = around;
+                float _e516 = big_b_1;
+                float _e520 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e516, start_5, graded_11, (c_25 + (0.8656312 * hw_9)));
+                around = (_e513 + ((0.09515851 * hw_9) * _e520));
+                float _e523 = around;
+                float _e526 = big_b_1;
+                float _e530 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e526, start_5, graded_11, (c_25 - (0.944575 * hw_9)));
+                around = (_e523 + ((0.062253524 * hw_9) * _e530));
+                float _e533 = around;
+                float _e536 = big_b_1;
+                float _e540 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e536, start_5, graded_11, (c_25 + (0.944575 * hw_9)));
+                around = (_e533 + ((0.062253524 * hw_9) * _e540));
+                float _e543 = around;
+                float _e546 = big_b_1;
+                float _e550 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e546, start_5, graded_11, (c_25 - (0.9894009 * hw_9)));
+                around = (_e543 + ((0.02715246 * hw_9) * _e550));
+                float _e553 = around;
+                float _e556 = big_b_1;
+                float _e560 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e556, start_5, graded_11, (c_25 + (0.9894009 * hw_9)));
+                around = (_e553 + ((0.02715246 * hw_9) * _e560));
+            }
+            float _e563 = sum_14;
+            float _e564 = wpsi;
+            float _e565 = around;
+            sum_14 = (_e563 + (_e564 * _e565));
         }
     }
-    float _e400 = sum_14;
-    return _e400;
+    float _e571 = sum_14;
+    return _e571;
 }
 
-float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
+float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_194 = false;
     bool local_195 = false;
     bool local_196 = false;
     bool local_197 = false;
     bool local_198 = false;
     bool local_199 = false;
-    vec3 v_12 = (a_30.c - x_28);
+    bool local_200 = false;
+    vec3 v_12 = (a_30.c - x_29);
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
         return 0.0;
@@ -8072,8 +8153,8 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
     bool loop_init_52 = true;
     while(true) {
         if (!loop_init_52) {
-            uint _e101 = j_13;
-            j_13 = (_e101 + 1u);
+            uint _e102 = j_13;
+            j_13 = (_e102 + 1u);
         }
         loop_init_52 = false;
         uint _e32 = j_13;
@@ -8084,76 +8165,76 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
         {
             uint _e39 = j_13;
             vec2 lobe_6 = ((_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy);
-            float c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
+            float c_26 = dot(cap_4.a, (lobe_6.x * a_30.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_194 = (lobe_6.y > 0.0);
-            } else {
-                local_194 = false;
-            }
-            bool _e57 = local_194;
-            if (_e57) {
-                local_195 = (lobe_6.y < (_e23 + _e23));
+                local_195 = (lobe_6.y > 0.0);
             } else {
                 local_195 = false;
             }
-            bool _e64 = local_195;
-            if (_e64) {
-                if (!(!((c_25 < -(cap_4.cos_a))))) {
-                    local_197 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_197 = true;
-                }
-                bool _e78 = local_197;
-                local_196 = _e78;
+            bool _e57 = local_195;
+            if (_e57) {
+                local_196 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_196 = false;
             }
-            bool _e80 = local_196;
-            if (_e80) {
-                if (!((c_25 > cap_4.cos_a))) {
-                    float _e88 = airlight_acos(c_25);
-                    local_199 = ((_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+            bool _e64 = local_196;
+            if (_e64) {
+                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                    local_198 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
-                    local_199 = true;
+                    local_198 = true;
                 }
-                bool _e95 = local_199;
-                local_198 = _e95;
+                bool _e78 = local_198;
+                local_197 = _e78;
             } else {
-                local_198 = false;
+                local_197 = false;
             }
-            bool _e97 = local_198;
-            if (_e97) {
+            bool _e80 = local_197;
+            if (_e80) {
+                if (!((c_26 > cap_4.cos_a))) {
+                    float _e88 = airlight_acos(c_26);
+                    local_200 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+                } else {
+                    local_200 = true;
+                }
+                bool _e96 = local_200;
+                local_199 = _e96;
+            } else {
+                local_199 = false;
+            }
+            bool _e98 = local_199;
+            if (_e98) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_25;
+                cos_p_2 = c_26;
             }
         }
     }
-    float _e103 = chosen;
-    if ((_e103 > 0.0)) {
-        float _e106 = sign_3;
-        float _e107 = cos_p_2;
-        float _e108 = chosen;
-        float _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
-        return _e109;
+    float _e104 = chosen;
+    if ((_e104 > 0.0)) {
+        float _e107 = sign_3;
+        float _e108 = cos_p_2;
+        float _e109 = chosen;
+        float _e110 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e107, _e108, _e109);
+        return _e110;
     }
-    float _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
-    return _e110;
+    float _e111 = airlight_sphere_cap(s_49, a_30, cap_4);
+    return _e111;
 }
 
-float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, vec3 x_29) {
+float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, vec3 x_30) {
     switch(s_50.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_50, a_31, x_29);
+            float _e4 = airlight_disc(s_50, a_31, x_30);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_50, a_31, x_29);
+            float _e5 = airlight_parallelogram(s_50, a_31, x_30);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_50, a_31, x_29);
+            float _e6 = airlight_sphere(s_50, a_31, x_30);
             return _e6;
         }
     }
@@ -8174,7 +8255,7 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
     float k_9 = 0.0;
     float gauss_1 = 0.0;
     uint j_14 = 0u;
-    bool local_200 = false;
+    bool local_201 = false;
     AirlightArea _e1 = airlight_area(s_52);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
@@ -8199,10 +8280,10 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_26 = (0.5 * (_e27 + _e29));
+            float c_27 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_9 = (0.5 * (_e34 - _e36));
+            float hw_10 = (0.5 * (_e34 - _e36));
             k_9 = 0.0;
             gauss_1 = 0.0;
             j_14 = 0u;
@@ -8224,13 +8305,13 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
                     uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_14;
-                        local_200 = (_e66 < 14u);
+                        local_201 = (_e66 < 14u);
                     } else {
-                        local_200 = false;
+                        local_201 = false;
                     }
-                    bool _e70 = local_200;
-                    float x_39 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
-                    float _e72 = airlight_area_node(s_52, _e1, x_39);
+                    bool _e70 = local_201;
+                    float x_40 = (_e70 ? (c_27 - (hw_10 * node_4.x)) : (c_27 + (hw_10 * node_4.x)));
+                    float _e72 = airlight_area_node(s_52, _e1, x_40);
                     float _e73 = k_9;
                     k_9 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
@@ -8240,7 +8321,7 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
             AirlightAdaptive _e84 = st_1;
             float _e85 = k_9;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -8260,21 +8341,21 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
 }
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
-    bool local_201 = false;
     bool local_202 = false;
+    bool local_203 = false;
     bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_201 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_201 = true;
-    }
-    bool _e10 = local_201;
-    if (!(_e10)) {
-        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_202 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_202 = true;
     }
-    bool _e18 = local_202;
+    bool _e10 = local_202;
+    if (!(_e10)) {
+        local_203 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_203 = true;
+    }
+    bool _e18 = local_203;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8283,14 +8364,14 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_203 = false;
+    bool local_204 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_203 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_204 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_203 = true;
+        local_204 = true;
     }
-    bool _e11 = local_203;
+    bool _e11 = local_204;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -8299,17 +8380,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_5) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_204 = false;
+    bool local_205 = false;
     AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_7 = n_5.scene;
     bool _e7 = airlight_vec_finite(p_7.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_7.dir);
-        local_204 = _e11;
+        local_205 = _e11;
     } else {
-        local_204 = false;
+        local_205 = false;
     }
-    bool _e13 = local_204;
+    bool _e13 = local_205;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -8333,21 +8414,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
-    bool local_205 = false;
     bool local_206 = false;
+    bool local_207 = false;
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_205 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_205 = true;
-    }
-    bool _e10 = local_205;
-    if (!(_e10)) {
-        local_206 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_206 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_206 = true;
     }
-    bool _e18 = local_206;
+    bool _e10 = local_206;
+    if (!(_e10)) {
+        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_207 = true;
+    }
+    bool _e18 = local_207;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8356,21 +8437,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
-    bool local_207 = false;
     bool local_208 = false;
+    bool local_209 = false;
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_207 = true;
-    }
-    bool _e10 = local_207;
-    if (!(_e10)) {
-        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_208 = true;
     }
-    bool _e18 = local_208;
+    bool _e10 = local_208;
+    if (!(_e10)) {
+        local_209 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_209 = true;
+    }
+    bool _e18 = local_209;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8398,9 +8479,9 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
     float k_10 = 0.0;
     float gauss_2 = 0.0;
     uint j_15 = 0u;
-    bool local_209 = false;
-    float f = 0.0;
     bool local_210 = false;
+    float f = 0.0;
+    bool local_211 = false;
     bool _e1 = airlight_valid(s_56);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -8434,10 +8515,10 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_27 = (0.5 * (_e42 + _e44));
+            float c_28 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_10 = (0.5 * (_e49 - _e51));
+            float hw_11 = (0.5 * (_e49 - _e51));
             k_10 = 0.0;
             gauss_2 = 0.0;
             j_15 = 0u;
@@ -8459,12 +8540,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
                     uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_15;
-                        local_209 = (_e81 < 6u);
+                        local_210 = (_e81 < 6u);
                     } else {
-                        local_209 = false;
+                        local_210 = false;
                     }
-                    bool _e85 = local_209;
-                    float w_11 = (_e85 ? (c_27 - (hw_10 * node_5.x)) : (c_27 + (hw_10 * node_5.x)));
+                    bool _e85 = local_210;
+                    float w_11 = (_e85 ? (c_28 - (hw_11 * node_5.x)) : (c_28 + (hw_11 * node_5.x)));
                     AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
@@ -8473,11 +8554,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
                             return _e93;
                         }
                         if ((s_56.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_210 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_211 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_210 = false;
+                            local_211 = false;
                         }
-                        bool _e106 = local_210;
+                        bool _e106 = local_211;
                         if (_e106) {
                             return _e93;
                         }
@@ -8494,7 +8575,7 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
             AirlightAdaptive _e123 = st_2;
             float _e124 = k_10;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

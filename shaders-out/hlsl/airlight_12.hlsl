@@ -222,6 +222,7 @@ static const float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 static const uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 static const float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 static const float AIRLIGHT_LOBE_REACH = 8.0;
+static const float AIRLIGHT_LOBE_TAIL = 0.25;
 static const float AIRLIGHT_BESIDE_SCALE = 0.25;
 static const float AIRLIGHT_EDGE_REACH = 0.5;
 static const float AIRLIGHT_CROSSING_REACH = 16.0;

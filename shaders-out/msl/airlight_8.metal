@@ -251,6 +251,7 @@ constant float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 constant uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 constant float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 constant float AIRLIGHT_LOBE_REACH = 8.0;
+constant float AIRLIGHT_LOBE_TAIL = 0.25;
 constant float AIRLIGHT_BESIDE_SCALE = 0.25;
 constant float AIRLIGHT_EDGE_REACH = 0.5;
 constant float AIRLIGHT_CROSSING_REACH = 16.0;

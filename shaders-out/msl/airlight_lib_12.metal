@@ -360,6 +360,7 @@ constant float AIRLIGHT_LN_LOBE_FLOOR = -20.723267;
 constant uint AIRLIGHT_AREA_RAY_PANELS = 8u;
 constant float AIRLIGHT_AREA_RAY_TOLERANCE = 0.001;
 constant float AIRLIGHT_LOBE_REACH = 8.0;
+constant float AIRLIGHT_LOBE_TAIL = 0.25;
 constant float AIRLIGHT_BESIDE_SCALE = 0.25;
 constant float AIRLIGHT_EDGE_REACH = 0.5;
 constant float AIRLIGHT_CROSSING_REACH = 16.0;
@@ -769,9 +770,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_30 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_31 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_7 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_30 * x_30) + (y_7 * y_7)) < 1.0;
+    return ((x_31 * x_31) + (y_7 * y_7)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -1256,8 +1257,8 @@ float airlight_light(
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_31 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
-            return (x_31 * x_31) * (3.0 - (2.0 * x_31));
+            float x_32 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
+            return (x_32 * x_32) * (3.0 - (2.0 * x_32));
         }
         default: {
             return 1.0;
@@ -1556,10 +1557,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_32 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_32);
+            float x_33 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_33);
             if (_e42) {
-                float _e43 = airlight_log1p(x_32);
+                float _e43 = airlight_log1p(x_33);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1708,8 +1709,8 @@ float airlight_node(
     airlight_type_9 rule,
     uint i_3
 ) {
-    float x_33 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_33) : x_33;
+    float x_34 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_34) : x_34;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1794,8 +1795,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_34 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_34 * x_34;
+            float x_35 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_35 * x_35;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2446,8 +2447,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_35 = half_5.big_h * _e13;
-    return (x_35 > 0.0) ? metal::exp(-(x_35)) : 1.0;
+    float x_36 = half_5.big_h * _e13;
+    return (x_36 > 0.0) ? metal::exp(-(x_36)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -3130,13 +3131,13 @@ AirlightPanel airlight_tail_panel(
     float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = _e937 * _e936;
-    float x_36 = metal::abs(alpha) + metal::abs(beta_1);
+    float x_37 = metal::abs(alpha) + metal::abs(beta_1);
     float _e950 = spread;
     float _e951 = l_cur;
     spread = _e950 + (_e951 * metal::abs(_e54.inner[0]));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = (((1.0 * x_36) * _e958) + (0.0 * _e960)) / 1.0;
+    next = (((1.0 * x_37) * _e958) + (0.0 * _e960)) / 1.0;
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -3146,7 +3147,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e968 + (_e969 * metal::abs(_e54.inner[1]));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = (((3.0 * x_36) * _e976) + (1.0 * _e978)) / 2.0;
+    next = (((3.0 * x_37) * _e976) + (1.0 * _e978)) / 2.0;
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -3156,7 +3157,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e986 + (_e987 * metal::abs(_e54.inner[2]));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = (((5.0 * x_36) * _e994) + (2.0 * _e996)) / 3.0;
+    next = (((5.0 * x_37) * _e994) + (2.0 * _e996)) / 3.0;
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -3166,7 +3167,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1004 + (_e1005 * metal::abs(_e54.inner[3]));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = (((7.0 * x_36) * _e1012) + (3.0 * _e1014)) / 4.0;
+    next = (((7.0 * x_37) * _e1012) + (3.0 * _e1014)) / 4.0;
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -3176,7 +3177,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1022 + (_e1023 * metal::abs(_e54.inner[4]));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = (((9.0 * x_36) * _e1030) + (4.0 * _e1032)) / 5.0;
+    next = (((9.0 * x_37) * _e1030) + (4.0 * _e1032)) / 5.0;
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -3186,7 +3187,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1040 + (_e1041 * metal::abs(_e54.inner[5]));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = (((11.0 * x_36) * _e1048) + (5.0 * _e1050)) / 6.0;
+    next = (((11.0 * x_37) * _e1048) + (5.0 * _e1050)) / 6.0;
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -3196,7 +3197,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1058 + (_e1059 * metal::abs(_e54.inner[6]));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = (((13.0 * x_36) * _e1066) + (6.0 * _e1068)) / 7.0;
+    next = (((13.0 * x_37) * _e1066) + (6.0 * _e1068)) / 7.0;
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -3206,7 +3207,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1076 + (_e1077 * metal::abs(_e54.inner[7]));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = (((15.0 * x_36) * _e1084) + (7.0 * _e1086)) / 8.0;
+    next = (((15.0 * x_37) * _e1084) + (7.0 * _e1086)) / 8.0;
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -3216,7 +3217,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1094 + (_e1095 * metal::abs(_e54.inner[8]));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = (((17.0 * x_36) * _e1102) + (8.0 * _e1104)) / 9.0;
+    next = (((17.0 * x_37) * _e1102) + (8.0 * _e1104)) / 9.0;
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -3226,7 +3227,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1112 + (_e1113 * metal::abs(_e54.inner[9]));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = (((19.0 * x_36) * _e1120) + (9.0 * _e1122)) / 10.0;
+    next = (((19.0 * x_37) * _e1120) + (9.0 * _e1122)) / 10.0;
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -3236,7 +3237,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1130 + (_e1131 * metal::abs(_e54.inner[10]));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = (((21.0 * x_36) * _e1138) + (10.0 * _e1140)) / 11.0;
+    next = (((21.0 * x_37) * _e1138) + (10.0 * _e1140)) / 11.0;
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -3246,7 +3247,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e1148 + (_e1149 * metal::abs(_e54.inner[11]));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = (((23.0 * x_36) * _e1156) + (11.0 * _e1158)) / 12.0;
+    next = (((23.0 * x_37) * _e1156) + (11.0 * _e1158)) / 12.0;
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -5451,10 +5452,10 @@ AirlightCanonical airlight_refined(
     metal::float2 _e11 = airlight_two_sum(s_21.light_position[0], -(s_21.origin[0]), key_4);
     metal::float2 _e17 = airlight_two_sum(s_21.light_position[1], -(s_21.origin[1]), key_4);
     metal::float2 _e23 = airlight_two_sum(s_21.light_position[2], -(s_21.origin[2]), key_4);
-    metal::float3 hi_6 = metal::float3(_e11.x, _e17.x, _e23.x);
-    metal::float3 lo_7 = metal::float3(_e11.y, _e17.y, _e23.y);
+    metal::float3 hi_7 = metal::float3(_e11.x, _e17.x, _e23.x);
+    metal::float3 lo_8 = metal::float3(_e11.y, _e17.y, _e23.y);
     metal::float3 dir_2 = s_21.dir;
-    bool _e33 = airlight_in_exact_range(hi_6);
+    bool _e33 = airlight_in_exact_range(hi_7);
     if (!(!(_e33))) {
         bool _e38 = airlight_in_exact_range(dir_2);
         local_128 = !(_e38);
@@ -5465,10 +5466,10 @@ AirlightCanonical airlight_refined(
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_6.y, s_21.dir[2], hi_6.z, s_21.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_6.z, s_21.dir[0], hi_6.x, s_21.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_6.x, s_21.dir[1], hi_6.y, s_21.dir[0], key_4);
-    metal::float3 w_6 = metal::float3(_e46 + ((lo_7.y * s_21.dir[2]) - (lo_7.z * s_21.dir[1])), _e59 + ((lo_7.z * s_21.dir[0]) - (lo_7.x * s_21.dir[2])), _e72 + ((lo_7.x * s_21.dir[1]) - (lo_7.y * s_21.dir[0])));
+    float _e46 = airlight_diff_of_products(hi_7.y, s_21.dir[2], hi_7.z, s_21.dir[1], key_4);
+    float _e59 = airlight_diff_of_products(hi_7.z, s_21.dir[0], hi_7.x, s_21.dir[2], key_4);
+    float _e72 = airlight_diff_of_products(hi_7.x, s_21.dir[1], hi_7.y, s_21.dir[0], key_4);
+    metal::float3 w_6 = metal::float3(_e46 + ((lo_8.y * s_21.dir[2]) - (lo_8.z * s_21.dir[1])), _e59 + ((lo_8.z * s_21.dir[0]) - (lo_8.x * s_21.dir[2])), _e72 + ((lo_8.x * s_21.dir[1]) - (lo_8.y * s_21.dir[0])));
     bool _e82 = airlight_vec_finite(w_6);
     if (!(_e82)) {
         return plain;
@@ -6089,12 +6090,23 @@ metal::float2 airlight_cos_sin_half_turn(
     return metal::float2(-(sin_r), cos_r);
 }
 
-float airlight_acos(
+metal::float2 airlight_cos_sin_to_pi(
     float x_18
 ) {
-    float a_42 = metal::abs(x_18);
+    if (x_18 <= 1.5707964) {
+        metal::float2 _e3 = airlight_cos_sin(x_18);
+        return _e3;
+    }
+    metal::float2 _e6 = airlight_cos_sin(AIRLIGHT_PI - x_18);
+    return metal::float2(-(_e6.x), _e6.y);
+}
+
+float airlight_acos(
+    float x_19
+) {
+    float a_42 = metal::abs(x_19);
     float _e8 = airlight_atan(metal::sqrt((1.0 - a_42) / (1.0 + a_42)));
-    return (x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
+    return (x_19 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
@@ -6203,22 +6215,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_25.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_37 = metal::dot(_e111, _e112);
+        float x_38 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
         float y_12 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_37 * x_37) + (y_12 * y_12));
+        g_22.sin_r = metal::sqrt((x_38 * x_38) + (y_12 * y_12));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_37, metal::abs(y_12));
+            float _e140 = airlight_angle(x_38, metal::abs(y_12));
             float phi_r = ((y_12 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_37 / _e145, -(y_12) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_38 / _e145, -(y_12) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -6302,7 +6314,7 @@ AirlightOuter airlight_surface(
             cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_16;
         }
     }
-    float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2);
+    float hi_8 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2);
     g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first_2 : 0.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
@@ -6327,7 +6339,7 @@ AirlightOuter airlight_surface(
             if (_e281 > _e285) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2.inner[metal::min(unsigned(_e289), 10u)];
-                local_136 = _e291 < hi_7;
+                local_136 = _e291 < hi_8;
             } else {
                 local_136 = false;
             }
@@ -6343,7 +6355,7 @@ AirlightOuter airlight_surface(
         }
     }
     uint _e308 = k_5;
-    g_22.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_7;
+    g_22.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_8;
     uint _e313 = k_5;
     g_22.panels = _e313 + 1u;
     uint2 loop_bound_27 = uint2(4294967295u);
@@ -6430,10 +6442,10 @@ AirlightOuter airlight_surface(
 
 float airlight_lobe_at(
     AirlightLobe q_1,
-    float x_19
+    float x_20
 ) {
     bool local_142 = {};
-    metal::float2 _e4 = airlight_cos_sin(0.5 * x_19);
+    metal::float2 _e4 = airlight_cos_sin(0.5 * x_20);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
     float sin_x = (2.0 * _e4.y) * _e4.x;
@@ -6470,12 +6482,12 @@ float airlight_lobe_node(
 }
 
 float airlight_arc_end(
-    float x_20,
+    float x_21,
     float cut
 ) {
     float end_1 = {};
     bool local_143 = {};
-    end_1 = x_20;
+    end_1 = x_21;
     float _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         float _e6 = end_1;
@@ -6895,7 +6907,7 @@ AirlightCanonical airlight_no_canonical(
 AirlightNode airlight_outer_node(
     AirlightScene s_27,
     AirlightOuter g_25,
-    float x_21
+    float x_22
 ) {
     AirlightScene p = {};
     float gamma_1 = {};
@@ -6914,8 +6926,8 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_44 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
-        float t_9 = x_21 - static_cast<float>(i_44);
+        uint i_44 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_22), 0.0)), g_25.panels - 1u);
+        float t_9 = x_22 - static_cast<float>(i_44);
         float a_44 = g_25.gamma.inner[metal::min(unsigned(i_44), 12u)];
         float b_21 = g_25.gamma.inner[metal::min(unsigned(i_44 + 1u), 12u)];
         float w_8 = b_21 - a_44;
@@ -7008,10 +7020,10 @@ AirlightNode airlight_outer_node(
         return AirlightNode {_e206, (_e207 * _e119.y) * _e210, exact, true};
     }
     if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_21;
+        at_1 = x_22;
         if (g_25.scale > 0.0) {
-            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_21));
-            ds = g_25.scale * metal::cosh(x_21);
+            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_22));
+            ds = g_25.scale * metal::cosh(x_22);
         }
         float _e233 = at_1;
         p.light_position = g_25.a + (_e233 * g_25.e);
@@ -7391,9 +7403,9 @@ metal::float2 airlight_outline_distances(
 AirlightOutline airlight_outline_at(
     AirlightScene s_35,
     AirlightArea a_19,
-    metal::float3 x_22
+    metal::float3 x_23
 ) {
-    metal::float3 rel = x_22 - a_19.c;
+    metal::float3 rel = x_23 - a_19.c;
     metal::float2 foot = metal::float2(metal::dot(rel, a_19.a1_), metal::dot(rel, a_19.a2_));
     metal::float2 zero = metal::float2(0.0);
     if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
@@ -7984,11 +7996,11 @@ metal::float2 airlight_outline_chord(
         float t_11 = -(b_23) - (((as_type<uint>(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3);
         float r1_2 = t_11 / a_47;
         float r2_4 = k_12 / t_11;
-        float hi_8 = metal::max(r1_2, r2_4);
-        if (!((hi_8 > 0.0))) {
+        float hi_9 = metal::max(r1_2, r2_4);
+        if (!((hi_9 > 0.0))) {
             return metal::float2(0.0);
         }
-        return metal::float2(metal::max(metal::min(r1_2, r2_4), 0.0), hi_8);
+        return metal::float2(metal::max(metal::min(r1_2, r2_4), 0.0), hi_9);
     }
     metal::float2 _e70 = chord_1;
     metal::float2 _e75 = airlight_clip(_e70, o_4.corners.inner[0], o_4.corners.inner[1], q_8, e_6);
@@ -8020,7 +8032,7 @@ metal::float3 airlight_graded_from_node(
     float g_26
 ) {
     metal::float2 _e3 = airlight_cos_sin_half_turn(g_26);
-    metal::float2 _e9 = airlight_cos_sin_half_turn(start_2 + ((graded_2 * _e3.y) / _e3.x));
+    metal::float2 _e9 = airlight_cos_sin_to_pi(start_2 + ((graded_2 * _e3.y) / _e3.x));
     return metal::float3(_e9, graded_2 / (_e3.x * _e3.x));
 }
 
@@ -8128,15 +8140,15 @@ float airlight_lobe_azimuth(
 }
 
 float airlight_wrap_turn(
-    float x_23
+    float x_24
 ) {
-    return x_23 - (6.2831855 * metal::rint(x_23 / 6.2831855));
+    return x_24 - (6.2831855 * metal::rint(x_24 / 6.2831855));
 }
 
 metal::float2 airlight_cos_sin_turns(
-    float x_24
+    float x_25
 ) {
-    float _e1 = airlight_wrap_turn(x_24);
+    float _e1 = airlight_wrap_turn(x_25);
     metal::float2 _e3 = airlight_cos_sin_half_turn(metal::abs(_e1));
     return metal::float2(_e3.x, (_e1 < 0.0) ? -(_e3.y) : _e3.y);
 }
@@ -8167,9 +8179,9 @@ metal::float4 airlight_edge_node(
 }
 
 metal::float4 airlight_sort4_(
-    metal::float4 x_25
+    metal::float4 x_26
 ) {
-    metal::float4 a_48 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
+    metal::float4 a_48 = metal::float4(metal::min(x_26.x, x_26.y), metal::max(x_26.x, x_26.y), metal::min(x_26.z, x_26.w), metal::max(x_26.z, x_26.w));
     metal::float4 b_24 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
     return metal::float4(b_24.x, metal::min(b_24.y, b_24.z), metal::max(b_24.y, b_24.z), b_24.w);
 }
@@ -8276,18 +8288,18 @@ metal::float3 airlight_mercator_node(
     uint i_33
 ) {
     float _e5 = airlight_mercator_cut(airlight_naga_div(i_33, 12u));
-    float lo_8 = metal::max(ua, _e5);
+    float lo_9 = metal::max(ua, _e5);
     float _e11 = airlight_mercator_cut(airlight_naga_div(i_33, 12u) + 1u);
-    float hi_9 = metal::min(ub, _e11);
-    if (!((lo_8 < hi_9))) {
+    float hi_10 = metal::min(ub, _e11);
+    if (!((lo_9 < hi_10))) {
         return metal::float3(0.0);
     }
     metal::float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
-    float hw_5 = 0.5 * (hi_9 - lo_8);
-    float x_38 = (0.5 * (lo_8 + hi_9)) + (hw_5 * _e19.x);
-    float e_18 = metal::exp(-(metal::abs(x_38)));
+    float hw_5 = 0.5 * (hi_10 - lo_9);
+    float x_39 = (0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x);
+    float e_18 = metal::exp(-(metal::abs(x_39)));
     float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
-    return metal::float3(sech, (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)), (_e19.y * hw_5) * sech);
+    return metal::float3(sech, (metal::sign(x_39) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)), (_e19.y * hw_5) * sech);
 }
 
 float airlight_mercator_wedge(
@@ -8724,7 +8736,7 @@ float airlight_flat_about_lobe(
 float airlight_disc(
     AirlightScene s_43,
     AirlightArea a_26,
-    metal::float3 x_26
+    metal::float3 x_27
 ) {
     bool local_188 = {};
     bool local_189 = {};
@@ -8734,7 +8746,7 @@ float airlight_disc(
     uint i_40 = 0u;
     metal::float2 e_9 = {};
     float r_max_1 = {};
-    metal::float3 rel_1 = x_26 - a_26.c;
+    metal::float3 rel_1 = x_27 - a_26.c;
     float z_21 = metal::dot(rel_1, a_26.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
@@ -8817,14 +8829,14 @@ float airlight_disc(
 float airlight_parallelogram(
     AirlightScene s_44,
     AirlightArea a_27,
-    metal::float3 x_27
+    metal::float3 x_28
 ) {
     metal::float2 q_9 = {};
     bool local_190 = {};
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = {};
-    metal::float3 rel_2 = x_27 - a_27.c;
+    metal::float3 rel_2 = x_28 - a_27.c;
     float z_22 = metal::dot(rel_2, a_27.n);
     if (!((z_22 > 0.0))) {
         return 0.0;
@@ -9198,8 +9210,9 @@ float airlight_sphere_about_lobe(
     bool local_192 = {};
     float mid = {};
     bool local_193 = {};
-    float start_5 = {};
-    float to_1 = {};
+    float lo_7 = {};
+    float hi_6 = {};
+    bool local_194 = {};
     float around = {};
     metal::float3 p_6 = sign_2 * a_29.d;
     metal::float3 _e8 = airlight_basis_e1_(p_6);
@@ -9231,8 +9244,8 @@ float airlight_sphere_about_lobe(
         if (metal::all(loop_bound_52 == uint2(0u))) { break; }
         loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
         if (!loop_init_51) {
-            uint _e398 = i_43;
-            i_43 = _e398 + 1u;
+            uint _e569 = i_43;
+            i_43 = _e569 + 1u;
         }
         loop_init_51 = false;
         uint _e79 = i_43;
@@ -9319,130 +9332,200 @@ float airlight_sphere_about_lobe(
             float _e182 = big_b_1;
             float _e183 = big_b_1;
             float _e190 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e182 * _e183)), 1.0));
-            start_5 = 0.0;
+            lo_7 = 0.0;
             if (!(inside_3)) {
                 float _e194 = mid;
-                start_5 = metal::max(_e194 - _e190, 0.0);
+                lo_7 = metal::max(_e194 - _e190, 0.0);
             }
             float _e198 = mid;
-            to_1 = _e198 + _e190;
+            hi_6 = _e198 + _e190;
             if (beside) {
-                float _e201 = to_1;
-                to_1 = metal::min(_e201, AIRLIGHT_PI);
+                float _e201 = hi_6;
+                hi_6 = metal::min(_e201, AIRLIGHT_PI);
             }
-            float _e204 = start_5;
-            float _e205 = to_1;
-            metal::float2 _e206 = airlight_graded_from(scale_3, _e204, _e205);
-            float graded_10 = _e206.x;
-            float c_24 = 0.5 * _e206.y;
-            float hw_8 = 0.5 * _e206.y;
+            float _e204 = lo_7;
+            float start_5 = _e204 + AIRLIGHT_LOBE_TAIL;
+            float _e207 = hi_6;
+            if (_e207 > start_5) {
+                float _e211 = hi_6;
+                float _e212 = lo_7;
+                float _e215 = lo_7;
+                local_194 = (_e211 - _e212) > (AIRLIGHT_LOBE_REACH * metal::max(scale_3, _e215));
+            } else {
+                local_194 = false;
+            }
+            bool cut_3 = local_194;
             around = 0.0;
-            float _e216 = around;
-            float _e219 = big_b_1;
-            float _e220 = start_5;
-            float _e224 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e219, _e220, graded_10, c_24 - (0.09501251 * hw_8));
-            around = _e216 + ((0.1894506 * hw_8) * _e224);
-            float _e227 = around;
-            float _e230 = big_b_1;
-            float _e231 = start_5;
-            float _e235 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e230, _e231, graded_10, c_24 + (0.09501251 * hw_8));
-            around = _e227 + ((0.1894506 * hw_8) * _e235);
-            float _e238 = around;
-            float _e241 = big_b_1;
-            float _e242 = start_5;
-            float _e246 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e241, _e242, graded_10, c_24 - (0.28160354 * hw_8));
-            around = _e238 + ((0.18260342 * hw_8) * _e246);
-            float _e249 = around;
-            float _e252 = big_b_1;
-            float _e253 = start_5;
-            float _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, c_24 + (0.28160354 * hw_8));
-            around = _e249 + ((0.18260342 * hw_8) * _e257);
-            float _e260 = around;
-            float _e263 = big_b_1;
-            float _e264 = start_5;
-            float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, c_24 - (0.45801678 * hw_8));
-            around = _e260 + ((0.16915652 * hw_8) * _e268);
-            float _e271 = around;
-            float _e274 = big_b_1;
-            float _e275 = start_5;
-            float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, c_24 + (0.45801678 * hw_8));
-            around = _e271 + ((0.16915652 * hw_8) * _e279);
-            float _e282 = around;
-            float _e285 = big_b_1;
-            float _e286 = start_5;
-            float _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, c_24 - (0.61787623 * hw_8));
-            around = _e282 + ((0.14959599 * hw_8) * _e290);
-            float _e293 = around;
-            float _e296 = big_b_1;
-            float _e297 = start_5;
-            float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, c_24 + (0.61787623 * hw_8));
-            around = _e293 + ((0.14959599 * hw_8) * _e301);
-            float _e304 = around;
-            float _e307 = big_b_1;
-            float _e308 = start_5;
-            float _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, c_24 - (0.7554044 * hw_8));
-            around = _e304 + ((0.12462897 * hw_8) * _e312);
-            float _e315 = around;
-            float _e318 = big_b_1;
-            float _e319 = start_5;
-            float _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, c_24 + (0.7554044 * hw_8));
-            around = _e315 + ((0.12462897 * hw_8) * _e323);
-            float _e326 = around;
-            float _e329 = big_b_1;
-            float _e330 = start_5;
-            float _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, c_24 - (0.8656312 * hw_8));
-            around = _e326 + ((0.09515851 * hw_8) * _e334);
-            float _e337 = around;
-            float _e340 = big_b_1;
-            float _e341 = start_5;
-            float _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, c_24 + (0.8656312 * hw_8));
-            around = _e337 + ((0.09515851 * hw_8) * _e345);
-            float _e348 = around;
-            float _e351 = big_b_1;
-            float _e352 = start_5;
-            float _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, c_24 - (0.944575 * hw_8));
-            around = _e348 + ((0.062253524 * hw_8) * _e356);
-            float _e359 = around;
-            float _e362 = big_b_1;
-            float _e363 = start_5;
-            float _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, c_24 + (0.944575 * hw_8));
-            around = _e359 + ((0.062253524 * hw_8) * _e367);
-            float _e370 = around;
-            float _e373 = big_b_1;
-            float _e374 = start_5;
-            float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, c_24 - (0.9894009 * hw_8));
-            around = _e370 + ((0.02715246 * hw_8) * _e378);
-            float _e381 = around;
-            float _e384 = big_b_1;
-            float _e385 = start_5;
-            float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, c_24 + (0.9894009 * hw_8));
-            around = _e381 + ((0.02715246 * hw_8) * _e389);
-            float _e392 = sum_14;
-            float _e393 = wpsi;
-            float _e394 = around;
-            sum_14 = _e392 + (_e393 * _e394);
+            {
+                float start_6 = lo_7;
+                float _e224 = hi_6;
+                float to_1 = cut_3 ? start_5 : _e224;
+                metal::float2 _e226 = airlight_graded_from(scale_3, start_6, to_1);
+                float graded_10 = _e226.x;
+                float c_24 = 0.5 * _e226.y;
+                float hw_8 = 0.5 * _e226.y;
+                float _e234 = around;
+                float _e237 = big_b_1;
+                float _e241 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e237, start_6, graded_10, c_24 - (0.09501251 * hw_8));
+                around = _e234 + ((0.1894506 * hw_8) * _e241);
+                float _e244 = around;
+                float _e247 = big_b_1;
+                float _e251 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e247, start_6, graded_10, c_24 + (0.09501251 * hw_8));
+                around = _e244 + ((0.1894506 * hw_8) * _e251);
+                float _e254 = around;
+                float _e257 = big_b_1;
+                float _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e257, start_6, graded_10, c_24 - (0.28160354 * hw_8));
+                around = _e254 + ((0.18260342 * hw_8) * _e261);
+                float _e264 = around;
+                float _e267 = big_b_1;
+                float _e271 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, start_6, graded_10, c_24 + (0.28160354 * hw_8));
+                around = _e264 + ((0.18260342 * hw_8) * _e271);
+                float _e274 = around;
+                float _e277 = big_b_1;
+                float _e281 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e277, start_6, graded_10, c_24 - (0.45801678 * hw_8));
+                around = _e274 + ((0.16915652 * hw_8) * _e281);
+                float _e284 = around;
+                float _e287 = big_b_1;
+                float _e291 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e287, start_6, graded_10, c_24 + (0.45801678 * hw_8));
+                around = _e284 + ((0.16915652 * hw_8) * _e291);
+                float _e294 = around;
+                float _e297 = big_b_1;
+                float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e297, start_6, graded_10, c_24 - (0.61787623 * hw_8));
+                around = _e294 + ((0.14959599 * hw_8) * _e301);
+                float _e304 = around;
+                float _e307 = big_b_1;
+                float _e311 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, start_6, graded_10, c_24 + (0.61787623 * hw_8));
+                around = _e304 + ((0.14959599 * hw_8) * _e311);
+                float _e314 = around;
+                float _e317 = big_b_1;
+                float _e321 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e317, start_6, graded_10, c_24 - (0.7554044 * hw_8));
+                around = _e314 + ((0.12462897 * hw_8) * _e321);
+                float _e324 = around;
+                float _e327 = big_b_1;
+                float _e331 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e327, start_6, graded_10, c_24 + (0.7554044 * hw_8));
+                around = _e324 + ((0.12462897 * hw_8) * _e331);
+                float _e334 = around;
+                float _e337 = big_b_1;
+                float _e341 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e337, start_6, graded_10, c_24 - (0.8656312 * hw_8));
+                around = _e334 + ((0.09515851 * hw_8) * _e341);
+                float _e344 = around;
+                float _e347 = big_b_1;
+                float _e351 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e347, start_6, graded_10, c_24 + (0.8656312 * hw_8));
+                around = _e344 + ((0.09515851 * hw_8) * _e351);
+                float _e354 = around;
+                float _e357 = big_b_1;
+                float _e361 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e357, start_6, graded_10, c_24 - (0.944575 * hw_8));
+                around = _e354 + ((0.062253524 * hw_8) * _e361);
+                float _e364 = around;
+                float _e367 = big_b_1;
+                float _e371 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e367, start_6, graded_10, c_24 + (0.944575 * hw_8));
+                around = _e364 + ((0.062253524 * hw_8) * _e371);
+                float _e374 = around;
+                float _e377 = big_b_1;
+                float _e381 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e377, start_6, graded_10, c_24 - (0.9894009 * hw_8));
+                around = _e374 + ((0.02715246 * hw_8) * _e381);
+                float _e384 = around;
+                float _e387 = big_b_1;
+                float _e391 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e387, start_6, graded_10, c_24 + (0.9894009 * hw_8));
+                around = _e384 + ((0.02715246 * hw_8) * _e391);
+            }
+            if (cut_3) {
+                float to_2 = hi_6;
+                metal::float2 _e395 = airlight_graded_from(scale_3, start_5, to_2);
+                float graded_11 = _e395.x;
+                float c_25 = 0.5 * _e395.y;
+                float hw_9 = 0.5 * _e395.y;
+                float _e403 = around;
+                float _e406 = big_b_1;
+                float _e410 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, start_5, graded_11, c_25 - (0.09501251 * hw_9));
+                around = _e403 + ((0.1894506 * hw_9) * _e410);
+                float _e413 = around;
+                float _e416 = big_b_1;
+                float _e420 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e416, start_5, graded_11, c_25 + (0.09501251 * hw_9));
+                around = _e413 + ((0.1894506 * hw_9) * _e420);
+                float _e423 = around;
+                float _e426 = big_b_1;
+                float _e430 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e426, start_5, graded_11, c_25 - (0.28160354 * hw_9));
+                around = _e423 + ((0.18260342 * hw_9) * _e430);
+                float _e433 = around;
+                float _e436 = big_b_1;
+                float _e440 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e436, start_5, graded_11, c_25 + (0.28160354 * hw_9));
+                around = _e433 + ((0.18260342 * hw_9) * _e440);
+                float _e443 = around;
+                float _e446 = big_b_1;
+                float _e450 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e446, start_5, graded_11, c_25 - (0.45801678 * hw_9));
+                around = _e443 + ((0.16915652 * hw_9) * _e450);
+                float _e453 = around;
+                float _e456 = big_b_1;
+                float _e460 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e456, start_5, graded_11, c_25 + (0.45801678 * hw_9));
+                around = _e453 + ((0.16915652 * hw_9) * _e460);
+                float _e463 = around;
+                float _e466 = big_b_1;
+                float _e470 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e466, start_5, graded_11, c_25 - (0.61787623 * hw_9));
+                around = _e463 + ((0.14959599 * hw_9) * _e470);
+                float _e473 = around;
+                float _e476 = big_b_1;
+                float _e480 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e476, start_5, graded_11, c_25 + (0.61787623 * hw_9));
+                around = _e473 + ((0.14959599 * hw_9) * _e480);
+                float _e483 = around;
+                float _e486 = big_b_1;
+                float _e490 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e486, start_5, graded_11, c_25 - (0.7554044 * hw_9));
+                around = _e483 + ((0.12462897 * hw_9) * _e490);
+                float _e493 = around;
+                float _e496 = big_b_1;
+                float _e500 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e496, start_5, graded_11, c_25 + (0.7554044 * hw_9));
+                around = _e493 + ((0.12462897 * hw_9) * _e500);
+                float _e503 = around;
+                float _e506 = big_b_1;
+                float _e510 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e506, start_5, graded_11, c_25 - (0.8656312 * hw_9));
+                around = _e503 + ((0.09515851 * hw_9) * _e510);
+                float _e513 = around;
+                float _e516 = big_b_1;
+                float _e520 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e516, start_5, graded_11, c_25 + (0.8656312 * hw_9));
+                around = _e513 + ((0.09515851 * hw_9) * _e520);
+                float _e523 = around;
+                float _e526 = big_b_1;
+                float _e530 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e526, start_5, graded_11, c_25 - (0.944575 * hw_9));
+                around = _e523 + ((0.062253524 * hw_9) * _e530);
+                float _e533 = around;
+                float _e536 = big_b_1;
+                float _e540 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e536, start_5, graded_11, c_25 + (0.944575 * hw_9));
+                around = _e533 + ((0.062253524 * hw_9) * _e540);
+                float _e543 = around;
+                float _e546 = big_b_1;
+                float _e550 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e546, start_5, graded_11, c_25 - (0.9894009 * hw_9));
+                around = _e543 + ((0.02715246 * hw_9) * _e550);
+                float _e553 = around;
+                float _e556 = big_b_1;
+                float _e560 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e556, start_5, graded_11, c_25 + (0.9894009 * hw_9));
+                around = _e553 + ((0.02715246 * hw_9) * _e560);
+            }
+            float _e563 = sum_14;
+            float _e564 = wpsi;
+            float _e565 = around;
+            sum_14 = _e563 + (_e564 * _e565);
         }
     }
-    float _e400 = sum_14;
-    return _e400;
+    float _e571 = sum_14;
+    return _e571;
 }
 
 float airlight_sphere(
     AirlightScene s_49,
     AirlightArea a_30,
-    metal::float3 x_28
+    metal::float3 x_29
 ) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_194 = {};
     bool local_195 = {};
     bool local_196 = {};
     bool local_197 = {};
     bool local_198 = {};
     bool local_199 = {};
-    metal::float3 v_12 = a_30.c - x_28;
+    bool local_200 = {};
+    metal::float3 v_12 = a_30.c - x_29;
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
         return 0.0;
@@ -9456,8 +9539,8 @@ float airlight_sphere(
         if (metal::all(loop_bound_53 == uint2(0u))) { break; }
         loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
         if (!loop_init_52) {
-            uint _e101 = j_13;
-            j_13 = _e101 + 1u;
+            uint _e102 = j_13;
+            j_13 = _e102 + 1u;
         }
         loop_init_52 = false;
         uint _e32 = j_13;
@@ -9468,80 +9551,80 @@ float airlight_sphere(
         {
             uint _e39 = j_13;
             metal::float2 lobe_6 = (_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
-            float c_25 = metal::dot(cap_4.a, lobe_6.x * a_30.d);
+            float c_26 = metal::dot(cap_4.a, lobe_6.x * a_30.d);
             float _e48 = chosen;
             if (_e48 == 0.0) {
-                local_194 = lobe_6.y > 0.0;
-            } else {
-                local_194 = false;
-            }
-            bool _e57 = local_194;
-            if (_e57) {
-                local_195 = lobe_6.y < (_e23 + _e23);
+                local_195 = lobe_6.y > 0.0;
             } else {
                 local_195 = false;
             }
-            bool _e64 = local_195;
-            if (_e64) {
-                if (!(!((c_25 < -(cap_4.cos_a))))) {
-                    local_197 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
-                } else {
-                    local_197 = true;
-                }
-                bool _e78 = local_197;
-                local_196 = _e78;
+            bool _e57 = local_195;
+            if (_e57) {
+                local_196 = lobe_6.y < (_e23 + _e23);
             } else {
                 local_196 = false;
             }
-            bool _e80 = local_196;
-            if (_e80) {
-                if (!((c_25 > cap_4.cos_a))) {
-                    float _e88 = airlight_acos(c_25);
-                    local_199 = (_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y);
+            bool _e64 = local_196;
+            if (_e64) {
+                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                    local_198 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
                 } else {
-                    local_199 = true;
+                    local_198 = true;
                 }
-                bool _e95 = local_199;
-                local_198 = _e95;
+                bool _e78 = local_198;
+                local_197 = _e78;
             } else {
-                local_198 = false;
+                local_197 = false;
             }
-            bool _e97 = local_198;
-            if (_e97) {
+            bool _e80 = local_197;
+            if (_e80) {
+                if (!((c_26 > cap_4.cos_a))) {
+                    float _e88 = airlight_acos(c_26);
+                    local_200 = (_e88 - _e23) < metal::max(AIRLIGHT_LOBE_REACH * lobe_6.y, _e23);
+                } else {
+                    local_200 = true;
+                }
+                bool _e96 = local_200;
+                local_199 = _e96;
+            } else {
+                local_199 = false;
+            }
+            bool _e98 = local_199;
+            if (_e98) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_25;
+                cos_p_2 = c_26;
             }
         }
     }
-    float _e103 = chosen;
-    if (_e103 > 0.0) {
-        float _e106 = sign_3;
-        float _e107 = cos_p_2;
-        float _e108 = chosen;
-        float _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
-        return _e109;
+    float _e104 = chosen;
+    if (_e104 > 0.0) {
+        float _e107 = sign_3;
+        float _e108 = cos_p_2;
+        float _e109 = chosen;
+        float _e110 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e107, _e108, _e109);
+        return _e110;
     }
-    float _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
-    return _e110;
+    float _e111 = airlight_sphere_cap(s_49, a_30, cap_4);
+    return _e111;
 }
 
 float airlight_emitter_radiance(
     AirlightScene s_50,
     AirlightArea a_31,
-    metal::float3 x_29
+    metal::float3 x_30
 ) {
     switch(s_50.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_50, a_31, x_29);
+            float _e4 = airlight_disc(s_50, a_31, x_30);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_50, a_31, x_29);
+            float _e5 = airlight_parallelogram(s_50, a_31, x_30);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_50, a_31, x_29);
+            float _e6 = airlight_sphere(s_50, a_31, x_30);
             return _e6;
         }
     }
@@ -9568,7 +9651,7 @@ AirlightResult airlight_area_light(
     float k_9 = {};
     float gauss_1 = {};
     uint j_14 = {};
-    bool local_200 = {};
+    bool local_201 = {};
     AirlightArea _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
@@ -9596,10 +9679,10 @@ AirlightResult airlight_area_light(
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_26 = 0.5 * (_e27 + _e29);
+            float c_27 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_9 = 0.5 * (_e34 - _e36);
+            float hw_10 = 0.5 * (_e34 - _e36);
             k_9 = 0.0;
             gauss_1 = 0.0;
             j_14 = 0u;
@@ -9624,13 +9707,13 @@ AirlightResult airlight_area_light(
                     uint _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         uint _e66 = j_14;
-                        local_200 = _e66 < 14u;
+                        local_201 = _e66 < 14u;
                     } else {
-                        local_200 = false;
+                        local_201 = false;
                     }
-                    bool _e70 = local_200;
-                    float x_39 = _e70 ? (c_26 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_26 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_52, _e1, x_39);
+                    bool _e70 = local_201;
+                    float x_40 = _e70 ? (c_27 - (hw_10 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_10 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_52, _e1, x_40);
                     float _e73 = k_9;
                     k_9 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -9640,7 +9723,7 @@ AirlightResult airlight_area_light(
             AirlightAdaptive _e84 = st_1;
             float _e85 = k_9;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_9, _e87 * hw_9, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, _e85 * hw_10, _e87 * hw_10, _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -9662,21 +9745,21 @@ AirlightResult airlight_area_light(
 AirlightResult airlight_in_scatter_area(
     AirlightScene s_53
 ) {
-    bool local_201 = {};
     bool local_202 = {};
+    bool local_203 = {};
     bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_201 = s_53.light_shape < AIRLIGHT_SHAPE_DISC;
-    } else {
-        local_201 = true;
-    }
-    bool _e10 = local_201;
-    if (!(_e10)) {
-        local_202 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_202 = s_53.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
         local_202 = true;
     }
-    bool _e18 = local_202;
+    bool _e10 = local_202;
+    if (!(_e10)) {
+        local_203 = s_53.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_203 = true;
+    }
+    bool _e18 = local_203;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9687,14 +9770,14 @@ AirlightResult airlight_in_scatter_area(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_203 = {};
+    bool local_204 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_203 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_204 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_203 = true;
+        local_204 = true;
     }
-    bool _e11 = local_203;
+    bool _e11 = local_204;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9705,17 +9788,17 @@ AirlightResult airlight_node_integral(
     AirlightNode n_5
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_204 = {};
+    bool local_205 = {};
     AirlightCanonical g_29 = {};
     AirlightScene p_7 = n_5.scene;
     bool _e7 = airlight_vec_finite(n_5.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_5.scene.dir);
-        local_204 = _e11;
+        local_205 = _e11;
     } else {
-        local_204 = false;
+        local_205 = false;
     }
-    bool _e13 = local_204;
+    bool _e13 = local_205;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -9743,21 +9826,21 @@ AirlightResult airlight_point_integral(
 AirlightResult airlight_in_scatter_point(
     AirlightScene s_54
 ) {
-    bool local_205 = {};
     bool local_206 = {};
+    bool local_207 = {};
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_205 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_205 = true;
-    }
-    bool _e10 = local_205;
-    if (!(_e10)) {
-        local_206 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_206 = s_54.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_206 = true;
     }
-    bool _e18 = local_206;
+    bool _e10 = local_206;
+    if (!(_e10)) {
+        local_207 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_207 = true;
+    }
+    bool _e18 = local_207;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9768,21 +9851,21 @@ AirlightResult airlight_in_scatter_point(
 AirlightResult airlight_in_scatter_route(
     AirlightScene s_55
 ) {
-    bool local_207 = {};
     bool local_208 = {};
+    bool local_209 = {};
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_207 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
-    } else {
-        local_207 = true;
-    }
-    bool _e10 = local_207;
-    if (!(_e10)) {
-        local_208 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_208 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
         local_208 = true;
     }
-    bool _e18 = local_208;
+    bool _e10 = local_208;
+    if (!(_e10)) {
+        local_209 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
+    } else {
+        local_209 = true;
+    }
+    bool _e18 = local_209;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9812,9 +9895,9 @@ AirlightResult airlight_in_scatter(
     float k_10 = {};
     float gauss_2 = {};
     uint j_15 = {};
-    bool local_209 = {};
-    float f = {};
     bool local_210 = {};
+    float f = {};
+    bool local_211 = {};
     bool _e1 = airlight_valid(s_56);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -9851,10 +9934,10 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_27 = 0.5 * (_e42 + _e44);
+            float c_28 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_10 = 0.5 * (_e49 - _e51);
+            float hw_11 = 0.5 * (_e49 - _e51);
             k_10 = 0.0;
             gauss_2 = 0.0;
             j_15 = 0u;
@@ -9879,12 +9962,12 @@ AirlightResult airlight_in_scatter(
                     uint _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_15;
-                        local_209 = _e81 < 6u;
+                        local_210 = _e81 < 6u;
                     } else {
-                        local_209 = false;
+                        local_210 = false;
                     }
-                    bool _e85 = local_209;
-                    float w_11 = _e85 ? (c_27 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_27 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    bool _e85 = local_210;
+                    float w_11 = _e85 ? (c_28 - (hw_11 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_11 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
                     AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
@@ -9893,11 +9976,11 @@ AirlightResult airlight_in_scatter(
                             return _e93;
                         }
                         if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_210 = s_56.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_211 = s_56.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_210 = false;
+                            local_211 = false;
                         }
-                        bool _e106 = local_210;
+                        bool _e106 = local_211;
                         if (_e106) {
                             return _e93;
                         }
@@ -9914,7 +9997,7 @@ AirlightResult airlight_in_scatter(
             AirlightAdaptive _e123 = st_2;
             float _e124 = k_10;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_10, _e126 * hw_10, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, _e124 * hw_11, _e126 * hw_11, _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

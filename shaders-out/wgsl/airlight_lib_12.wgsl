@@ -300,6 +300,7 @@ const AIRLIGHT_LN_LOBE_FLOOR: f32 = -20.723267f;
 const AIRLIGHT_AREA_RAY_PANELS: u32 = 8u;
 const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = 0.001f;
 const AIRLIGHT_LOBE_REACH: f32 = 8f;
+const AIRLIGHT_LOBE_TAIL: f32 = 0.25f;
 const AIRLIGHT_BESIDE_SCALE: f32 = 0.25f;
 const AIRLIGHT_EDGE_REACH: f32 = 0.5f;
 const AIRLIGHT_CROSSING_REACH: f32 = 16f;
@@ -599,9 +600,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_31 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_30 * x_30) + (y_7 * y_7)) < 1f);
+    return (((x_31 * x_31) + (y_7 * y_7)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -1030,8 +1031,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_2 * 0.5f))));
             }
-            let x_31 = clamp(((c - p1_2) / width_2), 0f, 1f);
-            return ((x_31 * x_31) * (3f - (2f * x_31)));
+            let x_32 = clamp(((c - p1_2) / width_2), 0f, 1f);
+            return ((x_32 * x_32) * (3f - (2f * x_32)));
         }
         default: {
             return 1f;
@@ -1287,10 +1288,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_32);
+            let x_33 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_33);
             if _e42 {
-                let _e43 = airlight_log1p(x_32);
+                let _e43 = airlight_log1p(x_33);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1423,8 +1424,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 6> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 6>, i_3: u32) -> f32 {
-    let x_33 = rule[(i_3 / 2u)].x;
-    return select(x_33, -(x_33), ((i_3 % 2u) == 0u));
+    let x_34 = rule[(i_3 / 2u)].x;
+    return select(x_34, -(x_34), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 12>) -> array<f32, 12> {
@@ -1505,8 +1506,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 12> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_34 = (lambda / f32((2u * k0_)));
-            let per_step = (x_34 * x_34);
+            let x_35 = (lambda / f32((2u * k0_)));
+            let per_step = (x_35 * x_35);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -2128,8 +2129,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_35 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_35)), (x_35 > 0f));
+    let x_36 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_36)), (x_36 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2763,13 +2764,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e936 = airlight_factor(half_8, a_7, b_6);
     let _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    let x_36 = (abs(alpha) + abs(beta_1));
+    let x_37 = (abs(alpha) + abs(beta_1));
     let _e950 = spread;
     let _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     let _e958 = l_cur;
     let _e960 = l_prev;
-    next = ((((1f * x_36) * _e958) + (0f * _e960)) / 1f);
+    next = ((((1f * x_37) * _e958) + (0f * _e960)) / 1f);
     let _e966 = l_cur;
     l_prev = _e966;
     let _e967 = next;
@@ -2779,7 +2780,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e968 + (_e969 * abs(_e54[1])));
     let _e976 = l_cur;
     let _e978 = l_prev;
-    next = ((((3f * x_36) * _e976) + (1f * _e978)) / 2f);
+    next = ((((3f * x_37) * _e976) + (1f * _e978)) / 2f);
     let _e984 = l_cur;
     l_prev = _e984;
     let _e985 = next;
@@ -2789,7 +2790,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e986 + (_e987 * abs(_e54[2])));
     let _e994 = l_cur;
     let _e996 = l_prev;
-    next = ((((5f * x_36) * _e994) + (2f * _e996)) / 3f);
+    next = ((((5f * x_37) * _e994) + (2f * _e996)) / 3f);
     let _e1002 = l_cur;
     l_prev = _e1002;
     let _e1003 = next;
@@ -2799,7 +2800,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     let _e1012 = l_cur;
     let _e1014 = l_prev;
-    next = ((((7f * x_36) * _e1012) + (3f * _e1014)) / 4f);
+    next = ((((7f * x_37) * _e1012) + (3f * _e1014)) / 4f);
     let _e1020 = l_cur;
     l_prev = _e1020;
     let _e1021 = next;
@@ -2809,7 +2810,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     let _e1030 = l_cur;
     let _e1032 = l_prev;
-    next = ((((9f * x_36) * _e1030) + (4f * _e1032)) / 5f);
+    next = ((((9f * x_37) * _e1030) + (4f * _e1032)) / 5f);
     let _e1038 = l_cur;
     l_prev = _e1038;
     let _e1039 = next;
@@ -2819,7 +2820,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     let _e1048 = l_cur;
     let _e1050 = l_prev;
-    next = ((((11f * x_36) * _e1048) + (5f * _e1050)) / 6f);
+    next = ((((11f * x_37) * _e1048) + (5f * _e1050)) / 6f);
     let _e1056 = l_cur;
     l_prev = _e1056;
     let _e1057 = next;
@@ -2829,7 +2830,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     let _e1066 = l_cur;
     let _e1068 = l_prev;
-    next = ((((13f * x_36) * _e1066) + (6f * _e1068)) / 7f);
+    next = ((((13f * x_37) * _e1066) + (6f * _e1068)) / 7f);
     let _e1074 = l_cur;
     l_prev = _e1074;
     let _e1075 = next;
@@ -2839,7 +2840,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     let _e1084 = l_cur;
     let _e1086 = l_prev;
-    next = ((((15f * x_36) * _e1084) + (7f * _e1086)) / 8f);
+    next = ((((15f * x_37) * _e1084) + (7f * _e1086)) / 8f);
     let _e1092 = l_cur;
     l_prev = _e1092;
     let _e1093 = next;
@@ -2849,7 +2850,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     let _e1102 = l_cur;
     let _e1104 = l_prev;
-    next = ((((17f * x_36) * _e1102) + (8f * _e1104)) / 9f);
+    next = ((((17f * x_37) * _e1102) + (8f * _e1104)) / 9f);
     let _e1110 = l_cur;
     l_prev = _e1110;
     let _e1111 = next;
@@ -2859,7 +2860,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     let _e1120 = l_cur;
     let _e1122 = l_prev;
-    next = ((((19f * x_36) * _e1120) + (9f * _e1122)) / 10f);
+    next = ((((19f * x_37) * _e1120) + (9f * _e1122)) / 10f);
     let _e1128 = l_cur;
     l_prev = _e1128;
     let _e1129 = next;
@@ -2869,7 +2870,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     let _e1138 = l_cur;
     let _e1140 = l_prev;
-    next = ((((21f * x_36) * _e1138) + (10f * _e1140)) / 11f);
+    next = ((((21f * x_37) * _e1138) + (10f * _e1140)) / 11f);
     let _e1146 = l_cur;
     l_prev = _e1146;
     let _e1147 = next;
@@ -2879,7 +2880,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     let _e1156 = l_cur;
     let _e1158 = l_prev;
-    next = ((((23f * x_36) * _e1156) + (11f * _e1158)) / 12f);
+    next = ((((23f * x_37) * _e1156) + (11f * _e1158)) / 12f);
     let _e1164 = l_cur;
     l_prev = _e1164;
     let _e1165 = next;
@@ -4909,10 +4910,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     let _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_4);
     let _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_4);
     let _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_4);
-    let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
+    let hi_7 = vec3<f32>(_e11.x, _e17.x, _e23.x);
+    let lo_8 = vec3<f32>(_e11.y, _e17.y, _e23.y);
     let dir_2 = s_21.dir;
-    let _e33 = airlight_in_exact_range(hi_6);
+    let _e33 = airlight_in_exact_range(hi_7);
     if !(!(_e33)) {
         let _e38 = airlight_in_exact_range(dir_2);
         local_128 = !(_e38);
@@ -4923,10 +4924,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_6.y, dir_2.z, hi_6.z, dir_2.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_6.z, dir_2.x, hi_6.x, dir_2.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_6.x, dir_2.y, hi_6.y, dir_2.x, key_4);
-    let w_6 = vec3<f32>((_e46 + ((lo_7.y * dir_2.z) - (lo_7.z * dir_2.y))), (_e59 + ((lo_7.z * dir_2.x) - (lo_7.x * dir_2.z))), (_e72 + ((lo_7.x * dir_2.y) - (lo_7.y * dir_2.x))));
+    let _e46 = airlight_diff_of_products(hi_7.y, dir_2.z, hi_7.z, dir_2.y, key_4);
+    let _e59 = airlight_diff_of_products(hi_7.z, dir_2.x, hi_7.x, dir_2.z, key_4);
+    let _e72 = airlight_diff_of_products(hi_7.x, dir_2.y, hi_7.y, dir_2.x, key_4);
+    let w_6 = vec3<f32>((_e46 + ((lo_8.y * dir_2.z) - (lo_8.z * dir_2.y))), (_e59 + ((lo_8.z * dir_2.x) - (lo_8.x * dir_2.z))), (_e72 + ((lo_8.x * dir_2.y) - (lo_8.y * dir_2.x))));
     let _e82 = airlight_vec_finite(w_6);
     if !(_e82) {
         return plain;
@@ -5504,10 +5505,19 @@ fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
     return vec2<f32>(-(sin_r), cos_r);
 }
 
-fn airlight_acos(x_18: f32) -> f32 {
-    let a_42 = abs(x_18);
+fn airlight_cos_sin_to_pi(x_18: f32) -> vec2<f32> {
+    if (x_18 <= 1.5707964f) {
+        let _e3 = airlight_cos_sin(x_18);
+        return _e3;
+    }
+    let _e6 = airlight_cos_sin((AIRLIGHT_PI - x_18));
+    return vec2<f32>(-(_e6.x), _e6.y);
+}
+
+fn airlight_acos(x_19: f32) -> f32 {
+    let a_42 = abs(x_19);
     let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_19 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
@@ -5604,22 +5614,22 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_37 = dot(_e111, _e112);
+        let x_38 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_38 * x_38) + (y_12 * y_12)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_37, abs(y_12));
+            let _e140 = airlight_angle(x_38, abs(y_12));
             let phi_r = (select(1f, -1f, (y_12 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_38 / _e145), (-(y_12) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5695,7 +5705,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_7 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_8 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first_2, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
@@ -5711,7 +5721,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_136 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_8);
             } else {
                 local_136 = false;
             }
@@ -5731,7 +5741,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_7;
+    g_22.gamma[(_e308 + 1u)] = hi_8;
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
@@ -5806,10 +5816,10 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     return _e390;
 }
 
-fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
+fn airlight_lobe_at(q_1: AirlightLobe, x_20: f32) -> f32 {
     var local_142: bool;
 
-    let _e4 = airlight_cos_sin((0.5f * x_19));
+    let _e4 = airlight_cos_sin((0.5f * x_20));
     let s2_ = (_e4.y * _e4.y);
     let cos_x = (1f - (2f * s2_));
     let sin_x = ((2f * _e4.y) * _e4.x);
@@ -5839,11 +5849,11 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
     return (w_1 * _e22);
 }
 
-fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
+fn airlight_arc_end(x_21: f32, cut: f32) -> f32 {
     var end_1: f32;
     var local_143: bool;
 
-    end_1 = x_20;
+    end_1 = x_21;
     let _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         let _e6 = end_1;
@@ -6233,7 +6243,7 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> AirlightNode {
+fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_22: f32) -> AirlightNode {
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
@@ -6252,8 +6262,8 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_44 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
-        let t_9 = (x_21 - f32(i_44));
+        let i_44 = min(u32(max(floor(x_22), 0f)), (g_25.panels - 1u));
+        let t_9 = (x_22 - f32(i_44));
         let a_44 = g_25.gamma[i_44];
         let b_21 = g_25.gamma[(i_44 + 1u)];
         let w_8 = (b_21 - a_44);
@@ -6346,10 +6356,10 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_21;
+        at_1 = x_22;
         if (g_25.scale > 0f) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
-            ds = (g_25.scale * cosh(x_21));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_22)));
+            ds = (g_25.scale * cosh(x_22));
         }
         let _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -6676,8 +6686,8 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     return _e61;
 }
 
-fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
-    let rel = (x_22 - a_19.c);
+fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_23: vec3<f32>) -> AirlightOutline {
+    let rel = (x_23 - a_19.c);
     let foot = vec2<f32>(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     let zero = vec2(0f);
     if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
@@ -7208,11 +7218,11 @@ fn airlight_outline_chord(o_4: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) 
         let t_11 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
         let r1_2 = (t_11 / a_47);
         let r2_4 = (k_12 / t_11);
-        let hi_8 = max(r1_2, r2_4);
-        if !((hi_8 > 0f)) {
+        let hi_9 = max(r1_2, r2_4);
+        if !((hi_9 > 0f)) {
             return vec2(0f);
         }
-        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_8);
+        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_9);
     }
     let _e70 = chord_1;
     let _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_8, e_6);
@@ -7236,7 +7246,7 @@ fn airlight_graded_from(scale_2: f32, start_1: f32, to: f32) -> vec2<f32> {
 
 fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32> {
     let _e3 = airlight_cos_sin_half_turn(g_26);
-    let _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    let _e9 = airlight_cos_sin_to_pi((start_2 + ((graded_2 * _e3.y) / _e3.x)));
     return vec3<f32>(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
@@ -7324,12 +7334,12 @@ fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 
     return _e17;
 }
 
-fn airlight_wrap_turn(x_23: f32) -> f32 {
-    return (x_23 - (6.2831855f * round((x_23 / 6.2831855f))));
+fn airlight_wrap_turn(x_24: f32) -> f32 {
+    return (x_24 - (6.2831855f * round((x_24 / 6.2831855f))));
 }
 
-fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
-    let _e1 = airlight_wrap_turn(x_24);
+fn airlight_cos_sin_turns(x_25: f32) -> vec2<f32> {
+    let _e1 = airlight_wrap_turn(x_25);
     let _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
@@ -7352,8 +7362,8 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
     return vec4<f32>(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
-    let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+fn airlight_sort4_(x_26: vec4<f32>) -> vec4<f32> {
+    let a_48 = vec4<f32>(min(x_26.x, x_26.y), max(x_26.x, x_26.y), min(x_26.z, x_26.w), max(x_26.z, x_26.w));
     let b_24 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
     return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
@@ -7441,18 +7451,18 @@ fn airlight_mercator(n_3: vec2<f32>, cs_3: vec2<f32>) -> f32 {
 
 fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     let _e5 = airlight_mercator_cut((i_33 / 12u));
-    let lo_8 = max(ua, _e5);
+    let lo_9 = max(ua, _e5);
     let _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
-    let hi_9 = min(ub, _e11);
-    if !((lo_8 < hi_9)) {
+    let hi_10 = min(ub, _e11);
+    if !((lo_9 < hi_10)) {
         return vec3(0f);
     }
     let _e19 = airlight_triangle_rule((i_33 % 12u));
-    let hw_5 = (0.5f * (hi_9 - lo_8));
-    let x_38 = ((0.5f * (lo_8 + hi_9)) + (hw_5 * _e19.x));
-    let e_18 = exp(-(abs(x_38)));
+    let hw_5 = (0.5f * (hi_10 - lo_9));
+    let x_39 = ((0.5f * (lo_9 + hi_10)) + (hw_5 * _e19.x));
+    let e_18 = exp(-(abs(x_39)));
     let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
-    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    return vec3<f32>(sech, ((sign(x_39) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
 }
 
 fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
@@ -7823,7 +7833,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
     return _e560;
 }
 
-fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f32 {
     var local_188: bool;
     var local_189: bool;
     var u_7: vec2<f32> = vec2(0f);
@@ -7833,7 +7843,7 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel_1 = (x_26 - a_26.c);
+    let rel_1 = (x_27 - a_26.c);
     let z_21 = dot(rel_1, a_26.n);
     if !((z_21 > 0f)) {
         return 0f;
@@ -7908,14 +7918,14 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_28: vec3<f32>) -> f32 {
     var q_9: vec2<f32>;
     var local_190: bool;
     var sum_12: f32 = 0f;
     var i_41: u32 = 0u;
     var j_12: u32;
 
-    let rel_2 = (x_27 - a_27.c);
+    let rel_2 = (x_28 - a_27.c);
     let z_22 = dot(rel_2, a_27.n);
     if !((z_22 > 0f)) {
         return 0f;
@@ -8249,8 +8259,9 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
     var local_192: bool;
     var mid: f32;
     var local_193: bool;
-    var start_5: f32;
-    var to_1: f32;
+    var lo_7: f32;
+    var hi_6: f32;
+    var local_194: bool;
     var around: f32;
 
     let p_6 = (sign_2 * a_29.d);
@@ -8362,131 +8373,201 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
             let _e182 = big_b_1;
             let _e183 = big_b_1;
             let _e190 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e182 * _e183)))), 1f));
-            start_5 = 0f;
+            lo_7 = 0f;
             if !(inside_3) {
                 let _e194 = mid;
-                start_5 = max((_e194 - _e190), 0f);
+                lo_7 = max((_e194 - _e190), 0f);
             }
             let _e198 = mid;
-            to_1 = (_e198 + _e190);
+            hi_6 = (_e198 + _e190);
             if beside {
-                let _e201 = to_1;
-                to_1 = min(_e201, AIRLIGHT_PI);
+                let _e201 = hi_6;
+                hi_6 = min(_e201, AIRLIGHT_PI);
             }
-            let _e204 = start_5;
-            let _e205 = to_1;
-            let _e206 = airlight_graded_from(scale_3, _e204, _e205);
-            let graded_10 = _e206.x;
-            let c_24 = (0.5f * _e206.y);
-            let hw_8 = (0.5f * _e206.y);
+            let _e204 = lo_7;
+            let start_5 = (_e204 + AIRLIGHT_LOBE_TAIL);
+            let _e207 = hi_6;
+            if (_e207 > start_5) {
+                let _e211 = hi_6;
+                let _e212 = lo_7;
+                let _e215 = lo_7;
+                local_194 = ((_e211 - _e212) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e215)));
+            } else {
+                local_194 = false;
+            }
+            let cut_3 = local_194;
             around = 0f;
-            let _e216 = around;
-            let _e219 = big_b_1;
-            let _e220 = start_5;
-            let _e224 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e219, _e220, graded_10, (c_24 - (0.09501251f * hw_8)));
-            around = (_e216 + ((0.1894506f * hw_8) * _e224));
-            let _e227 = around;
-            let _e230 = big_b_1;
-            let _e231 = start_5;
-            let _e235 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e230, _e231, graded_10, (c_24 + (0.09501251f * hw_8)));
-            around = (_e227 + ((0.1894506f * hw_8) * _e235));
-            let _e238 = around;
-            let _e241 = big_b_1;
-            let _e242 = start_5;
-            let _e246 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e241, _e242, graded_10, (c_24 - (0.28160354f * hw_8)));
-            around = (_e238 + ((0.18260342f * hw_8) * _e246));
-            let _e249 = around;
-            let _e252 = big_b_1;
-            let _e253 = start_5;
-            let _e257 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e252, _e253, graded_10, (c_24 + (0.28160354f * hw_8)));
-            around = (_e249 + ((0.18260342f * hw_8) * _e257));
-            let _e260 = around;
-            let _e263 = big_b_1;
-            let _e264 = start_5;
-            let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e263, _e264, graded_10, (c_24 - (0.45801678f * hw_8)));
-            around = (_e260 + ((0.16915652f * hw_8) * _e268));
-            let _e271 = around;
-            let _e274 = big_b_1;
-            let _e275 = start_5;
-            let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, _e275, graded_10, (c_24 + (0.45801678f * hw_8)));
-            around = (_e271 + ((0.16915652f * hw_8) * _e279));
-            let _e282 = around;
-            let _e285 = big_b_1;
-            let _e286 = start_5;
-            let _e290 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, _e286, graded_10, (c_24 - (0.61787623f * hw_8)));
-            around = (_e282 + ((0.14959599f * hw_8) * _e290));
-            let _e293 = around;
-            let _e296 = big_b_1;
-            let _e297 = start_5;
-            let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e296, _e297, graded_10, (c_24 + (0.61787623f * hw_8)));
-            around = (_e293 + ((0.14959599f * hw_8) * _e301));
-            let _e304 = around;
-            let _e307 = big_b_1;
-            let _e308 = start_5;
-            let _e312 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, _e308, graded_10, (c_24 - (0.7554044f * hw_8)));
-            around = (_e304 + ((0.12462897f * hw_8) * _e312));
-            let _e315 = around;
-            let _e318 = big_b_1;
-            let _e319 = start_5;
-            let _e323 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e318, _e319, graded_10, (c_24 + (0.7554044f * hw_8)));
-            around = (_e315 + ((0.12462897f * hw_8) * _e323));
-            let _e326 = around;
-            let _e329 = big_b_1;
-            let _e330 = start_5;
-            let _e334 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e329, _e330, graded_10, (c_24 - (0.8656312f * hw_8)));
-            around = (_e326 + ((0.09515851f * hw_8) * _e334));
-            let _e337 = around;
-            let _e340 = big_b_1;
-            let _e341 = start_5;
-            let _e345 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e340, _e341, graded_10, (c_24 + (0.8656312f * hw_8)));
-            around = (_e337 + ((0.09515851f * hw_8) * _e345));
-            let _e348 = around;
-            let _e351 = big_b_1;
-            let _e352 = start_5;
-            let _e356 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e351, _e352, graded_10, (c_24 - (0.944575f * hw_8)));
-            around = (_e348 + ((0.062253524f * hw_8) * _e356));
-            let _e359 = around;
-            let _e362 = big_b_1;
-            let _e363 = start_5;
-            let _e367 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e362, _e363, graded_10, (c_24 + (0.944575f * hw_8)));
-            around = (_e359 + ((0.062253524f * hw_8) * _e367));
-            let _e370 = around;
-            let _e373 = big_b_1;
-            let _e374 = start_5;
-            let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e373, _e374, graded_10, (c_24 - (0.9894009f * hw_8)));
-            around = (_e370 + ((0.02715246f * hw_8) * _e378));
-            let _e381 = around;
-            let _e384 = big_b_1;
-            let _e385 = start_5;
-            let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, _e385, graded_10, (c_24 + (0.9894009f * hw_8)));
-            around = (_e381 + ((0.02715246f * hw_8) * _e389));
-            let _e392 = sum_14;
-            let _e393 = wpsi;
-            let _e394 = around;
-            sum_14 = (_e392 + (_e393 * _e394));
+            {
+                let start_6 = lo_7;
+                let _e224 = hi_6;
+                let to_1 = select(_e224, start_5, cut_3);
+                let _e226 = airlight_graded_from(scale_3, start_6, to_1);
+                let graded_10 = _e226.x;
+                let c_24 = (0.5f * _e226.y);
+                let hw_8 = (0.5f * _e226.y);
+                let _e234 = around;
+                let _e237 = big_b_1;
+                let _e241 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e237, start_6, graded_10, (c_24 - (0.09501251f * hw_8)));
+                around = (_e234 + ((0.1894506f * hw_8) * _e241));
+                let _e244 = around;
+                let _e247 = big_b_1;
+                let _e251 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e247, start_6, graded_10, (c_24 + (0.09501251f * hw_8)));
+                around = (_e244 + ((0.1894506f * hw_8) * _e251));
+                let _e254 = around;
+                let _e257 = big_b_1;
+                let _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e257, start_6, graded_10, (c_24 - (0.28160354f * hw_8)));
+                around = (_e254 + ((0.18260342f * hw_8) * _e261));
+                let _e264 = around;
+                let _e267 = big_b_1;
+                let _e271 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, start_6, graded_10, (c_24 + (0.28160354f * hw_8)));
+                around = (_e264 + ((0.18260342f * hw_8) * _e271));
+                let _e274 = around;
+                let _e277 = big_b_1;
+                let _e281 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e277, start_6, graded_10, (c_24 - (0.45801678f * hw_8)));
+                around = (_e274 + ((0.16915652f * hw_8) * _e281));
+                let _e284 = around;
+                let _e287 = big_b_1;
+                let _e291 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e287, start_6, graded_10, (c_24 + (0.45801678f * hw_8)));
+                around = (_e284 + ((0.16915652f * hw_8) * _e291));
+                let _e294 = around;
+                let _e297 = big_b_1;
+                let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e297, start_6, graded_10, (c_24 - (0.61787623f * hw_8)));
+                around = (_e294 + ((0.14959599f * hw_8) * _e301));
+                let _e304 = around;
+                let _e307 = big_b_1;
+                let _e311 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, start_6, graded_10, (c_24 + (0.61787623f * hw_8)));
+                around = (_e304 + ((0.14959599f * hw_8) * _e311));
+                let _e314 = around;
+                let _e317 = big_b_1;
+                let _e321 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e317, start_6, graded_10, (c_24 - (0.7554044f * hw_8)));
+                around = (_e314 + ((0.12462897f * hw_8) * _e321));
+                let _e324 = around;
+                let _e327 = big_b_1;
+                let _e331 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e327, start_6, graded_10, (c_24 + (0.7554044f * hw_8)));
+                around = (_e324 + ((0.12462897f * hw_8) * _e331));
+                let _e334 = around;
+                let _e337 = big_b_1;
+                let _e341 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e337, start_6, graded_10, (c_24 - (0.8656312f * hw_8)));
+                around = (_e334 + ((0.09515851f * hw_8) * _e341));
+                let _e344 = around;
+                let _e347 = big_b_1;
+                let _e351 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e347, start_6, graded_10, (c_24 + (0.8656312f * hw_8)));
+                around = (_e344 + ((0.09515851f * hw_8) * _e351));
+                let _e354 = around;
+                let _e357 = big_b_1;
+                let _e361 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e357, start_6, graded_10, (c_24 - (0.944575f * hw_8)));
+                around = (_e354 + ((0.062253524f * hw_8) * _e361));
+                let _e364 = around;
+                let _e367 = big_b_1;
+                let _e371 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e367, start_6, graded_10, (c_24 + (0.944575f * hw_8)));
+                around = (_e364 + ((0.062253524f * hw_8) * _e371));
+                let _e374 = around;
+                let _e377 = big_b_1;
+                let _e381 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e377, start_6, graded_10, (c_24 - (0.9894009f * hw_8)));
+                around = (_e374 + ((0.02715246f * hw_8) * _e381));
+                let _e384 = around;
+                let _e387 = big_b_1;
+                let _e391 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e387, start_6, graded_10, (c_24 + (0.9894009f * hw_8)));
+                around = (_e384 + ((0.02715246f * hw_8) * _e391));
+            }
+            if cut_3 {
+                let to_2 = hi_6;
+                let _e395 = airlight_graded_from(scale_3, start_5, to_2);
+                let graded_11 = _e395.x;
+                let c_25 = (0.5f * _e395.y);
+                let hw_9 = (0.5f * _e395.y);
+                let _e403 = around;
+                let _e406 = big_b_1;
+                let _e410 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, start_5, graded_11, (c_25 - (0.09501251f * hw_9)));
+                around = (_e403 + ((0.1894506f * hw_9) * _e410));
+                let _e413 = around;
+                let _e416 = big_b_1;
+                let _e420 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e416, start_5, graded_11, (c_25 + (0.09501251f * hw_9)));
+                around = (_e413 + ((0.1894506f * hw_9) * _e420));
+                let _e423 = around;
+                let _e426 = big_b_1;
+                let _e430 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e426, start_5, graded_11, (c_25 - (0.28160354f * hw_9)));
+                around = (_e423 + ((0.18260342f * hw_9) * _e430));
+                let _e433 = around;
+                let _e436 = big_b_1;
+                let _e440 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e436, start_5, graded_11, (c_25 + (0.28160354f * hw_9)));
+                around = (_e433 + ((0.18260342f * hw_9) * _e440));
+                let _e443 = around;
+                let _e446 = big_b_1;
+                let _e450 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e446, start_5, graded_11, (c_25 - (0.45801678f * hw_9)));
+                around = (_e443 + ((0.16915652f * hw_9) * _e450));
+                let _e453 = around;
+                let _e456 = big_b_1;
+                let _e460 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e456, start_5, graded_11, (c_25 + (0.45801678f * hw_9)));
+                around = (_e453 + ((0.16915652f * hw_9) * _e460));
+                let _e463 = around;
+                let _e466 = big_b_1;
+                let _e470 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e466, start_5, graded_11, (c_25 - (0.61787623f * hw_9)));
+                around = (_e463 + ((0.14959599f * hw_9) * _e470));
+                let _e473 = around;
+                let _e476 = big_b_1;
+                let _e480 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e476, start_5, graded_11, (c_25 + (0.61787623f * hw_9)));
+                around = (_e473 + ((0.14959599f * hw_9) * _e480));
+                let _e483 = around;
+                let _e486 = big_b_1;
+                let _e490 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e486, start_5, graded_11, (c_25 - (0.7554044f * hw_9)));
+                around = (_e483 + ((0.12462897f * hw_9) * _e490));
+                let _e493 = around;
+                let _e496 = big_b_1;
+                let _e500 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e496, start_5, graded_11, (c_25 + (0.7554044f * hw_9)));
+                around = (_e493 + ((0.12462897f * hw_9) * _e500));
+                let _e503 = around;
+                let _e506 = big_b_1;
+                let _e510 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e506, start_5, graded_11, (c_25 - (0.8656312f * hw_9)));
+                around = (_e503 + ((0.09515851f * hw_9) * _e510));
+                let _e513 = around;
+                let _e516 = big_b_1;
+                let _e520 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e516, start_5, graded_11, (c_25 + (0.8656312f * hw_9)));
+                around = (_e513 + ((0.09515851f * hw_9) * _e520));
+                let _e523 = around;
+                let _e526 = big_b_1;
+                let _e530 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e526, start_5, graded_11, (c_25 - (0.944575f * hw_9)));
+                around = (_e523 + ((0.062253524f * hw_9) * _e530));
+                let _e533 = around;
+                let _e536 = big_b_1;
+                let _e540 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e536, start_5, graded_11, (c_25 + (0.944575f * hw_9)));
+                around = (_e533 + ((0.062253524f * hw_9) * _e540));
+                let _e543 = around;
+                let _e546 = big_b_1;
+                let _e550 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e546, start_5, graded_11, (c_25 - (0.9894009f * hw_9)));
+                around = (_e543 + ((0.02715246f * hw_9) * _e550));
+                let _e553 = around;
+                let _e556 = big_b_1;
+                let _e560 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e556, start_5, graded_11, (c_25 + (0.9894009f * hw_9)));
+                around = (_e553 + ((0.02715246f * hw_9) * _e560));
+            }
+            let _e563 = sum_14;
+            let _e564 = wpsi;
+            let _e565 = around;
+            sum_14 = (_e563 + (_e564 * _e565));
         }
         continuing {
-            let _e398 = i_43;
-            i_43 = (_e398 + 1u);
+            let _e569 = i_43;
+            i_43 = (_e569 + 1u);
         }
     }
-    let _e400 = sum_14;
-    return _e400;
+    let _e571 = sum_14;
+    return _e571;
 }
 
-fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
-    var local_194: bool;
     var local_195: bool;
     var local_196: bool;
     var local_197: bool;
     var local_198: bool;
     var local_199: bool;
+    var local_200: bool;
 
-    let v_12 = (a_30.c - x_28);
+    let v_12 = (a_30.c - x_29);
     let _e5 = airlight_safe_length(v_12);
     if !((_e5 > a_30.radius)) {
         return 0f;
@@ -8503,80 +8584,80 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> 
         {
             let _e39 = j_13;
             let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
-            let c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
+            let c_26 = dot(cap_4.a, (lobe_6.x * a_30.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_194 = (lobe_6.y > 0f);
-            } else {
-                local_194 = false;
-            }
-            let _e57 = local_194;
-            if _e57 {
-                local_195 = (lobe_6.y < (_e23 + _e23));
+                local_195 = (lobe_6.y > 0f);
             } else {
                 local_195 = false;
             }
-            let _e64 = local_195;
-            if _e64 {
-                if !(!((c_25 < -(cap_4.cos_a)))) {
-                    local_197 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_197 = true;
-                }
-                let _e78 = local_197;
-                local_196 = _e78;
+            let _e57 = local_195;
+            if _e57 {
+                local_196 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_196 = false;
             }
-            let _e80 = local_196;
-            if _e80 {
-                if !((c_25 > cap_4.cos_a)) {
-                    let _e88 = airlight_acos(c_25);
-                    local_199 = ((_e88 - _e23) < (AIRLIGHT_LOBE_REACH * lobe_6.y));
+            let _e64 = local_196;
+            if _e64 {
+                if !(!((c_26 < -(cap_4.cos_a)))) {
+                    local_198 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
-                    local_199 = true;
+                    local_198 = true;
                 }
-                let _e95 = local_199;
-                local_198 = _e95;
+                let _e78 = local_198;
+                local_197 = _e78;
             } else {
-                local_198 = false;
+                local_197 = false;
             }
-            let _e97 = local_198;
-            if _e97 {
+            let _e80 = local_197;
+            if _e80 {
+                if !((c_26 > cap_4.cos_a)) {
+                    let _e88 = airlight_acos(c_26);
+                    local_200 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+                } else {
+                    local_200 = true;
+                }
+                let _e96 = local_200;
+                local_199 = _e96;
+            } else {
+                local_199 = false;
+            }
+            let _e98 = local_199;
+            if _e98 {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_25;
+                cos_p_2 = c_26;
             }
         }
         continuing {
-            let _e101 = j_13;
-            j_13 = (_e101 + 1u);
+            let _e102 = j_13;
+            j_13 = (_e102 + 1u);
         }
     }
-    let _e103 = chosen;
-    if (_e103 > 0f) {
-        let _e106 = sign_3;
-        let _e107 = cos_p_2;
-        let _e108 = chosen;
-        let _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
-        return _e109;
+    let _e104 = chosen;
+    if (_e104 > 0f) {
+        let _e107 = sign_3;
+        let _e108 = cos_p_2;
+        let _e109 = chosen;
+        let _e110 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e107, _e108, _e109);
+        return _e110;
     }
-    let _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
-    return _e110;
+    let _e111 = airlight_sphere_cap(s_49, a_30, cap_4);
+    return _e111;
 }
 
-fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
+fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_30: vec3<f32>) -> f32 {
     switch s_50.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_50, a_31, x_29);
+            let _e4 = airlight_disc(s_50, a_31, x_30);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_50, a_31, x_29);
+            let _e5 = airlight_parallelogram(s_50, a_31, x_30);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_50, a_31, x_29);
+            let _e6 = airlight_sphere(s_50, a_31, x_30);
             return _e6;
         }
     }
@@ -8597,7 +8678,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var k_9: f32;
     var gauss_1: f32;
     var j_14: u32;
-    var local_200: bool;
+    var local_201: bool;
 
     let _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
@@ -8617,10 +8698,10 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_26 = (0.5f * (_e27 + _e29));
+            let c_27 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_9 = (0.5f * (_e34 - _e36));
+            let hw_10 = (0.5f * (_e34 - _e36));
             k_9 = 0f;
             gauss_1 = 0f;
             j_14 = 0u;
@@ -8636,13 +8717,13 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                     let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_14;
-                        local_200 = (_e66 < 14u);
+                        local_201 = (_e66 < 14u);
                     } else {
-                        local_200 = false;
+                        local_201 = false;
                     }
-                    let _e70 = local_200;
-                    let x_39 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_52, _e1, x_39);
+                    let _e70 = local_201;
+                    let x_40 = select((c_27 + (hw_10 * node_4.x)), (c_27 - (hw_10 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_52, _e1, x_40);
                     let _e73 = k_9;
                     k_9 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8656,7 +8737,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
             let _e84 = st_1;
             let _e85 = k_9;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -8680,22 +8761,22 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
-    var local_201: bool;
     var local_202: bool;
+    var local_203: bool;
 
     let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_201 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_201 = true;
-    }
-    let _e10 = local_201;
-    if !(_e10) {
-        local_202 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_202 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_202 = true;
     }
-    let _e18 = local_202;
+    let _e10 = local_202;
+    if !(_e10) {
+        local_203 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_203 = true;
+    }
+    let _e18 = local_203;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8704,15 +8785,15 @@ fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_203: bool;
+    var local_204: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_203 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_204 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_203 = true;
+        local_204 = true;
     }
-    let _e11 = local_203;
+    let _e11 = local_204;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8721,18 +8802,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_204: bool;
+    var local_205: bool;
     var g_29: AirlightCanonical;
 
     let p_7 = n_5.scene;
     let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_7.dir);
-        local_204 = _e11;
+        local_205 = _e11;
     } else {
-        local_204 = false;
+        local_205 = false;
     }
-    let _e13 = local_204;
+    let _e13 = local_205;
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
@@ -8756,22 +8837,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
-    var local_205: bool;
     var local_206: bool;
+    var local_207: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_205 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_205 = true;
-    }
-    let _e10 = local_205;
-    if !(_e10) {
-        local_206 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_206 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_206 = true;
     }
-    let _e18 = local_206;
+    let _e10 = local_206;
+    if !(_e10) {
+        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_207 = true;
+    }
+    let _e18 = local_207;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8780,22 +8861,22 @@ fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
-    var local_207: bool;
     var local_208: bool;
+    var local_209: bool;
 
     let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_207 = true;
-    }
-    let _e10 = local_207;
-    if !(_e10) {
-        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_208 = true;
     }
-    let _e18 = local_208;
+    let _e10 = local_208;
+    if !(_e10) {
+        local_209 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_209 = true;
+    }
+    let _e18 = local_209;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8823,9 +8904,9 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var k_10: f32;
     var gauss_2: f32;
     var j_15: u32;
-    var local_209: bool;
-    var f: f32;
     var local_210: bool;
+    var f: f32;
+    var local_211: bool;
 
     let _e1 = airlight_valid(s_56);
     if !(_e1) {
@@ -8854,10 +8935,10 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_27 = (0.5f * (_e42 + _e44));
+            let c_28 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_10 = (0.5f * (_e49 - _e51));
+            let hw_11 = (0.5f * (_e49 - _e51));
             k_10 = 0f;
             gauss_2 = 0f;
             j_15 = 0u;
@@ -8873,12 +8954,12 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                     let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_15;
-                        local_209 = (_e81 < 6u);
+                        local_210 = (_e81 < 6u);
                     } else {
-                        local_209 = false;
+                        local_210 = false;
                     }
-                    let _e85 = local_209;
-                    let w_11 = select((c_27 + (hw_10 * node_5.x)), (c_27 - (hw_10 * node_5.x)), _e85);
+                    let _e85 = local_210;
+                    let w_11 = select((c_28 + (hw_11 * node_5.x)), (c_28 - (hw_11 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8887,11 +8968,11 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_210 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_211 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_210 = false;
+                            local_211 = false;
                         }
-                        let _e106 = local_210;
+                        let _e106 = local_211;
                         if _e106 {
                             return _e93;
                         }
@@ -8912,7 +8993,7 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
             let _e123 = st_2;
             let _e124 = k_10;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

@@ -378,8 +378,9 @@ fn segment_lights_agree_with_the_cpu_kernel() {
 /// zero normal, parallel edges, an emission power of 0, a light with an axis) give INVALID, and
 /// the full entry `airlight_in_scatter` answers an area light INVALID. (Not run: the GLSL and HLSL
 /// back ends' texts through glslang — glslang's SPIR-V of a compute shader holding the area code
-/// took lavapipe 766 s to compile, naga's 12 s (docs/DESIGN.md §12); tests/shaders.rs compiles
-/// both libraries' area entry with glslang.)
+/// took lavapipe 766 s to compile, naga's 12 s, and the area entry's alone more than 300 s after
+/// `spirv-opt`'s local passes (docs/DESIGN.md §12); tests/shaders.rs compiles both libraries'
+/// area entry with glslang.)
 #[test]
 fn area_lights_agree_with_the_cpu_kernel() {
     use airlight_codegen::scene_json::{parse_any_value, AnyRecord};
@@ -513,8 +514,9 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
 
 /// A sphere in `g = 0.95` and `0.99` fog on rays entering it 0.001 and 0.00001 of its radius
 /// inside its limb, up to the middle of their chord and (0.00001) whole (tests/area.rs
-/// `bounded_sphere_with_the_lobe_next_to_its_limb`): the f32 scene, the nested construction's
-/// value on its f32 inputs at tolerance 1e-9 in f64, a label.
+/// `bounded_sphere_with_the_lobe_next_to_its_limb`), and in `g = 0.99` fog behind it on rays
+/// that miss it by 0.001 and 0.0001 of its radius (`bounded_sphere_behind_a_grazing_ray`): the
+/// f32 scene, the nested construction's value on its f32 inputs at tolerance 1e-9 in f64, a label.
 fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
     use airlight::glam::{DVec3, Vec3};
     use airlight::phase::{AnyPhase, HenyeyGreenstein};
@@ -541,6 +543,23 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
                 cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} sphere, entering {depth} of its radius inside its limb, {part}")));
             }
         }
+    }
+    // behind a sphere the ray misses (its lobe just outside a cap nearly a hemisphere wide, the
+    // θ rule cut at LOBE_TAIL), from the closest approach on
+    for miss in [0.001f32, 0.0001] {
+        let angle = (radius * (1.0 + miss) / center.length()).asin();
+        let dir = towards * angle.cos() + side * angle.sin();
+        let ray = Ray { origin: Vec3::ZERO, dir, t_min: dir.dot(center), t_max: f32::INFINITY };
+        let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
+        let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99 })).unwrap();
+        let double = AreaScene::new(
+            Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: ray.t_min as f64, t_max: f64::INFINITY },
+            AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
+            Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
+            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99f32 as f64 }),
+        )
+        .unwrap();
+        cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.99 sphere, behind it, missing it by {miss} of its radius")));
     }
     cases
 }

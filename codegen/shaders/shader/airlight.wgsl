@@ -2203,6 +2203,19 @@ fn airlight_cos_sin_half_turn(x: f32) -> vec2<f32> {
     return vec2<f32>(-sin_r, cos_r);
 }
 
+/// (cos x, sin x) for x ∈ [0, π] with sin x to its own relative precision (the polar angle θ
+/// of the lobe rules, whose sin θ is the solid angle's measure), as outer.rs's `sin_cos_turns`:
+/// `airlight_cos_sin` of x, or of π − x reflected (`airlight_cos_sin_half_turn`'s sin x, from
+/// cos(x − π/2), is off by ~2e-7 absolute next to 0 and π: a sphere's θ rule cut at LOBE_TAIL
+/// was 1.6e-4 off with it).
+fn airlight_cos_sin_to_pi(x: f32) -> vec2<f32> {
+    if (x <= 0.5 * AIRLIGHT_PI) {
+        return airlight_cos_sin(x);
+    }
+    let r = airlight_cos_sin(AIRLIGHT_PI - x);
+    return vec2<f32>(-r.x, r.y);
+}
+
 /// acos x for |x| ≤ 1: 2 atan √((1 − |x|)/(1 + |x|)), reflected for x < 0 (Vulkan's acos
 /// inherits atan's 4096 ulp).
 fn airlight_acos(x: f32) -> f32 {
@@ -2602,6 +2615,8 @@ const AIRLIGHT_AREA_RAY_TOLERANCE: f32 = @AREA_RAY_TOLERANCE@;
 // How far outside a sphere's cap or a flat emitter, in radial scales, a phase lobe is taken about
 // (outer.rs LOBE_REACH).
 const AIRLIGHT_LOBE_REACH: f32 = @LOBE_REACH@;
+// Where a sphere's θ range about a lobe is cut in two, radians past its start (outer.rs LOBE_TAIL).
+const AIRLIGHT_LOBE_TAIL: f32 = @LOBE_TAIL@;
 // The widest lobe a sphere is taken about from beside it (outer.rs BESIDE_SCALE).
 const AIRLIGHT_BESIDE_SCALE: f32 = @BESIDE_SCALE@;
 // How far inside a flat emitter's edge, in heights above its plane, its foot is taken about
@@ -3232,7 +3247,7 @@ fn airlight_graded_from(scale: f32, start: f32, to: f32) -> vec2<f32> {
 /// A node γ of that rule as (cos θ, sin θ, dθ/dγ), θ = start + g tan γ.
 fn airlight_graded_from_node(start: f32, graded: f32, g: f32) -> vec3<f32> {
     let tg = airlight_cos_sin_half_turn(g);
-    return vec3<f32>(airlight_cos_sin_half_turn(start + graded * tg.y / tg.x), graded / (tg.x * tg.x));
+    return vec3<f32>(airlight_cos_sin_to_pi(start + graded * tg.y / tg.x), graded / (tg.x * tg.x));
 }
 
 /// One node γ of `airlight_flat_lobe_along`: L_e c^{p−1} e^{−σt z/c} P sin θ dθ/dγ,
@@ -3569,7 +3584,8 @@ fn airlight_sphere_lobe_node(s: AirlightScene, cap: AirlightCap, sign: f32, cos_
 
 /// S(x) of a sphere whose cap holds (or nearly) the direction p = sign·d of a phase lobe of
 /// radial scale `scale` (outer.rs `sphere_about_lobe`): polar about p, θ = s tan γ from it (from
-/// the near rim outside) to the cap's rim in each ψ, RADIAL in γ written out, AZIMUTHAL in ψ.
+/// the near rim outside) to the cap's rim in each ψ (a long range in two, LOBE_TAIL), RADIAL in
+/// γ written out, AZIMUTHAL in ψ.
 fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCap, sign: f32, cos_p: f32, scale: f32) -> f32 {
     let p = sign * a.d;
     let u = airlight_basis_e1(p);
@@ -3635,16 +3651,32 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
         var mid = airlight_atan2(big_b, cos_p);
         if (beside && mid < 0.0) { mid += 2.0 * AIRLIGHT_PI; }
         let spread = airlight_acos(min(cap.cos_a / sqrt(cos_p * cos_p + big_b * big_b), 1.0));
-        var start = 0.0;
-        if (!inside) { start = max(mid - spread, 0.0); }
-        var to = mid + spread;
-        if (beside) { to = min(to, AIRLIGHT_PI); }
-        let range = airlight_graded_from(scale, start, to);
-        let graded = range.x;
-        let c = 0.5 * range.y;
-        let hw = 0.5 * range.y;
+        var lo = 0.0;
+        if (!inside) { lo = max(mid - spread, 0.0); }
+        var hi = mid + spread;
+        if (beside) { hi = min(hi, AIRLIGHT_PI); }
+        // a range longer than LOBE_REACH of its grading scales: the lobe's tail past LOBE_TAIL
+        // graded from there by its own distance
+        let tail = lo + AIRLIGHT_LOBE_TAIL;
+        let cut = hi > tail && hi - lo > AIRLIGHT_LOBE_REACH * max(scale, lo);
         var around = 0.0;
-@RADIAL_LOBE@        sum += wpsi * around;
+        {
+            let start = lo;
+            let to = select(hi, tail, cut);
+            let range = airlight_graded_from(scale, start, to);
+            let graded = range.x;
+            let c = 0.5 * range.y;
+            let hw = 0.5 * range.y;
+@RADIAL_LOBE@        }
+        if (cut) {
+            let start = tail;
+            let to = hi;
+            let range = airlight_graded_from(scale, start, to);
+            let graded = range.x;
+            let c = 0.5 * range.y;
+            let hw = 0.5 * range.y;
+@RADIAL_LOBE@        }
+        sum += wpsi * around;
     }
     return sum;
 }
@@ -3657,8 +3689,8 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
     let sin_a = a.radius / dc;
     let cap = AirlightCap(v / dc, dc, a.radius, sin_a, sqrt((1.0 - sin_a) * (1.0 + sin_a)));
     // a lobe narrower than the cap (κ < α) whose direction lies inside it, or outside within
-    // LOBE_REACH scales of its rim (beyond the great circle opposite the centre, beside the
-    // sphere, only one narrower than BESIDE_SCALE)
+    // LOBE_REACH scales of its rim or the cap's radius α (beyond the great circle opposite the
+    // centre, beside the sphere, only one narrower than BESIDE_SCALE)
     let alpha = airlight_atan2_upper(sin_a, cap.cos_a);
     var chosen = 0.0;
     var sign = 1.0;
@@ -3668,7 +3700,7 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
         let c = dot(cap.a, lobe.x * a.d);
         if (chosen == 0.0 && lobe.y > 0.0 && lobe.y < alpha + alpha
             && (!(c < -cap.cos_a) || lobe.y < AIRLIGHT_BESIDE_SCALE)
-            && (c > cap.cos_a || airlight_acos(c) - alpha < AIRLIGHT_LOBE_REACH * lobe.y)) {
+            && (c > cap.cos_a || airlight_acos(c) - alpha < max(AIRLIGHT_LOBE_REACH * lobe.y, alpha))) {
             chosen = lobe.y;
             sign = lobe.x;
             cos_p = c;

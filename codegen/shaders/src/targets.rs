@@ -301,6 +301,7 @@ impl Constants {
             ("@AREA_RAY_PANELS@", airlight::area::outer::BOUNDED_RAY_PANELS.to_string()),
             ("@AREA_RAY_TOLERANCE@", f(airlight::area::outer::BOUNDED_RAY_TOLERANCE)),
             ("@LOBE_REACH@", f(airlight::area::outer::LOBE_REACH)),
+            ("@LOBE_TAIL@", f(airlight::area::outer::LOBE_TAIL)),
             ("@BESIDE_SCALE@", f(airlight::area::outer::BESIDE_SCALE)),
             ("@EDGE_REACH@", f(airlight::area::outer::EDGE_REACH)),
             ("@CROSSING_REACH@", f(airlight::area::outer::CROSSING_REACH)),
