@@ -6752,7 +6752,7 @@ AirlightArea airlight_area(AirlightScene s_36) {
         float b_22 = dot(oc, _e45);
         float _e77 = a_20.radius;
         float _e79 = a_20.radius;
-        float k_11 = (dot(oc, oc) - (_e77 * _e79));
+        float k_12 = (dot(oc, oc) - (_e77 * _e79));
         float _e84 = airlight_safe_length((oc - (b_22 * _e45)));
         float _e86 = a_20.radius;
         float _e89 = a_20.radius;
@@ -6761,7 +6761,7 @@ AirlightArea airlight_area(AirlightScene s_36) {
             float root_2 = sqrt(disc_2);
             float q_13 = (-(b_22) - (((floatBitsToUint(b_22) & 2147483648u) != 0u) ? -(root_2) : root_2));
             cut0_ = q_13;
-            cut1_ = (k_11 / q_13);
+            cut1_ = (k_12 / q_13);
             cut_count = 2u;
         }
     } else {
@@ -7213,15 +7213,15 @@ vec2 airlight_outline_chord(AirlightOutline o_4, vec2 q_8, vec2 e_6) {
         float a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         float b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         float dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        float k_12 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        float disc_3 = ((b_23 * b_23) - (a_47 * k_12));
+        float k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        float disc_3 = ((b_23 * b_23) - (a_47 * k_13));
         if (!((disc_3 > 0.0))) {
             return vec2(0.0);
         }
         float root_3 = sqrt(disc_3);
         float t_11 = (-(b_23) - (((floatBitsToUint(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3));
         float r1_2 = (t_11 / a_47);
-        float r2_4 = (k_12 / t_11);
+        float r2_4 = (k_13 / t_11);
         float hi_9 = max(r1_2, r2_4);
         if (!((hi_9 > 0.0))) {
             return vec2(0.0);
@@ -7268,64 +7268,64 @@ float airlight_flat_lobe_node(AirlightScene s_39, float z_12, AirlightFlatLobe l
 float airlight_flat_lobe_along(AirlightScene s_40, float z_13, AirlightOutline o_5, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
     float sum_8 = 0.0;
     vec3 w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    float k_13 = (w_9.z / -(lobe_2.p.z));
-    vec2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_13 * lobe_2.p.xy)));
+    float k_14 = (w_9.z / -(lobe_2.p.z));
+    vec2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
-    float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_13 * _e23.x)));
-    float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_13 * _e23.y)));
+    float _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
+    float _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     vec2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
     float c_21 = (0.5 * _e42.y);
     float hw_3 = (0.5 * _e42.y);
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
+    float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
+    float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
+    float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
+    float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
+    float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
+    float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
+    float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
+    float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
+    float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
+    float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
+    float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
+    float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
+    float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
+    float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
+    float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
+    float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7901,7 +7901,7 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
         AirlightAbove _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    float k_14 = ((rf - radius_2) * (rf + radius_2));
+    float k_15 = ((rf - radius_2) * (rf + radius_2));
     bool loop_init_47 = true;
     while(true) {
         if (!loop_init_47) {
@@ -7926,8 +7926,8 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
             if (inside_2) {
                 e_9 = _e77.xy;
                 float b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                float root_4 = sqrt(((b_26 * b_26) - k_14));
-                r_max_1 = ((b_26 > 0.0) ? (-(k_14) / (b_26 + root_4)) : (root_4 - b_26));
+                float root_4 = sqrt(((b_26 * b_26) - k_15));
+                r_max_1 = ((b_26 > 0.0) ? (-(k_15) / (b_26 + root_4)) : (root_4 - b_26));
             }
             float _e118 = sum_11;
             AirlightAbove _e120 = above_3;
@@ -8290,6 +8290,8 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     float hi_6 = 0.0;
     bool local_194 = false;
     float around = 0.0;
+    uint k_9 = 0u;
+    bool local_195 = false;
     vec3 p_6 = (sign_2 * a_29.d);
     vec3 _e8 = airlight_basis_e1_(p_6);
     vec3 v_11 = cross(p_6, _e8);
@@ -8317,8 +8319,8 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     bool loop_init_51 = true;
     while(true) {
         if (!loop_init_51) {
-            uint _e569 = i_43;
-            i_43 = (_e569 + 1u);
+            uint _e421 = i_43;
+            i_43 = (_e421 + 1u);
         }
         loop_init_51 = false;
         uint _e79 = i_43;
@@ -8417,9 +8419,9 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
                 hi_6 = min(_e201, AIRLIGHT_PI);
             }
             float _e204 = lo_7;
-            float start_5 = (_e204 + AIRLIGHT_LOBE_TAIL);
+            float tail_1 = (_e204 + AIRLIGHT_LOBE_TAIL);
             float _e207 = hi_6;
-            if ((_e207 > start_5)) {
+            if ((_e207 > tail_1)) {
                 float _e211 = hi_6;
                 float _e212 = lo_7;
                 float _e215 = lo_7;
@@ -8429,158 +8431,110 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
             }
             bool cut_3 = local_194;
             around = 0.0;
-            {
-                float start_6 = lo_7;
-                float _e224 = hi_6;
-                float to_1 = (cut_3 ? start_5 : _e224);
-                vec2 _e226 = airlight_graded_from(scale_3, start_6, to_1);
-                float graded_10 = _e226.x;
-                float c_24 = (0.5 * _e226.y);
-                float hw_8 = (0.5 * _e226.y);
-                float _e234 = around;
-                float _e237 = big_b_1;
-                float _e241 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e237, start_6, graded_10, (c_24 - (0.09501251 * hw_8)));
-                around = (_e234 + ((0.1894506 * hw_8) * _e241));
-                float _e244 = around;
-                float _e247 = big_b_1;
-                float _e251 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e247, start_6, graded_10, (c_24 + (0.09501251 * hw_8)));
-                around = (_e244 + ((0.1894506 * hw_8) * _e251));
-                float _e254 = around;
-                float _e257 = big_b_1;
-                float _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e257, start_6, graded_10, (c_24 - (0.28160354 * hw_8)));
-                around = (_e254 + ((0.18260342 * hw_8) * _e261));
-                float _e264 = around;
-                float _e267 = big_b_1;
-                float _e271 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, start_6, graded_10, (c_24 + (0.28160354 * hw_8)));
-                around = (_e264 + ((0.18260342 * hw_8) * _e271));
-                float _e274 = around;
-                float _e277 = big_b_1;
-                float _e281 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e277, start_6, graded_10, (c_24 - (0.45801678 * hw_8)));
-                around = (_e274 + ((0.16915652 * hw_8) * _e281));
-                float _e284 = around;
-                float _e287 = big_b_1;
-                float _e291 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e287, start_6, graded_10, (c_24 + (0.45801678 * hw_8)));
-                around = (_e284 + ((0.16915652 * hw_8) * _e291));
-                float _e294 = around;
-                float _e297 = big_b_1;
-                float _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e297, start_6, graded_10, (c_24 - (0.61787623 * hw_8)));
-                around = (_e294 + ((0.14959599 * hw_8) * _e301));
-                float _e304 = around;
-                float _e307 = big_b_1;
-                float _e311 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, start_6, graded_10, (c_24 + (0.61787623 * hw_8)));
-                around = (_e304 + ((0.14959599 * hw_8) * _e311));
-                float _e314 = around;
-                float _e317 = big_b_1;
-                float _e321 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e317, start_6, graded_10, (c_24 - (0.7554044 * hw_8)));
-                around = (_e314 + ((0.12462897 * hw_8) * _e321));
-                float _e324 = around;
-                float _e327 = big_b_1;
-                float _e331 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e327, start_6, graded_10, (c_24 + (0.7554044 * hw_8)));
-                around = (_e324 + ((0.12462897 * hw_8) * _e331));
-                float _e334 = around;
-                float _e337 = big_b_1;
-                float _e341 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e337, start_6, graded_10, (c_24 - (0.8656312 * hw_8)));
-                around = (_e334 + ((0.09515851 * hw_8) * _e341));
-                float _e344 = around;
-                float _e347 = big_b_1;
-                float _e351 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e347, start_6, graded_10, (c_24 + (0.8656312 * hw_8)));
-                around = (_e344 + ((0.09515851 * hw_8) * _e351));
-                float _e354 = around;
-                float _e357 = big_b_1;
-                float _e361 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e357, start_6, graded_10, (c_24 - (0.944575 * hw_8)));
-                around = (_e354 + ((0.062253524 * hw_8) * _e361));
-                float _e364 = around;
-                float _e367 = big_b_1;
-                float _e371 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e367, start_6, graded_10, (c_24 + (0.944575 * hw_8)));
-                around = (_e364 + ((0.062253524 * hw_8) * _e371));
-                float _e374 = around;
-                float _e377 = big_b_1;
-                float _e381 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e377, start_6, graded_10, (c_24 - (0.9894009 * hw_8)));
-                around = (_e374 + ((0.02715246 * hw_8) * _e381));
-                float _e384 = around;
-                float _e387 = big_b_1;
-                float _e391 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e387, start_6, graded_10, (c_24 + (0.9894009 * hw_8)));
-                around = (_e384 + ((0.02715246 * hw_8) * _e391));
+            k_9 = 0u;
+            bool loop_init_52 = true;
+            while(true) {
+                if (!loop_init_52) {
+                    uint _e413 = k_9;
+                    k_9 = (_e413 + 1u);
+                }
+                loop_init_52 = false;
+                uint _e225 = k_9;
+                if ((_e225 < (cut_3 ? 2u : 1u))) {
+                } else {
+                    break;
+                }
+                {
+                    float _e230 = lo_7;
+                    uint _e231 = k_9;
+                    float start_5 = ((_e231 == 1u) ? tail_1 : _e230);
+                    float _e235 = hi_6;
+                    if (cut_3) {
+                        uint _e238 = k_9;
+                        local_195 = (_e238 == 0u);
+                    } else {
+                        local_195 = false;
+                    }
+                    bool _e242 = local_195;
+                    float to_1 = (_e242 ? tail_1 : _e235);
+                    vec2 _e244 = airlight_graded_from(scale_3, start_5, to_1);
+                    float graded_10 = _e244.x;
+                    float c_24 = (0.5 * _e244.y);
+                    float hw_8 = (0.5 * _e244.y);
+                    float _e252 = around;
+                    float _e255 = big_b_1;
+                    float _e259 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e255, start_5, graded_10, (c_24 - (0.09501251 * hw_8)));
+                    around = (_e252 + ((0.1894506 * hw_8) * _e259));
+                    float _e262 = around;
+                    float _e265 = big_b_1;
+                    float _e269 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e265, start_5, graded_10, (c_24 + (0.09501251 * hw_8)));
+                    around = (_e262 + ((0.1894506 * hw_8) * _e269));
+                    float _e272 = around;
+                    float _e275 = big_b_1;
+                    float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e275, start_5, graded_10, (c_24 - (0.28160354 * hw_8)));
+                    around = (_e272 + ((0.18260342 * hw_8) * _e279));
+                    float _e282 = around;
+                    float _e285 = big_b_1;
+                    float _e289 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, start_5, graded_10, (c_24 + (0.28160354 * hw_8)));
+                    around = (_e282 + ((0.18260342 * hw_8) * _e289));
+                    float _e292 = around;
+                    float _e295 = big_b_1;
+                    float _e299 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e295, start_5, graded_10, (c_24 - (0.45801678 * hw_8)));
+                    around = (_e292 + ((0.16915652 * hw_8) * _e299));
+                    float _e302 = around;
+                    float _e305 = big_b_1;
+                    float _e309 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e305, start_5, graded_10, (c_24 + (0.45801678 * hw_8)));
+                    around = (_e302 + ((0.16915652 * hw_8) * _e309));
+                    float _e312 = around;
+                    float _e315 = big_b_1;
+                    float _e319 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e315, start_5, graded_10, (c_24 - (0.61787623 * hw_8)));
+                    around = (_e312 + ((0.14959599 * hw_8) * _e319));
+                    float _e322 = around;
+                    float _e325 = big_b_1;
+                    float _e329 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e325, start_5, graded_10, (c_24 + (0.61787623 * hw_8)));
+                    around = (_e322 + ((0.14959599 * hw_8) * _e329));
+                    float _e332 = around;
+                    float _e335 = big_b_1;
+                    float _e339 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e335, start_5, graded_10, (c_24 - (0.7554044 * hw_8)));
+                    around = (_e332 + ((0.12462897 * hw_8) * _e339));
+                    float _e342 = around;
+                    float _e345 = big_b_1;
+                    float _e349 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e345, start_5, graded_10, (c_24 + (0.7554044 * hw_8)));
+                    around = (_e342 + ((0.12462897 * hw_8) * _e349));
+                    float _e352 = around;
+                    float _e355 = big_b_1;
+                    float _e359 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e355, start_5, graded_10, (c_24 - (0.8656312 * hw_8)));
+                    around = (_e352 + ((0.09515851 * hw_8) * _e359));
+                    float _e362 = around;
+                    float _e365 = big_b_1;
+                    float _e369 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e365, start_5, graded_10, (c_24 + (0.8656312 * hw_8)));
+                    around = (_e362 + ((0.09515851 * hw_8) * _e369));
+                    float _e372 = around;
+                    float _e375 = big_b_1;
+                    float _e379 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e375, start_5, graded_10, (c_24 - (0.944575 * hw_8)));
+                    around = (_e372 + ((0.062253524 * hw_8) * _e379));
+                    float _e382 = around;
+                    float _e385 = big_b_1;
+                    float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e385, start_5, graded_10, (c_24 + (0.944575 * hw_8)));
+                    around = (_e382 + ((0.062253524 * hw_8) * _e389));
+                    float _e392 = around;
+                    float _e395 = big_b_1;
+                    float _e399 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, start_5, graded_10, (c_24 - (0.9894009 * hw_8)));
+                    around = (_e392 + ((0.02715246 * hw_8) * _e399));
+                    float _e402 = around;
+                    float _e405 = big_b_1;
+                    float _e409 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e405, start_5, graded_10, (c_24 + (0.9894009 * hw_8)));
+                    around = (_e402 + ((0.02715246 * hw_8) * _e409));
+                }
             }
-            if (cut_3) {
-                float to_2 = hi_6;
-                vec2 _e395 = airlight_graded_from(scale_3, start_5, to_2);
-                float graded_11 = _e395.x;
-                float c_25 = (0.5 * _e395.y);
-                float hw_9 = (0.5 * _e395.y);
-                float _e403 = around;
-                float _e406 = big_b_1;
-                float _e410 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, start_5, graded_11, (c_25 - (0.09501251 * hw_9)));
-                around = (_e403 + ((0.1894506 * hw_9) * _e410));
-                float _e413 = around;
-                float _e416 = big_b_1;
-                float _e420 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e416, start_5, graded_11, (c_25 + (0.09501251 * hw_9)));
-                around = (_e413 + ((0.1894506 * hw_9) * _e420));
-                float _e423 = around;
-                float _e426 = big_b_1;
-                float _e430 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e426, start_5, graded_11, (c_25 - (0.28160354 * hw_9)));
-                around = (_e423 + ((0.18260342 * hw_9) * _e430));
-                float _e433 = around;
-                float _e436 = big_b_1;
-                float _e440 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e436, start_5, graded_11, (c_25 + (0.28160354 * hw_9)));
-                around = (_e433 + ((0.18260342 * hw_9) * _e440));
-                float _e443 = around;
-                float _e446 = big_b_1;
-                float _e450 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e446, start_5, graded_11, (c_25 - (0.45801678 * hw_9)));
-                around = (_e443 + ((0.16915652 * hw_9) * _e450));
-                float _e453 = around;
-                float _e456 = big_b_1;
-                float _e460 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e456, start_5, graded_11, (c_25 + (0.45801678 * hw_9)));
-                around = (_e453 + ((0.16915652 * hw_9) * _e460));
-                float _e463 = around;
-                float _e466 = big_b_1;
-                float _e470 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e466, start_5, graded_11, (c_25 - (0.61787623 * hw_9)));
-                around = (_e463 + ((0.14959599 * hw_9) * _e470));
-                float _e473 = around;
-                float _e476 = big_b_1;
-                float _e480 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e476, start_5, graded_11, (c_25 + (0.61787623 * hw_9)));
-                around = (_e473 + ((0.14959599 * hw_9) * _e480));
-                float _e483 = around;
-                float _e486 = big_b_1;
-                float _e490 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e486, start_5, graded_11, (c_25 - (0.7554044 * hw_9)));
-                around = (_e483 + ((0.12462897 * hw_9) * _e490));
-                float _e493 = around;
-                float _e496 = big_b_1;
-                float _e500 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e496, start_5, graded_11, (c_25 + (0.7554044 * hw_9)));
-                around = (_e493 + ((0.12462897 * hw_9) * _e500));
-                float _e503 = around;
-                float _e506 = big_b_1;
-                float _e510 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e506, start_5, graded_11, (c_25 - (0.8656312 * hw_9)));
-                around = (_e503 + ((0.09515851 * hw_9) * _e510));
-                float _e513 = around;
-                float _e516 = big_b_1;
-                float _e520 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e516, start_5, graded_11, (c_25 + (0.8656312 * hw_9)));
-                around = (_e513 + ((0.09515851 * hw_9) * _e520));
-                float _e523 = around;
-                float _e526 = big_b_1;
-                float _e530 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e526, start_5, graded_11, (c_25 - (0.944575 * hw_9)));
-                around = (_e523 + ((0.062253524 * hw_9) * _e530));
-                float _e533 = around;
-                float _e536 = big_b_1;
-                float _e540 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e536, start_5, graded_11, (c_25 + (0.944575 * hw_9)));
-                around = (_e533 + ((0.062253524 * hw_9) * _e540));
-                float _e543 = around;
-                float _e546 = big_b_1;
-                float _e550 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e546, start_5, graded_11, (c_25 - (0.9894009 * hw_9)));
-                around = (_e543 + ((0.02715246 * hw_9) * _e550));
-                float _e553 = around;
-                float _e556 = big_b_1;
-                float _e560 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e556, start_5, graded_11, (c_25 + (0.9894009 * hw_9)));
-                around = (_e553 + ((0.02715246 * hw_9) * _e560));
-            }
-            float _e563 = sum_14;
-            float _e564 = wpsi;
-            float _e565 = around;
-            sum_14 = (_e563 + (_e564 * _e565));
+            float _e415 = sum_14;
+            float _e416 = wpsi;
+            float _e417 = around;
+            sum_14 = (_e415 + (_e416 * _e417));
         }
     }
-    float _e571 = sum_14;
-    return _e571;
+    float _e423 = sum_14;
+    return _e423;
 }
 
 float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
@@ -8588,12 +8542,12 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_195 = false;
     bool local_196 = false;
     bool local_197 = false;
     bool local_198 = false;
     bool local_199 = false;
     bool local_200 = false;
+    bool local_201 = false;
     vec3 v_12 = (a_30.c - x_29);
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
@@ -8602,13 +8556,13 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
     float sin_a_2 = (a_30.radius / _e5);
     AirlightCap cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1.0 - sin_a_2) * (1.0 + sin_a_2))));
     float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
-    bool loop_init_52 = true;
+    bool loop_init_53 = true;
     while(true) {
-        if (!loop_init_52) {
+        if (!loop_init_53) {
             uint _e102 = j_13;
             j_13 = (_e102 + 1u);
         }
-        loop_init_52 = false;
+        loop_init_53 = false;
         uint _e32 = j_13;
         if ((_e32 < 2u)) {
         } else {
@@ -8617,49 +8571,49 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
         {
             uint _e39 = j_13;
             vec2 lobe_6 = ((_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy);
-            float c_26 = dot(cap_4.a, (lobe_6.x * a_30.d));
+            float c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
             float _e48 = chosen;
             if ((_e48 == 0.0)) {
-                local_195 = (lobe_6.y > 0.0);
-            } else {
-                local_195 = false;
-            }
-            bool _e57 = local_195;
-            if (_e57) {
-                local_196 = (lobe_6.y < (_e23 + _e23));
+                local_196 = (lobe_6.y > 0.0);
             } else {
                 local_196 = false;
             }
-            bool _e64 = local_196;
-            if (_e64) {
-                if (!(!((c_26 < -(cap_4.cos_a))))) {
-                    local_198 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_198 = true;
-                }
-                bool _e78 = local_198;
-                local_197 = _e78;
+            bool _e57 = local_196;
+            if (_e57) {
+                local_197 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_197 = false;
             }
-            bool _e80 = local_197;
-            if (_e80) {
-                if (!((c_26 > cap_4.cos_a))) {
-                    float _e88 = airlight_acos(c_26);
-                    local_200 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+            bool _e64 = local_197;
+            if (_e64) {
+                if (!(!((c_25 < -(cap_4.cos_a))))) {
+                    local_199 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
-                    local_200 = true;
+                    local_199 = true;
                 }
-                bool _e96 = local_200;
-                local_199 = _e96;
+                bool _e78 = local_199;
+                local_198 = _e78;
             } else {
-                local_199 = false;
+                local_198 = false;
             }
-            bool _e98 = local_199;
+            bool _e80 = local_198;
+            if (_e80) {
+                if (!((c_25 > cap_4.cos_a))) {
+                    float _e88 = airlight_acos(c_25);
+                    local_201 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+                } else {
+                    local_201 = true;
+                }
+                bool _e96 = local_201;
+                local_200 = _e96;
+            } else {
+                local_200 = false;
+            }
+            bool _e98 = local_200;
             if (_e98) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_26;
+                cos_p_2 = c_25;
             }
         }
     }
@@ -8704,10 +8658,10 @@ float airlight_area_node(AirlightScene s_51, AirlightArea a_32, float theta) {
 AirlightResult airlight_area_light(AirlightScene s_52) {
     AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
-    float k_9 = 0.0;
+    float k_10 = 0.0;
     float gauss_1 = 0.0;
     uint j_14 = 0u;
-    bool local_201 = false;
+    bool local_202 = false;
     AirlightArea _e1 = airlight_area(s_52);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
@@ -8717,13 +8671,13 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
     st_1 = _e13;
     uint max_panels_3 = max(AIRLIGHT_AREA_RAY_PANELS, _e1.panels);
     uint evaluations = ((2u * max_panels_3) - 1u);
-    bool loop_init_53 = true;
+    bool loop_init_54 = true;
     while(true) {
-        if (!loop_init_53) {
+        if (!loop_init_54) {
             uint _e97 = step_2;
             step_2 = (_e97 + 1u);
         }
-        loop_init_53 = false;
+        loop_init_54 = false;
         uint _e24 = step_2;
         if ((_e24 < evaluations)) {
         } else {
@@ -8732,20 +8686,20 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_27 = (0.5 * (_e27 + _e29));
+            float c_26 = (0.5 * (_e27 + _e29));
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
-            float hw_10 = (0.5 * (_e34 - _e36));
-            k_9 = 0.0;
+            float hw_9 = (0.5 * (_e34 - _e36));
+            k_10 = 0.0;
             gauss_1 = 0.0;
             j_14 = 0u;
-            bool loop_init_54 = true;
+            bool loop_init_55 = true;
             while(true) {
-                if (!loop_init_54) {
+                if (!loop_init_55) {
                     uint _e82 = j_14;
                     j_14 = (_e82 + 1u);
                 }
-                loop_init_54 = false;
+                loop_init_55 = false;
                 uint _e46 = j_14;
                 if ((_e46 < 15u)) {
                 } else {
@@ -8757,23 +8711,23 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
                     uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_14;
-                        local_201 = (_e66 < 14u);
+                        local_202 = (_e66 < 14u);
                     } else {
-                        local_201 = false;
+                        local_202 = false;
                     }
-                    bool _e70 = local_201;
-                    float x_40 = (_e70 ? (c_27 - (hw_10 * node_4.x)) : (c_27 + (hw_10 * node_4.x)));
+                    bool _e70 = local_202;
+                    float x_40 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
                     float _e72 = airlight_area_node(s_52, _e1, x_40);
-                    float _e73 = k_9;
-                    k_9 = (_e73 + (node_4.y * _e72));
+                    float _e73 = k_10;
+                    k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
             }
             AirlightAdaptive _e84 = st_1;
-            float _e85 = k_9;
+            float _e85 = k_10;
             float _e87 = gauss_1;
-            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            AirlightAdaptive _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             bool _e94 = st_1.more;
             if (!(_e94)) {
@@ -8793,21 +8747,21 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
 }
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
-    bool local_202 = false;
     bool local_203 = false;
+    bool local_204 = false;
     bool _e1 = airlight_valid(s_53);
     if (!(!(_e1))) {
-        local_202 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_202 = true;
-    }
-    bool _e10 = local_202;
-    if (!(_e10)) {
-        local_203 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_203 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_203 = true;
     }
-    bool _e18 = local_203;
+    bool _e10 = local_203;
+    if (!(_e10)) {
+        local_204 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_204 = true;
+    }
+    bool _e18 = local_204;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8816,14 +8770,14 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_204 = false;
+    bool local_205 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_204 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_205 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_204 = true;
+        local_205 = true;
     }
-    bool _e11 = local_204;
+    bool _e11 = local_205;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -8832,17 +8786,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_5) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_205 = false;
+    bool local_206 = false;
     AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_7 = n_5.scene;
     bool _e7 = airlight_vec_finite(p_7.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_7.dir);
-        local_205 = _e11;
+        local_206 = _e11;
     } else {
-        local_205 = false;
+        local_206 = false;
     }
-    bool _e13 = local_205;
+    bool _e13 = local_206;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -8866,21 +8820,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
-    bool local_206 = false;
     bool local_207 = false;
+    bool local_208 = false;
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_206 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_206 = true;
-    }
-    bool _e10 = local_206;
-    if (!(_e10)) {
-        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_207 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_207 = true;
     }
-    bool _e18 = local_207;
+    bool _e10 = local_207;
+    if (!(_e10)) {
+        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_208 = true;
+    }
+    bool _e18 = local_208;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8889,21 +8843,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
-    bool local_208 = false;
     bool local_209 = false;
+    bool local_210 = false;
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_208 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_208 = true;
-    }
-    bool _e10 = local_208;
-    if (!(_e10)) {
-        local_209 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_209 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_209 = true;
     }
-    bool _e18 = local_209;
+    bool _e10 = local_209;
+    if (!(_e10)) {
+        local_210 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_210 = true;
+    }
+    bool _e18 = local_210;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8928,12 +8882,12 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
 AirlightResult airlight_in_scatter(AirlightScene s_56) {
     AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
-    float k_10 = 0.0;
+    float k_11 = 0.0;
     float gauss_2 = 0.0;
     uint j_15 = 0u;
-    bool local_210 = false;
-    float f = 0.0;
     bool local_211 = false;
+    float f = 0.0;
+    bool local_212 = false;
     bool _e1 = airlight_valid(s_56);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -8952,13 +8906,13 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
     AirlightAdaptive _e30 = airlight_adaptive(_e12.edges[0], _e12.edges[1]);
     st_2 = _e30;
     uint evaluations_1 = ((2u * _e12.max_panels) - 1u);
-    bool loop_init_55 = true;
+    bool loop_init_56 = true;
     while(true) {
-        if (!loop_init_55) {
+        if (!loop_init_56) {
             uint _e137 = step_3;
             step_3 = (_e137 + 1u);
         }
-        loop_init_55 = false;
+        loop_init_56 = false;
         uint _e39 = step_3;
         if ((_e39 < evaluations_1)) {
         } else {
@@ -8967,20 +8921,20 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_28 = (0.5 * (_e42 + _e44));
+            float c_27 = (0.5 * (_e42 + _e44));
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
-            float hw_11 = (0.5 * (_e49 - _e51));
-            k_10 = 0.0;
+            float hw_10 = (0.5 * (_e49 - _e51));
+            k_11 = 0.0;
             gauss_2 = 0.0;
             j_15 = 0u;
-            bool loop_init_56 = true;
+            bool loop_init_57 = true;
             while(true) {
-                if (!loop_init_56) {
+                if (!loop_init_57) {
                     uint _e121 = j_15;
                     j_15 = (_e121 + 1u);
                 }
-                loop_init_56 = false;
+                loop_init_57 = false;
                 uint _e61 = j_15;
                 if ((_e61 < 7u)) {
                 } else {
@@ -8992,12 +8946,12 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
                     uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_15;
-                        local_210 = (_e81 < 6u);
+                        local_211 = (_e81 < 6u);
                     } else {
-                        local_210 = false;
+                        local_211 = false;
                     }
-                    bool _e85 = local_210;
-                    float w_11 = (_e85 ? (c_28 - (hw_11 * node_5.x)) : (c_28 + (hw_11 * node_5.x)));
+                    bool _e85 = local_211;
+                    float w_11 = (_e85 ? (c_27 - (hw_10 * node_5.x)) : (c_27 + (hw_10 * node_5.x)));
                     AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
@@ -9006,28 +8960,28 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
                             return _e93;
                         }
                         if ((s_56.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_211 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_212 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_211 = false;
+                            local_212 = false;
                         }
-                        bool _e106 = local_211;
+                        bool _e106 = local_212;
                         if (_e106) {
                             return _e93;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    float _e110 = k_10;
+                    float _e110 = k_11;
                     float _e112 = f;
-                    k_10 = (_e110 + (node_5.y * _e112));
+                    k_11 = (_e110 + (node_5.y * _e112));
                     float _e115 = gauss_2;
                     float _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
                 }
             }
             AirlightAdaptive _e123 = st_2;
-            float _e124 = k_10;
+            float _e124 = k_11;
             float _e126 = gauss_2;
-            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            AirlightAdaptive _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             bool _e134 = st_2.more;
             if (!(_e134)) {

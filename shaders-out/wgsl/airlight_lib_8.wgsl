@@ -6300,7 +6300,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
         let b_22 = dot(oc, _e45);
         let _e77 = a_20.radius;
         let _e79 = a_20.radius;
-        let k_11 = (dot(oc, oc) - (_e77 * _e79));
+        let k_12 = (dot(oc, oc) - (_e77 * _e79));
         let _e84 = airlight_safe_length((oc - (b_22 * _e45)));
         let _e86 = a_20.radius;
         let _e89 = a_20.radius;
@@ -6309,7 +6309,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
             let root_2 = sqrt(disc_2);
             let q_13 = (-(b_22) - select(root_2, -(root_2), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
             cut0_ = q_13;
-            cut1_ = (k_11 / q_13);
+            cut1_ = (k_12 / q_13);
             cut_count = 2u;
         }
     } else {
@@ -6757,15 +6757,15 @@ fn airlight_outline_chord(o_4: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) 
         let a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
         let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_12 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        let disc_3 = ((b_23 * b_23) - (a_47 * k_12));
+        let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
+        let disc_3 = ((b_23 * b_23) - (a_47 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
         let t_11 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
         let r1_2 = (t_11 / a_47);
-        let r2_4 = (k_12 / t_11);
+        let r2_4 = (k_13 / t_11);
         let hi_9 = max(r1_2, r2_4);
         if !((hi_9 > 0f)) {
             return vec2(0f);
@@ -6813,64 +6813,64 @@ fn airlight_flat_lobe_along(s_40: AirlightScene, z_13: f32, o_5: AirlightOutline
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
-    let k_13 = (w_9.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_13 * lobe_2.p.xy)));
+    let k_14 = (w_9.z / -(lobe_2.p.z));
+    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
-    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_13 * _e23.x)));
-    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_13 * _e23.y)));
+    let _e34 = airlight_atan2_upper(_e23.x, (lobe_2.l + (k_14 * _e23.x)));
+    let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     let graded_8 = _e42.x;
     let c_21 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_13, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -7428,7 +7428,7 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
         let _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
-    let k_14 = ((rf - radius_2) * (rf + radius_2));
+    let k_15 = ((rf - radius_2) * (rf + radius_2));
     loop {
         let _e73 = i_40;
         if (_e73 < 32u) {
@@ -7447,8 +7447,8 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
             if inside_2 {
                 e_9 = _e77.xy;
                 let b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_26 * b_26) - k_14));
-                r_max_1 = select((root_4 - b_26), (-(k_14) / (b_26 + root_4)), (b_26 > 0f));
+                let root_4 = sqrt(((b_26 * b_26) - k_15));
+                r_max_1 = select((root_4 - b_26), (-(k_15) / (b_26 + root_4)), (b_26 > 0f));
             }
             let _e118 = sum_11;
             let _e120 = above_3;
@@ -7811,6 +7811,8 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
     var hi_6: f32;
     var local_194: bool;
     var around: f32;
+    var k_9: u32;
+    var local_195: bool;
 
     let p_6 = (sign_2 * a_29.d);
     let _e8 = airlight_basis_e1_(p_6);
@@ -7933,9 +7935,9 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
                 hi_6 = min(_e201, AIRLIGHT_PI);
             }
             let _e204 = lo_7;
-            let start_5 = (_e204 + AIRLIGHT_LOBE_TAIL);
+            let tail_1 = (_e204 + AIRLIGHT_LOBE_TAIL);
             let _e207 = hi_6;
-            if (_e207 > start_5) {
+            if (_e207 > tail_1) {
                 let _e211 = hi_6;
                 let _e212 = lo_7;
                 let _e215 = lo_7;
@@ -7945,162 +7947,112 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
             }
             let cut_3 = local_194;
             around = 0f;
-            {
-                let start_6 = lo_7;
-                let _e224 = hi_6;
-                let to_1 = select(_e224, start_5, cut_3);
-                let _e226 = airlight_graded_from(scale_3, start_6, to_1);
-                let graded_10 = _e226.x;
-                let c_24 = (0.5f * _e226.y);
-                let hw_8 = (0.5f * _e226.y);
-                let _e234 = around;
-                let _e237 = big_b_1;
-                let _e241 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e237, start_6, graded_10, (c_24 - (0.09501251f * hw_8)));
-                around = (_e234 + ((0.1894506f * hw_8) * _e241));
-                let _e244 = around;
-                let _e247 = big_b_1;
-                let _e251 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e247, start_6, graded_10, (c_24 + (0.09501251f * hw_8)));
-                around = (_e244 + ((0.1894506f * hw_8) * _e251));
-                let _e254 = around;
-                let _e257 = big_b_1;
-                let _e261 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e257, start_6, graded_10, (c_24 - (0.28160354f * hw_8)));
-                around = (_e254 + ((0.18260342f * hw_8) * _e261));
-                let _e264 = around;
-                let _e267 = big_b_1;
-                let _e271 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e267, start_6, graded_10, (c_24 + (0.28160354f * hw_8)));
-                around = (_e264 + ((0.18260342f * hw_8) * _e271));
-                let _e274 = around;
-                let _e277 = big_b_1;
-                let _e281 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e277, start_6, graded_10, (c_24 - (0.45801678f * hw_8)));
-                around = (_e274 + ((0.16915652f * hw_8) * _e281));
-                let _e284 = around;
-                let _e287 = big_b_1;
-                let _e291 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e287, start_6, graded_10, (c_24 + (0.45801678f * hw_8)));
-                around = (_e284 + ((0.16915652f * hw_8) * _e291));
-                let _e294 = around;
-                let _e297 = big_b_1;
-                let _e301 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e297, start_6, graded_10, (c_24 - (0.61787623f * hw_8)));
-                around = (_e294 + ((0.14959599f * hw_8) * _e301));
-                let _e304 = around;
-                let _e307 = big_b_1;
-                let _e311 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e307, start_6, graded_10, (c_24 + (0.61787623f * hw_8)));
-                around = (_e304 + ((0.14959599f * hw_8) * _e311));
-                let _e314 = around;
-                let _e317 = big_b_1;
-                let _e321 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e317, start_6, graded_10, (c_24 - (0.7554044f * hw_8)));
-                around = (_e314 + ((0.12462897f * hw_8) * _e321));
-                let _e324 = around;
-                let _e327 = big_b_1;
-                let _e331 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e327, start_6, graded_10, (c_24 + (0.7554044f * hw_8)));
-                around = (_e324 + ((0.12462897f * hw_8) * _e331));
-                let _e334 = around;
-                let _e337 = big_b_1;
-                let _e341 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e337, start_6, graded_10, (c_24 - (0.8656312f * hw_8)));
-                around = (_e334 + ((0.09515851f * hw_8) * _e341));
-                let _e344 = around;
-                let _e347 = big_b_1;
-                let _e351 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e347, start_6, graded_10, (c_24 + (0.8656312f * hw_8)));
-                around = (_e344 + ((0.09515851f * hw_8) * _e351));
-                let _e354 = around;
-                let _e357 = big_b_1;
-                let _e361 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e357, start_6, graded_10, (c_24 - (0.944575f * hw_8)));
-                around = (_e354 + ((0.062253524f * hw_8) * _e361));
-                let _e364 = around;
-                let _e367 = big_b_1;
-                let _e371 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e367, start_6, graded_10, (c_24 + (0.944575f * hw_8)));
-                around = (_e364 + ((0.062253524f * hw_8) * _e371));
-                let _e374 = around;
-                let _e377 = big_b_1;
-                let _e381 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e377, start_6, graded_10, (c_24 - (0.9894009f * hw_8)));
-                around = (_e374 + ((0.02715246f * hw_8) * _e381));
-                let _e384 = around;
-                let _e387 = big_b_1;
-                let _e391 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e387, start_6, graded_10, (c_24 + (0.9894009f * hw_8)));
-                around = (_e384 + ((0.02715246f * hw_8) * _e391));
+            k_9 = 0u;
+            loop {
+                let _e225 = k_9;
+                if (_e225 < select(1u, 2u, cut_3)) {
+                } else {
+                    break;
+                }
+                {
+                    let _e230 = lo_7;
+                    let _e231 = k_9;
+                    let start_5 = select(_e230, tail_1, (_e231 == 1u));
+                    let _e235 = hi_6;
+                    if cut_3 {
+                        let _e238 = k_9;
+                        local_195 = (_e238 == 0u);
+                    } else {
+                        local_195 = false;
+                    }
+                    let _e242 = local_195;
+                    let to_1 = select(_e235, tail_1, _e242);
+                    let _e244 = airlight_graded_from(scale_3, start_5, to_1);
+                    let graded_10 = _e244.x;
+                    let c_24 = (0.5f * _e244.y);
+                    let hw_8 = (0.5f * _e244.y);
+                    let _e252 = around;
+                    let _e255 = big_b_1;
+                    let _e259 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e255, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
+                    around = (_e252 + ((0.1894506f * hw_8) * _e259));
+                    let _e262 = around;
+                    let _e265 = big_b_1;
+                    let _e269 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e265, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
+                    around = (_e262 + ((0.1894506f * hw_8) * _e269));
+                    let _e272 = around;
+                    let _e275 = big_b_1;
+                    let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e275, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
+                    around = (_e272 + ((0.18260342f * hw_8) * _e279));
+                    let _e282 = around;
+                    let _e285 = big_b_1;
+                    let _e289 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
+                    around = (_e282 + ((0.18260342f * hw_8) * _e289));
+                    let _e292 = around;
+                    let _e295 = big_b_1;
+                    let _e299 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e295, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
+                    around = (_e292 + ((0.16915652f * hw_8) * _e299));
+                    let _e302 = around;
+                    let _e305 = big_b_1;
+                    let _e309 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e305, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
+                    around = (_e302 + ((0.16915652f * hw_8) * _e309));
+                    let _e312 = around;
+                    let _e315 = big_b_1;
+                    let _e319 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e315, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
+                    around = (_e312 + ((0.14959599f * hw_8) * _e319));
+                    let _e322 = around;
+                    let _e325 = big_b_1;
+                    let _e329 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e325, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
+                    around = (_e322 + ((0.14959599f * hw_8) * _e329));
+                    let _e332 = around;
+                    let _e335 = big_b_1;
+                    let _e339 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e335, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
+                    around = (_e332 + ((0.12462897f * hw_8) * _e339));
+                    let _e342 = around;
+                    let _e345 = big_b_1;
+                    let _e349 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e345, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
+                    around = (_e342 + ((0.12462897f * hw_8) * _e349));
+                    let _e352 = around;
+                    let _e355 = big_b_1;
+                    let _e359 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e355, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
+                    around = (_e352 + ((0.09515851f * hw_8) * _e359));
+                    let _e362 = around;
+                    let _e365 = big_b_1;
+                    let _e369 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e365, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
+                    around = (_e362 + ((0.09515851f * hw_8) * _e369));
+                    let _e372 = around;
+                    let _e375 = big_b_1;
+                    let _e379 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e375, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
+                    around = (_e372 + ((0.062253524f * hw_8) * _e379));
+                    let _e382 = around;
+                    let _e385 = big_b_1;
+                    let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e385, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
+                    around = (_e382 + ((0.062253524f * hw_8) * _e389));
+                    let _e392 = around;
+                    let _e395 = big_b_1;
+                    let _e399 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
+                    around = (_e392 + ((0.02715246f * hw_8) * _e399));
+                    let _e402 = around;
+                    let _e405 = big_b_1;
+                    let _e409 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e405, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
+                    around = (_e402 + ((0.02715246f * hw_8) * _e409));
+                }
+                continuing {
+                    let _e413 = k_9;
+                    k_9 = (_e413 + 1u);
+                }
             }
-            if cut_3 {
-                let to_2 = hi_6;
-                let _e395 = airlight_graded_from(scale_3, start_5, to_2);
-                let graded_11 = _e395.x;
-                let c_25 = (0.5f * _e395.y);
-                let hw_9 = (0.5f * _e395.y);
-                let _e403 = around;
-                let _e406 = big_b_1;
-                let _e410 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e406, start_5, graded_11, (c_25 - (0.09501251f * hw_9)));
-                around = (_e403 + ((0.1894506f * hw_9) * _e410));
-                let _e413 = around;
-                let _e416 = big_b_1;
-                let _e420 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e416, start_5, graded_11, (c_25 + (0.09501251f * hw_9)));
-                around = (_e413 + ((0.1894506f * hw_9) * _e420));
-                let _e423 = around;
-                let _e426 = big_b_1;
-                let _e430 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e426, start_5, graded_11, (c_25 - (0.28160354f * hw_9)));
-                around = (_e423 + ((0.18260342f * hw_9) * _e430));
-                let _e433 = around;
-                let _e436 = big_b_1;
-                let _e440 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e436, start_5, graded_11, (c_25 + (0.28160354f * hw_9)));
-                around = (_e433 + ((0.18260342f * hw_9) * _e440));
-                let _e443 = around;
-                let _e446 = big_b_1;
-                let _e450 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e446, start_5, graded_11, (c_25 - (0.45801678f * hw_9)));
-                around = (_e443 + ((0.16915652f * hw_9) * _e450));
-                let _e453 = around;
-                let _e456 = big_b_1;
-                let _e460 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e456, start_5, graded_11, (c_25 + (0.45801678f * hw_9)));
-                around = (_e453 + ((0.16915652f * hw_9) * _e460));
-                let _e463 = around;
-                let _e466 = big_b_1;
-                let _e470 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e466, start_5, graded_11, (c_25 - (0.61787623f * hw_9)));
-                around = (_e463 + ((0.14959599f * hw_9) * _e470));
-                let _e473 = around;
-                let _e476 = big_b_1;
-                let _e480 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e476, start_5, graded_11, (c_25 + (0.61787623f * hw_9)));
-                around = (_e473 + ((0.14959599f * hw_9) * _e480));
-                let _e483 = around;
-                let _e486 = big_b_1;
-                let _e490 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e486, start_5, graded_11, (c_25 - (0.7554044f * hw_9)));
-                around = (_e483 + ((0.12462897f * hw_9) * _e490));
-                let _e493 = around;
-                let _e496 = big_b_1;
-                let _e500 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e496, start_5, graded_11, (c_25 + (0.7554044f * hw_9)));
-                around = (_e493 + ((0.12462897f * hw_9) * _e500));
-                let _e503 = around;
-                let _e506 = big_b_1;
-                let _e510 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e506, start_5, graded_11, (c_25 - (0.8656312f * hw_9)));
-                around = (_e503 + ((0.09515851f * hw_9) * _e510));
-                let _e513 = around;
-                let _e516 = big_b_1;
-                let _e520 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e516, start_5, graded_11, (c_25 + (0.8656312f * hw_9)));
-                around = (_e513 + ((0.09515851f * hw_9) * _e520));
-                let _e523 = around;
-                let _e526 = big_b_1;
-                let _e530 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e526, start_5, graded_11, (c_25 - (0.944575f * hw_9)));
-                around = (_e523 + ((0.062253524f * hw_9) * _e530));
-                let _e533 = around;
-                let _e536 = big_b_1;
-                let _e540 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e536, start_5, graded_11, (c_25 + (0.944575f * hw_9)));
-                around = (_e533 + ((0.062253524f * hw_9) * _e540));
-                let _e543 = around;
-                let _e546 = big_b_1;
-                let _e550 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e546, start_5, graded_11, (c_25 - (0.9894009f * hw_9)));
-                around = (_e543 + ((0.02715246f * hw_9) * _e550));
-                let _e553 = around;
-                let _e556 = big_b_1;
-                let _e560 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e556, start_5, graded_11, (c_25 + (0.9894009f * hw_9)));
-                around = (_e553 + ((0.02715246f * hw_9) * _e560));
-            }
-            let _e563 = sum_14;
-            let _e564 = wpsi;
-            let _e565 = around;
-            sum_14 = (_e563 + (_e564 * _e565));
+            let _e415 = sum_14;
+            let _e416 = wpsi;
+            let _e417 = around;
+            sum_14 = (_e415 + (_e416 * _e417));
         }
         continuing {
-            let _e569 = i_43;
-            i_43 = (_e569 + 1u);
+            let _e421 = i_43;
+            i_43 = (_e421 + 1u);
         }
     }
-    let _e571 = sum_14;
-    return _e571;
+    let _e423 = sum_14;
+    return _e423;
 }
 
 fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
@@ -8108,12 +8060,12 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> 
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
-    var local_195: bool;
     var local_196: bool;
     var local_197: bool;
     var local_198: bool;
     var local_199: bool;
     var local_200: bool;
+    var local_201: bool;
 
     let v_12 = (a_30.c - x_29);
     let _e5 = airlight_safe_length(v_12);
@@ -8132,49 +8084,49 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> 
         {
             let _e39 = j_13;
             let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
-            let c_26 = dot(cap_4.a, (lobe_6.x * a_30.d));
+            let c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
             let _e48 = chosen;
             if (_e48 == 0f) {
-                local_195 = (lobe_6.y > 0f);
-            } else {
-                local_195 = false;
-            }
-            let _e57 = local_195;
-            if _e57 {
-                local_196 = (lobe_6.y < (_e23 + _e23));
+                local_196 = (lobe_6.y > 0f);
             } else {
                 local_196 = false;
             }
-            let _e64 = local_196;
-            if _e64 {
-                if !(!((c_26 < -(cap_4.cos_a)))) {
-                    local_198 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_198 = true;
-                }
-                let _e78 = local_198;
-                local_197 = _e78;
+            let _e57 = local_196;
+            if _e57 {
+                local_197 = (lobe_6.y < (_e23 + _e23));
             } else {
                 local_197 = false;
             }
-            let _e80 = local_197;
-            if _e80 {
-                if !((c_26 > cap_4.cos_a)) {
-                    let _e88 = airlight_acos(c_26);
-                    local_200 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+            let _e64 = local_197;
+            if _e64 {
+                if !(!((c_25 < -(cap_4.cos_a)))) {
+                    local_199 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
-                    local_200 = true;
+                    local_199 = true;
                 }
-                let _e96 = local_200;
-                local_199 = _e96;
+                let _e78 = local_199;
+                local_198 = _e78;
             } else {
-                local_199 = false;
+                local_198 = false;
             }
-            let _e98 = local_199;
+            let _e80 = local_198;
+            if _e80 {
+                if !((c_25 > cap_4.cos_a)) {
+                    let _e88 = airlight_acos(c_25);
+                    local_201 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+                } else {
+                    local_201 = true;
+                }
+                let _e96 = local_201;
+                local_200 = _e96;
+            } else {
+                local_200 = false;
+            }
+            let _e98 = local_200;
             if _e98 {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
-                cos_p_2 = c_26;
+                cos_p_2 = c_25;
             }
         }
         continuing {
@@ -8223,10 +8175,10 @@ fn airlight_area_node(s_51: AirlightScene, a_32: AirlightArea, theta: f32) -> f3
 fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
-    var k_9: f32;
+    var k_10: f32;
     var gauss_1: f32;
     var j_14: u32;
-    var local_201: bool;
+    var local_202: bool;
 
     let _e1 = airlight_area(s_52);
     if (_e1.outcome == 1u) {
@@ -8246,11 +8198,11 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_27 = (0.5f * (_e27 + _e29));
+            let c_26 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
-            let hw_10 = (0.5f * (_e34 - _e36));
-            k_9 = 0f;
+            let hw_9 = (0.5f * (_e34 - _e36));
+            k_10 = 0f;
             gauss_1 = 0f;
             j_14 = 0u;
             loop {
@@ -8265,15 +8217,15 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                     let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_14;
-                        local_201 = (_e66 < 14u);
+                        local_202 = (_e66 < 14u);
                     } else {
-                        local_201 = false;
+                        local_202 = false;
                     }
-                    let _e70 = local_201;
-                    let x_40 = select((c_27 + (hw_10 * node_4.x)), (c_27 - (hw_10 * node_4.x)), _e70);
+                    let _e70 = local_202;
+                    let x_40 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
                     let _e72 = airlight_area_node(s_52, _e1, x_40);
-                    let _e73 = k_9;
-                    k_9 = (_e73 + (node_4.y * _e72));
+                    let _e73 = k_10;
+                    k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
                     gauss_1 = (_e77 + (node_4.z * _e72));
                 }
@@ -8283,9 +8235,9 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                 }
             }
             let _e84 = st_1;
-            let _e85 = k_9;
+            let _e85 = k_10;
             let _e87 = gauss_1;
-            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_10), (_e87 * hw_10), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
+            let _e92 = airlight_adaptive_step(_e84, (_e85 * hw_9), (_e87 * hw_9), _e1.edges, _e1.panels, max_panels_3, AIRLIGHT_AREA_RAY_TOLERANCE);
             st_1 = _e92;
             let _e94 = st_1.more;
             if !(_e94) {
@@ -8309,22 +8261,22 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
-    var local_202: bool;
     var local_203: bool;
+    var local_204: bool;
 
     let _e1 = airlight_valid(s_53);
     if !(!(_e1)) {
-        local_202 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
-    } else {
-        local_202 = true;
-    }
-    let _e10 = local_202;
-    if !(_e10) {
-        local_203 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_203 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_203 = true;
     }
-    let _e18 = local_203;
+    let _e10 = local_203;
+    if !(_e10) {
+        local_204 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_204 = true;
+    }
+    let _e18 = local_204;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8333,15 +8285,15 @@ fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_204: bool;
+    var local_205: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_204 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_205 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_204 = true;
+        local_205 = true;
     }
-    let _e11 = local_204;
+    let _e11 = local_205;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8350,18 +8302,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_205: bool;
+    var local_206: bool;
     var g_29: AirlightCanonical;
 
     let p_7 = n_5.scene;
     let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_7.dir);
-        local_205 = _e11;
+        local_206 = _e11;
     } else {
-        local_205 = false;
+        local_206 = false;
     }
-    let _e13 = local_205;
+    let _e13 = local_206;
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
@@ -8385,22 +8337,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
-    var local_206: bool;
     var local_207: bool;
+    var local_208: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_206 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_206 = true;
-    }
-    let _e10 = local_206;
-    if !(_e10) {
-        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_207 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_207 = true;
     }
-    let _e18 = local_207;
+    let _e10 = local_207;
+    if !(_e10) {
+        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_208 = true;
+    }
+    let _e18 = local_208;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8409,22 +8361,22 @@ fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
-    var local_208: bool;
     var local_209: bool;
+    var local_210: bool;
 
     let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_208 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
-    } else {
-        local_208 = true;
-    }
-    let _e10 = local_208;
-    if !(_e10) {
-        local_209 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_209 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_209 = true;
     }
-    let _e18 = local_209;
+    let _e10 = local_209;
+    if !(_e10) {
+        local_210 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+    } else {
+        local_210 = true;
+    }
+    let _e18 = local_210;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8449,12 +8401,12 @@ fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
 fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
-    var k_10: f32;
+    var k_11: f32;
     var gauss_2: f32;
     var j_15: u32;
-    var local_210: bool;
-    var f: f32;
     var local_211: bool;
+    var f: f32;
+    var local_212: bool;
 
     let _e1 = airlight_valid(s_56);
     if !(_e1) {
@@ -8483,11 +8435,11 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_28 = (0.5f * (_e42 + _e44));
+            let c_27 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
-            let hw_11 = (0.5f * (_e49 - _e51));
-            k_10 = 0f;
+            let hw_10 = (0.5f * (_e49 - _e51));
+            k_11 = 0f;
             gauss_2 = 0f;
             j_15 = 0u;
             loop {
@@ -8502,12 +8454,12 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                     let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_15;
-                        local_210 = (_e81 < 6u);
+                        local_211 = (_e81 < 6u);
                     } else {
-                        local_210 = false;
+                        local_211 = false;
                     }
-                    let _e85 = local_210;
-                    let w_11 = select((c_28 + (hw_11 * node_5.x)), (c_28 - (hw_11 * node_5.x)), _e85);
+                    let _e85 = local_211;
+                    let w_11 = select((c_27 + (hw_10 * node_5.x)), (c_27 - (hw_10 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_56, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8516,19 +8468,19 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_211 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_212 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_211 = false;
+                            local_212 = false;
                         }
-                        let _e106 = local_211;
+                        let _e106 = local_212;
                         if _e106 {
                             return _e93;
                         }
                         f = (_e93.in_scatter * _e87.weight);
                     }
-                    let _e110 = k_10;
+                    let _e110 = k_11;
                     let _e112 = f;
-                    k_10 = (_e110 + (node_5.y * _e112));
+                    k_11 = (_e110 + (node_5.y * _e112));
                     let _e115 = gauss_2;
                     let _e117 = f;
                     gauss_2 = (_e115 + (node_5.z * _e117));
@@ -8539,9 +8491,9 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                 }
             }
             let _e123 = st_2;
-            let _e124 = k_10;
+            let _e124 = k_11;
             let _e126 = gauss_2;
-            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_11), (_e126 * hw_11), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
+            let _e132 = airlight_adaptive_step(_e123, (_e124 * hw_10), (_e126 * hw_10), _e12.edges, _e12.panels, _e12.max_panels, AIRLIGHT_PANEL_TOLERANCE);
             st_2 = _e132;
             let _e134 = st_2.more;
             if !(_e134) {

@@ -3660,17 +3660,11 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
         let tail = lo + AIRLIGHT_LOBE_TAIL;
         let cut = hi > tail && hi - lo > AIRLIGHT_LOBE_REACH * max(scale, lo);
         var around = 0.0;
-        {
-            let start = lo;
-            let to = select(hi, tail, cut);
-            let range = airlight_graded_from(scale, start, to);
-            let graded = range.x;
-            let c = 0.5 * range.y;
-            let hw = 0.5 * range.y;
-@RADIAL_LOBE@        }
-        if (cut) {
-            let start = tail;
-            let to = hi;
+        // (the two parts in one loop: a second copy of the written-out rule would grow
+        // lavapipe's build)
+        for (var k = 0u; k < select(1u, 2u, cut); k++) {
+            let start = select(lo, tail, k == 1u);
+            let to = select(hi, tail, cut && k == 0u);
             let range = airlight_graded_from(scale, start, to);
             let graded = range.x;
             let c = 0.5 * range.y;
