@@ -415,7 +415,7 @@ fn parallelogram<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3
     let (u2, v2) = (corners[1], corners[3]);
     let det = u2.0 * v2.1 - u2.1 * v2.0;
     let dirs = [dot(a1, light.d), dot(a2, light.d), dot(n, light.d)];
-    let about_foot = Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1)));
+    let about_foot = Outline::polygon_about(corners, foot);
     let half = T::lit(0.5);
     let size = half * ((u2.0 + v2.0).hypot(u2.1 + v2.1)).max((u2.0 - v2.0).hypot(u2.1 - v2.1));
     let centre = (half * corners[2].0 - foot.0, half * corners[2].1 - foot.1);
@@ -462,6 +462,11 @@ enum Outline<T> {
 }
 
 impl<T: Real> Outline<T> {
+    /// A parallelogram's outline about `foot` from its corners ([`parallelogram_corners`]).
+    fn polygon_about(corners: [(T, T); 4], foot: (T, T)) -> Self {
+        Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1)))
+    }
+
     /// The interval `[r_a, r_b]` of `r ≥ 0` for which `q + r e` lies on the emitter (`None` if
     /// the half-line misses it).
     fn chord(&self, q: (T, T), e: (T, T)) -> Option<(T, T)> {
@@ -949,7 +954,7 @@ impl<T: Real> Shape<T> {
             }
             Shape::Parallelogram { p0, edges, frame } => {
                 let (corners, foot) = parallelogram_corners(sub(x, p0), edges, frame);
-                Some((frame.0, Outline::Polygon(corners.map(|c| (c.0 - foot.0, c.1 - foot.1))).distances()))
+                Some((frame.0, Outline::polygon_about(corners, foot).distances()))
             }
             Shape::Sphere { .. } => None,
         }
