@@ -573,9 +573,9 @@ vec2 airlight_ein_divided_difference(vec2 a_2, vec2 b_2) {
 }
 
 bool airlight_in_series_region(vec2 z_5) {
-    float x_31 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_31 * x_31) + (y_7 * y_7)) < 1.0);
+    return (((x_30 * x_30) + (y_7 * y_7)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_) {
@@ -1005,8 +1005,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c) {
             if ((width_2 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_32 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
-            return ((x_32 * x_32) * (3.0 - (2.0 * x_32)));
+            float x_31 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
+            return ((x_31 * x_31) * (3.0 - (2.0 * x_31)));
         }
         default: {
             return 1.0;
@@ -1269,10 +1269,10 @@ float airlight_q_zero(AirlightHalf half_2) {
             float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_33 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            bool _e42 = airlight_is_finite(x_33);
+            float x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            bool _e42 = airlight_is_finite(x_32);
             if (_e42) {
-                float _e43 = airlight_log1p(x_33);
+                float _e43 = airlight_log1p(x_32);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1404,8 +1404,8 @@ vec2[6] airlight_gauss_rule() {
 }
 
 float airlight_node(vec2 rule[6], uint i_3) {
-    float x_34 = rule[(i_3 / 2u)].x;
-    return (((i_3 % 2u) == 0u) ? -(x_34) : x_34);
+    float x_33 = rule[(i_3 / 2u)].x;
+    return (((i_3 % 2u) == 0u) ? -(x_33) : x_33);
 }
 
 float[12] airlight_legendre(float g_7[12]) {
@@ -1484,8 +1484,8 @@ float[12] airlight_exp_legendre_moments(float lambda) {
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (uint(lambda) + 1u));
-            float x_35 = (lambda / float((2u * k0_)));
-            float per_step = (x_35 * x_35);
+            float x_34 = (lambda / float((2u * k0_)));
+            float per_step = (x_34 * x_34);
             share = per_step;
             bool loop_init_6 = true;
             while(true) {
@@ -2111,8 +2111,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3) {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_36 = (half_5.big_h * _e13);
-    return ((x_36 > 0.0) ? exp(-(x_36)) : 1.0);
+    float x_35 = (half_5.big_h * _e13);
+    return ((x_35 > 0.0) ? exp(-(x_35)) : 1.0);
 }
 
 AirlightPanel airlight_panel_result(float value, float error, float noise, float mass_over, float f_max) {
@@ -2747,13 +2747,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_37 = (abs(alpha) + abs(beta_1));
+    float x_36 = (abs(alpha) + abs(beta_1));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_37) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_36) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -2763,7 +2763,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_37) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_36) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -2773,7 +2773,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_37) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_36) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -2783,7 +2783,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_37) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_36) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -2793,7 +2793,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_37) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_36) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -2803,7 +2803,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_37) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_36) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -2813,7 +2813,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_37) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_36) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -2823,7 +2823,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_37) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_36) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -2833,7 +2833,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_37) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_36) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -2843,7 +2843,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_37) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_36) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -2853,7 +2853,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_37) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_36) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -2863,7 +2863,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_37) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_36) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -5491,26 +5491,18 @@ float airlight_to_w(AirlightOuter g_21, float s_22) {
 }
 
 vec2 airlight_cos_sin_half_turn(float x_17) {
-    float r_12 = (x_17 - 1.5707964);
-    float z_19 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_19 / 2.0) * (1.0 - ((z_19 / 12.0) * (1.0 - ((z_19 / 30.0) * (1.0 - ((z_19 / 56.0) * (1.0 - ((z_19 / 90.0) * (1.0 - ((z_19 / 132.0) * (1.0 - (z_19 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_19 / 6.0) * (1.0 - ((z_19 / 20.0) * (1.0 - ((z_19 / 42.0) * (1.0 - ((z_19 / 72.0) * (1.0 - ((z_19 / 110.0) * (1.0 - ((z_19 / 156.0) * (1.0 - (z_19 / 210.0)))))))))))))));
-    return vec2(-(sin_r), cos_r);
-}
-
-vec2 airlight_cos_sin_to_pi(float x_18) {
-    if ((x_18 <= 1.5707964)) {
-        vec2 _e3 = airlight_cos_sin(x_18);
+    if ((x_17 <= 1.5707964)) {
+        vec2 _e3 = airlight_cos_sin(x_17);
         return _e3;
     }
-    vec2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_18));
+    vec2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_17));
     return vec2(-(_e6.x), _e6.y);
 }
 
-float airlight_acos(float x_19) {
-    float a_42 = abs(x_19);
+float airlight_acos(float x_18) {
+    float a_42 = abs(x_18);
     float _e8 = airlight_atan(sqrt(((1.0 - a_42) / (1.0 + a_42))));
-    return ((x_19 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_23) {
@@ -5606,22 +5598,22 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         vec3 _e105 = airlight_normalize(s_25.brdf_view);
         vec3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         vec3 _e112 = u_1;
-        float x_38 = dot(_e111, _e112);
+        float x_37 = dot(_e111, _e112);
         vec3 _e114 = u_1;
         float y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_38 * x_38) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            float _e140 = airlight_angle(x_38, abs(y_12));
+            float _e140 = airlight_angle(x_37, abs(y_12));
             float phi_r = (((y_12 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = vec3(-(phi_r), (x_38 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -5816,9 +5808,9 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
     return _e390;
 }
 
-float airlight_lobe_at(AirlightLobe q_1, float x_20) {
+float airlight_lobe_at(AirlightLobe q_1, float x_19) {
     bool local_142 = false;
-    vec2 _e4 = airlight_cos_sin((0.5 * x_20));
+    vec2 _e4 = airlight_cos_sin((0.5 * x_19));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
@@ -5848,10 +5840,10 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
     return (w_1 * _e22);
 }
 
-float airlight_arc_end(float x_21, float cut) {
+float airlight_arc_end(float x_20, float cut) {
     float end_1 = 0.0;
     bool local_143 = false;
-    end_1 = x_21;
+    end_1 = x_20;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
         float _e6 = end_1;
@@ -6244,7 +6236,7 @@ AirlightCanonical airlight_no_canonical() {
     return AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_22) {
+AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_21) {
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
     float gamma_1 = 0.0;
     float jacobian = 0.0;
@@ -6262,8 +6254,8 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_44 = min(uint(max(floor(x_22), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_22 - float(i_44));
+        uint i_44 = min(uint(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_44));
         float a_44 = g_25.gamma[i_44];
         float b_21 = g_25.gamma[(i_44 + 1u)];
         float w_8 = (b_21 - a_44);
@@ -6356,10 +6348,10 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if ((s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_22;
+        at_1 = x_21;
         if ((g_25.scale > 0.0)) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_22)));
-            ds = (g_25.scale * cosh(x_22));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
+            ds = (g_25.scale * cosh(x_21));
         }
         float _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -6687,8 +6679,8 @@ vec2 airlight_outline_distances(AirlightOutline o) {
     return _e61;
 }
 
-AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 x_23) {
-    vec3 rel = (x_23 - a_19.c);
+AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 x_22) {
+    vec3 rel = (x_22 - a_19.c);
     vec2 foot = vec2(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     vec2 zero = vec2(0.0);
     if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
@@ -6991,16 +6983,16 @@ AirlightAbove airlight_above(float z_10, vec2 off) {
 float airlight_flat_node(AirlightScene s_37, AirlightArea a_21, AirlightAbove above_1, vec2 e_3, float graded_1, float node_1) {
     vec2 _e6 = airlight_graded_node(graded_1, node_1);
     vec2 _e8 = airlight_cos_sin_half_turn(_e6.x);
-    float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
+    float r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    vec2 p_4 = (above_1.off + (r_13 * e_3));
-    float z_20 = above_1.z;
-    float dist = sqrt((((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    vec2 p_4 = (above_1.off + (r_12 * e_3));
+    float z_19 = above_1.z;
+    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
-    float cos_ = (z_20 * inv_5);
-    float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_20 * a_21.dirs.z)) * inv_5));
+    float cos_ = (z_19 * inv_5);
+    float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
     float _e52 = airlight_emitted(s_37, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
 float airlight_flat_radial(AirlightScene s_38, AirlightArea a_22, AirlightAbove above_2, vec2 e_4, float r_max) {
@@ -7185,9 +7177,9 @@ vec4 airlight_edge_at(AirlightEdgeRule rule_1, float beta) {
     vec2 _e4 = airlight_cos_sin_half_turn((beta + 1.5707964));
     float sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
     float r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    float r_14 = sqrt(r2_3);
+    float r_13 = sqrt(r2_3);
     vec2 m_12 = vec2(rule_1.t.y, -(rule_1.t.x));
-    return vec4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+    return vec4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_13)), r_13, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
 vec2 airlight_clip(vec2 chord, vec2 a_24, vec2 b_14, vec2 q_7, vec2 e_5) {
@@ -7250,7 +7242,7 @@ vec2 airlight_graded_from(float scale_2, float start_1, float to) {
 
 vec3 airlight_graded_from_node(float start_2, float graded_2, float g_26) {
     vec2 _e3 = airlight_cos_sin_half_turn(g_26);
-    vec2 _e9 = airlight_cos_sin_to_pi((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    vec2 _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
     return vec3(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
@@ -7337,12 +7329,12 @@ float airlight_lobe_azimuth(vec3 u_5, vec3 v_7, vec2 e_7) {
     return _e17;
 }
 
-float airlight_wrap_turn(float x_24) {
-    return (x_24 - (6.2831855 * roundEven((x_24 / 6.2831855))));
+float airlight_wrap_turn(float x_23) {
+    return (x_23 - (6.2831855 * roundEven((x_23 / 6.2831855))));
 }
 
-vec2 airlight_cos_sin_turns(float x_25) {
-    float _e1 = airlight_wrap_turn(x_25);
+vec2 airlight_cos_sin_turns(float x_24) {
+    float _e1 = airlight_wrap_turn(x_24);
     vec2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
@@ -7365,8 +7357,8 @@ vec4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_7) {
     return vec4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-vec4 airlight_sort4_(vec4 x_26) {
-    vec4 a_48 = vec4(min(x_26.x, x_26.y), max(x_26.x, x_26.y), min(x_26.z, x_26.w), max(x_26.z, x_26.w));
+vec4 airlight_sort4_(vec4 x_25) {
+    vec4 a_48 = vec4(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
     vec4 b_24 = vec4(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
     return vec4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
@@ -7399,9 +7391,9 @@ AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
             if ((den_1 == 0.0)) {
                 continue;
             }
-            float r_15 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
+            float r_14 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
             float along = (((a_49.x * e_8.y) - (a_49.y * e_8.x)) / den_1);
-            if ((r_15 > 0.0)) {
+            if ((r_14 > 0.0)) {
                 local_185 = (along >= 0.0);
             } else {
                 local_185 = false;
@@ -7418,13 +7410,13 @@ AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
                 float h_10 = dot(n_8, a_49);
                 vec2 outward = ((h_10 < 0.0) ? -(n_8) : n_8);
                 float _e79 = nearest_2;
-                if ((r_15 < _e79)) {
-                    nearest_2 = r_15;
+                if ((r_14 < _e79)) {
+                    nearest_2 = r_14;
                     edges_1.entry = outward;
                 }
                 float _e82 = farthest;
-                if ((r_15 > _e82)) {
-                    farthest = r_15;
+                if ((r_14 > _e82)) {
+                    farthest = r_14;
                     edges_1.exit = outward;
                     edges_1.exit_h = abs(h_10);
                 }
@@ -7463,10 +7455,10 @@ vec3 airlight_mercator_node(float ua, float ub, uint i_33) {
     }
     vec2 _e19 = airlight_triangle_rule((i_33 % 12u));
     float hw_5 = (0.5 * (hi_10 - lo_9));
-    float x_39 = ((0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x));
-    float e_18 = exp(-(abs(x_39)));
+    float x_38 = ((0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x));
+    float e_18 = exp(-(abs(x_38)));
     float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
-    return vec3(sech, ((sign(x_39) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    return vec3(sech, ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
 }
 
 float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, vec3 u_6, vec3 v_8, vec2 n_4, vec2 first_1, vec2 last) {
@@ -7855,7 +7847,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     return _e560;
 }
 
-float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
+float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
     bool local_188 = false;
     bool local_189 = false;
     vec2 u_7 = vec2(0.0);
@@ -7864,9 +7856,9 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
     uint i_40 = 0u;
     vec2 e_9 = vec2(0.0);
     float r_max_1 = 0.0;
-    vec3 rel_1 = (x_27 - a_26.c);
-    float z_21 = dot(rel_1, a_26.n);
-    if (!((z_21 > 0.0))) {
+    vec3 rel_1 = (x_26 - a_26.c);
+    float z_20 = dot(rel_1, a_26.n);
+    if (!((z_20 > 0.0))) {
         return 0.0;
     }
     float fx = dot(rel_1, a_26.a1_);
@@ -7875,14 +7867,14 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
     float radius_2 = a_26.radius;
     vec2 zero_2 = vec2(0.0);
     AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_21, outline, vec2(-(fx), -(fy_1)), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        float _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_21);
+            bool _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -7893,12 +7885,12 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
         local_188 = false;
     }
     bool inside_2 = local_188;
-    AirlightAbove _e54 = airlight_above(z_21, vec2(0.0));
+    AirlightAbove _e54 = airlight_above(z_20, vec2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
         u_7 = vec2((-(fx) / rf), (-(fy_1) / rf));
         vec2 _e63 = u_7;
-        AirlightAbove _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
+        AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
@@ -7941,15 +7933,15 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_27) {
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_28) {
+float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
     vec2 q_9 = vec2(0.0);
     bool local_190 = false;
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = 0u;
-    vec3 rel_2 = (x_28 - a_27.c);
-    float z_22 = dot(rel_2, a_27.n);
-    if (!((z_22 > 0.0))) {
+    vec3 rel_2 = (x_27 - a_27.c);
+    float z_21 = dot(rel_2, a_27.n);
+    if (!((z_21 > 0.0))) {
         return 0.0;
     }
     vec2 foot_1 = vec2(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
@@ -7959,15 +7951,15 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_28) {
     float det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     AirlightOutline about_foot = AirlightOutline(vec2[4]((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_22, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
     if ((_e69.scale > 0.0)) {
-        float _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
         return _e73;
     }
     vec3 _e76 = airlight_outline_boundary(about_foot, vec2(0.0));
     q_9 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
-        bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
+        bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -7977,7 +7969,7 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_28) {
         q_9 = foot_1;
     }
     vec2 _e92 = q_9;
-    AirlightAbove _e94 = airlight_above(z_22, (_e92 - foot_1));
+    AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot_1));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     float _e99 = airlight_narrowed(s_44, _e94.rho0_);
     bool loop_init_48 = true;
@@ -8537,7 +8529,7 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     return _e423;
 }
 
-float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
+float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
     float chosen = 0.0;
     float sign_3 = 1.0;
     float cos_p_2 = 0.0;
@@ -8548,7 +8540,7 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
     bool local_199 = false;
     bool local_200 = false;
     bool local_201 = false;
-    vec3 v_12 = (a_30.c - x_29);
+    vec3 v_12 = (a_30.c - x_28);
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
         return 0.0;
@@ -8629,18 +8621,18 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_29) {
     return _e111;
 }
 
-float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, vec3 x_30) {
+float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, vec3 x_29) {
     switch(s_50.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_50, a_31, x_30);
+            float _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_50, a_31, x_30);
+            float _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_50, a_31, x_30);
+            float _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
@@ -8716,8 +8708,8 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
                         local_202 = false;
                     }
                     bool _e70 = local_202;
-                    float x_40 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
-                    float _e72 = airlight_area_node(s_52, _e1, x_40);
+                    float x_39 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
+                    float _e72 = airlight_area_node(s_52, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;

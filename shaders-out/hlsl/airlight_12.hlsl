@@ -5756,11 +5756,12 @@ float airlight_to_w(AirlightOuter g_19, float s_20)
 
 float2 airlight_cos_sin_half_turn(float x_16)
 {
-    float r_12 = (x_16 - 1.5707964);
-    float z_12 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_12 / 2.0) * (1.0 - ((z_12 / 12.0) * (1.0 - ((z_12 / 30.0) * (1.0 - ((z_12 / 56.0) * (1.0 - ((z_12 / 90.0) * (1.0 - ((z_12 / 132.0) * (1.0 - (z_12 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_12 / 6.0) * (1.0 - ((z_12 / 20.0) * (1.0 - ((z_12 / 42.0) * (1.0 - ((z_12 / 72.0) * (1.0 - ((z_12 / 110.0) * (1.0 - ((z_12 / 156.0) * (1.0 - (z_12 / 210.0)))))))))))))));
-    return float2(-(sin_r), cos_r);
+    if ((x_16 <= 1.5707964)) {
+        const float2 _e3 = airlight_cos_sin(x_16);
+        return _e3;
+    }
+    const float2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_16));
+    return float2(-(_e6.x), _e6.y);
 }
 
 float airlight_acos(float x_17)

@@ -790,9 +790,9 @@ float2 airlight_ein_divided_difference(float2 a_2, float2 b_2)
 
 bool airlight_in_series_region(float2 z_5)
 {
-    float x_31 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    float x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
     float y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_31 * x_31) + (y_7 * y_7)) < 1.0);
+    return (((x_30 * x_30) + (y_7 * y_7)) < 1.0);
 }
 
 uint airlight_cf_depth_squared(float r2_)
@@ -1259,8 +1259,8 @@ float airlight_light(uint kind_2, float p0_2, float p1_2, float c)
             if ((width_2 <= AIRLIGHT_FLT_EPS)) {
                 return ((c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0);
             }
-            float x_32 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
-            return ((x_32 * x_32) * (3.0 - (2.0 * x_32)));
+            float x_31 = clamp(((c - p1_2) / width_2), 0.0, 1.0);
+            return ((x_31 * x_31) * (3.0 - (2.0 * x_31)));
         }
         default: {
             return 1.0;
@@ -1550,10 +1550,10 @@ float airlight_q_zero(AirlightHalf half_2)
             const float _e33 = airlight_atan((half_2.dv / (1.0 + (v_s_1 * _e28))));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_33 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
-            const bool _e42 = airlight_is_finite(x_33);
+            float x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1)));
+            const bool _e42 = airlight_is_finite(x_32);
             if (_e42) {
-                const float _e43 = airlight_log1p(x_33);
+                const float _e43 = airlight_log1p(x_32);
                 d_re = (0.5 * _e43);
             } else {
                 float _e48 = v_e_1;
@@ -1705,8 +1705,8 @@ uint airlight_naga_mod(uint lhs, uint rhs) {
 
 float airlight_node(float2 rule[6], uint i_3)
 {
-    float x_34 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
-    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_34) : x_34);
+    float x_33 = rule[min(uint(airlight_naga_div(i_3, 2u)), 5u)].x;
+    return ((airlight_naga_mod(i_3, 2u) == 0u) ? -(x_33) : x_33);
 }
 
 typedef float airlight_ret_airlight_legendre[12];
@@ -1792,8 +1792,8 @@ airlight_ret_airlight_exp_legendre_moments airlight_exp_legendre_moments(float l
         if ((lambda < float((2u * AIRLIGHT_TERMS)))) {
             float inv_3 = (1.0 / lambda);
             uint k0_ = max(AIRLIGHT_TERMS, (airlight_naga_f2u32(lambda) + 1u));
-            float x_35 = (lambda / float((2u * k0_)));
-            float per_step = (x_35 * x_35);
+            float x_34 = (lambda / float((2u * k0_)));
+            float per_step = (x_34 * x_34);
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
@@ -2435,8 +2435,8 @@ float airlight_factor(AirlightHalf half_5, float a_4, float b_3)
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     float _e13 = offset;
-    float x_36 = (half_5.big_h * _e13);
-    return ((x_36 > 0.0) ? exp(-(x_36)) : 1.0);
+    float x_35 = (half_5.big_h * _e13);
+    return ((x_35 > 0.0) ? exp(-(x_35)) : 1.0);
 }
 
 AirlightPanel ConstructAirlightPanel(float arg0, float arg1, float arg2, float arg3) {
@@ -3104,13 +3104,13 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     const float _e936 = airlight_factor(half_8, a_7, b_6);
     float _e937 = mass_2;
     mass_2 = (_e937 * _e936);
-    float x_37 = (abs(alpha) + abs(beta_1));
+    float x_36 = (abs(alpha) + abs(beta_1));
     float _e950 = spread;
     float _e951 = l_cur;
     spread = (_e950 + (_e951 * abs(_e54[0])));
     float _e958 = l_cur;
     float _e960 = l_prev;
-    next = ((((1.0 * x_37) * _e958) + (0.0 * _e960)) / 1.0);
+    next = ((((1.0 * x_36) * _e958) + (0.0 * _e960)) / 1.0);
     float _e966 = l_cur;
     l_prev = _e966;
     float _e967 = next;
@@ -3120,7 +3120,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e968 + (_e969 * abs(_e54[1])));
     float _e976 = l_cur;
     float _e978 = l_prev;
-    next = ((((3.0 * x_37) * _e976) + (1.0 * _e978)) / 2.0);
+    next = ((((3.0 * x_36) * _e976) + (1.0 * _e978)) / 2.0);
     float _e984 = l_cur;
     l_prev = _e984;
     float _e985 = next;
@@ -3130,7 +3130,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e986 + (_e987 * abs(_e54[2])));
     float _e994 = l_cur;
     float _e996 = l_prev;
-    next = ((((5.0 * x_37) * _e994) + (2.0 * _e996)) / 3.0);
+    next = ((((5.0 * x_36) * _e994) + (2.0 * _e996)) / 3.0);
     float _e1002 = l_cur;
     l_prev = _e1002;
     float _e1003 = next;
@@ -3140,7 +3140,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1004 + (_e1005 * abs(_e54[3])));
     float _e1012 = l_cur;
     float _e1014 = l_prev;
-    next = ((((7.0 * x_37) * _e1012) + (3.0 * _e1014)) / 4.0);
+    next = ((((7.0 * x_36) * _e1012) + (3.0 * _e1014)) / 4.0);
     float _e1020 = l_cur;
     l_prev = _e1020;
     float _e1021 = next;
@@ -3150,7 +3150,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1022 + (_e1023 * abs(_e54[4])));
     float _e1030 = l_cur;
     float _e1032 = l_prev;
-    next = ((((9.0 * x_37) * _e1030) + (4.0 * _e1032)) / 5.0);
+    next = ((((9.0 * x_36) * _e1030) + (4.0 * _e1032)) / 5.0);
     float _e1038 = l_cur;
     l_prev = _e1038;
     float _e1039 = next;
@@ -3160,7 +3160,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1040 + (_e1041 * abs(_e54[5])));
     float _e1048 = l_cur;
     float _e1050 = l_prev;
-    next = ((((11.0 * x_37) * _e1048) + (5.0 * _e1050)) / 6.0);
+    next = ((((11.0 * x_36) * _e1048) + (5.0 * _e1050)) / 6.0);
     float _e1056 = l_cur;
     l_prev = _e1056;
     float _e1057 = next;
@@ -3170,7 +3170,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1058 + (_e1059 * abs(_e54[6])));
     float _e1066 = l_cur;
     float _e1068 = l_prev;
-    next = ((((13.0 * x_37) * _e1066) + (6.0 * _e1068)) / 7.0);
+    next = ((((13.0 * x_36) * _e1066) + (6.0 * _e1068)) / 7.0);
     float _e1074 = l_cur;
     l_prev = _e1074;
     float _e1075 = next;
@@ -3180,7 +3180,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1076 + (_e1077 * abs(_e54[7])));
     float _e1084 = l_cur;
     float _e1086 = l_prev;
-    next = ((((15.0 * x_37) * _e1084) + (7.0 * _e1086)) / 8.0);
+    next = ((((15.0 * x_36) * _e1084) + (7.0 * _e1086)) / 8.0);
     float _e1092 = l_cur;
     l_prev = _e1092;
     float _e1093 = next;
@@ -3190,7 +3190,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1094 + (_e1095 * abs(_e54[8])));
     float _e1102 = l_cur;
     float _e1104 = l_prev;
-    next = ((((17.0 * x_37) * _e1102) + (8.0 * _e1104)) / 9.0);
+    next = ((((17.0 * x_36) * _e1102) + (8.0 * _e1104)) / 9.0);
     float _e1110 = l_cur;
     l_prev = _e1110;
     float _e1111 = next;
@@ -3200,7 +3200,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1112 + (_e1113 * abs(_e54[9])));
     float _e1120 = l_cur;
     float _e1122 = l_prev;
-    next = ((((19.0 * x_37) * _e1120) + (9.0 * _e1122)) / 10.0);
+    next = ((((19.0 * x_36) * _e1120) + (9.0 * _e1122)) / 10.0);
     float _e1128 = l_cur;
     l_prev = _e1128;
     float _e1129 = next;
@@ -3210,7 +3210,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1130 + (_e1131 * abs(_e54[10])));
     float _e1138 = l_cur;
     float _e1140 = l_prev;
-    next = ((((21.0 * x_37) * _e1138) + (10.0 * _e1140)) / 11.0);
+    next = ((((21.0 * x_36) * _e1138) + (10.0 * _e1140)) / 11.0);
     float _e1146 = l_cur;
     l_prev = _e1146;
     float _e1147 = next;
@@ -3220,7 +3220,7 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     spread = (_e1148 + (_e1149 * abs(_e54[11])));
     float _e1156 = l_cur;
     float _e1158 = l_prev;
-    next = ((((23.0 * x_37) * _e1156) + (11.0 * _e1158)) / 12.0);
+    next = ((((23.0 * x_36) * _e1156) + (11.0 * _e1158)) / 12.0);
     float _e1164 = l_cur;
     l_prev = _e1164;
     float _e1165 = next;
@@ -6097,28 +6097,19 @@ float airlight_to_w(AirlightOuter g_21, float s_22)
 
 float2 airlight_cos_sin_half_turn(float x_17)
 {
-    float r_12 = (x_17 - 1.5707964);
-    float z_19 = (r_12 * r_12);
-    float cos_r = (1.0 - ((z_19 / 2.0) * (1.0 - ((z_19 / 12.0) * (1.0 - ((z_19 / 30.0) * (1.0 - ((z_19 / 56.0) * (1.0 - ((z_19 / 90.0) * (1.0 - ((z_19 / 132.0) * (1.0 - (z_19 / 182.0))))))))))))));
-    float sin_r = (r_12 * (1.0 - ((z_19 / 6.0) * (1.0 - ((z_19 / 20.0) * (1.0 - ((z_19 / 42.0) * (1.0 - ((z_19 / 72.0) * (1.0 - ((z_19 / 110.0) * (1.0 - ((z_19 / 156.0) * (1.0 - (z_19 / 210.0)))))))))))))));
-    return float2(-(sin_r), cos_r);
-}
-
-float2 airlight_cos_sin_to_pi(float x_18)
-{
-    if ((x_18 <= 1.5707964)) {
-        const float2 _e3 = airlight_cos_sin(x_18);
+    if ((x_17 <= 1.5707964)) {
+        const float2 _e3 = airlight_cos_sin(x_17);
         return _e3;
     }
-    const float2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_18));
+    const float2 _e6 = airlight_cos_sin((AIRLIGHT_PI - x_17));
     return float2(-(_e6.x), _e6.y);
 }
 
-float airlight_acos(float x_19)
+float airlight_acos(float x_18)
 {
-    float a_42 = abs(x_19);
+    float a_42 = abs(x_18);
     const float _e8 = airlight_atan(sqrt(((1.0 - a_42) / (1.0 + a_42))));
-    return ((x_19 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
+    return ((x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8));
 }
 
 float airlight_angle(float c_6, float s_23)
@@ -6261,22 +6252,22 @@ AirlightOuter airlight_surface(AirlightScene s_25)
         const float3 _e105 = airlight_normalize(s_25.brdf_view);
         const float3 _e111 = airlight_normalize((((2.0 * dot(_e37, _e105)) * _e37) - _e105));
         float3 _e112 = u_1;
-        float x_38 = dot(_e111, _e112);
+        float x_37 = dot(_e111, _e112);
         float3 _e114 = u_1;
         float y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_38 * x_38) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         const float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if ((_e131 > 0.0)) {
-            const float _e140 = airlight_angle(x_38, abs(y_12));
+            const float _e140 = airlight_angle(x_37, abs(y_12));
             float phi_r = (((y_12 < 0.0) ? -1.0 : 1.0) * _e140);
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = float3(-(phi_r), (x_38 / _e145), (-(y_12) / _e149));
+            g_22.delta = float3(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
         }
         float _e154 = g_22.alpha_r;
         float first_r = abs((1.5707964 - _e154));
@@ -6487,11 +6478,11 @@ AirlightOuter airlight_surface(AirlightScene s_25)
     return airlightouter_4;
 }
 
-float airlight_lobe_at(AirlightLobe q_1, float x_20)
+float airlight_lobe_at(AirlightLobe q_1, float x_19)
 {
     bool local_142 = (bool)0;
 
-    const float2 _e4 = airlight_cos_sin((0.5 * x_20));
+    const float2 _e4 = airlight_cos_sin((0.5 * x_19));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
     float sin_x = ((2.0 * _e4.y) * _e4.x);
@@ -6522,12 +6513,12 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
     return (w_1 * _e22);
 }
 
-float airlight_arc_end(float x_21, float cut)
+float airlight_arc_end(float x_20, float cut)
 {
     float end_1 = (float)0;
     bool local_143 = (bool)0;
 
-    end_1 = x_21;
+    end_1 = x_20;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
         float _e6 = end_1;
@@ -6977,7 +6968,7 @@ AirlightNode ConstructAirlightNode(AirlightScene arg0, float arg1, AirlightCanon
     return ret;
 }
 
-AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_22)
+AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x_21)
 {
     AirlightScene p = (AirlightScene)0;
     float gamma_1 = (float)0;
@@ -6997,8 +6988,8 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if ((s_27.surface_kind != AIRLIGHT_SURFACE_NONE)) {
-        uint i_44 = min(airlight_naga_f2u32(max(floor(x_22), 0.0)), (g_25.panels - 1u));
-        float t_9 = (x_22 - float(i_44));
+        uint i_44 = min(airlight_naga_f2u32(max(floor(x_21), 0.0)), (g_25.panels - 1u));
+        float t_9 = (x_21 - float(i_44));
         float a_44 = g_25.gamma[min(uint(i_44), 12u)];
         float b_21 = g_25.gamma[min(uint((i_44 + 1u)), 12u)];
         float w_8 = (b_21 - a_44);
@@ -7094,10 +7085,10 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         return airlightnode_2;
     }
     if ((s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT)) {
-        at_1 = x_22;
+        at_1 = x_21;
         if ((g_25.scale > 0.0)) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_22)));
-            ds = (g_25.scale * cosh(x_22));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
+            ds = (g_25.scale * cosh(x_21));
         }
         float _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -7479,9 +7470,9 @@ AirlightOutline ConstructAirlightOutline(float2 arg0[4], float arg1) {
     return ret;
 }
 
-AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, float3 x_23)
+AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, float3 x_22)
 {
-    float3 rel = (x_23 - a_19.c);
+    float3 rel = (x_22 - a_19.c);
     float2 foot = float2(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     float2 zero = (0.0).xx;
     if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
@@ -7829,16 +7820,16 @@ float airlight_flat_node(AirlightScene s_37, AirlightArea a_21, AirlightAbove ab
 {
     const float2 _e6 = airlight_graded_node(graded_1, node_1);
     const float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
-    float r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
+    float r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
     float dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    float2 p_4 = (above_1.off + (r_13 * e_3));
-    float z_20 = above_1.z;
-    float dist = sqrt((((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    float2 p_4 = (above_1.off + (r_12 * e_3));
+    float z_19 = above_1.z;
+    float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
-    float cos_ = (z_20 * inv_5);
-    const float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_20 * a_21.dirs.z)) * inv_5));
+    float cos_ = (z_19 * inv_5);
+    const float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
     const float _e52 = airlight_emitted(s_37, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
 float airlight_flat_radial(AirlightScene s_38, AirlightArea a_22, AirlightAbove above_2, float2 e_4, float r_max)
@@ -8057,9 +8048,9 @@ float4 airlight_edge_at(AirlightEdgeRule rule_1, float beta)
     const float2 _e4 = airlight_cos_sin_half_turn((beta + 1.5707964));
     float sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
     float r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    float r_14 = sqrt(r2_3);
+    float r_13 = sqrt(r2_3);
     float2 m_12 = float2(rule_1.t.y, -(rule_1.t.x));
-    return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_14).xx), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+    return float4((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / (r_13).xx), r_13, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
 float2 airlight_clip(float2 chord, float2 a_24, float2 b_14, float2 q_7, float2 e_5)
@@ -8127,7 +8118,7 @@ float2 airlight_graded_from(float scale_2, float start_1, float to)
 float3 airlight_graded_from_node(float start_2, float graded_2, float g_26)
 {
     const float2 _e3 = airlight_cos_sin_half_turn(g_26);
-    const float2 _e9 = airlight_cos_sin_to_pi((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    const float2 _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
     return float3(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
@@ -8218,14 +8209,14 @@ float airlight_lobe_azimuth(float3 u_5, float3 v_7, float2 e_7)
     return _e17;
 }
 
-float airlight_wrap_turn(float x_24)
+float airlight_wrap_turn(float x_23)
 {
-    return (x_24 - (6.2831855 * round((x_24 / 6.2831855))));
+    return (x_23 - (6.2831855 * round((x_23 / 6.2831855))));
 }
 
-float2 airlight_cos_sin_turns(float x_25)
+float2 airlight_cos_sin_turns(float x_24)
 {
-    const float _e1 = airlight_wrap_turn(x_25);
+    const float _e1 = airlight_wrap_turn(x_24);
     const float2 _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return float2(_e3.x, ((_e1 < 0.0) ? -(_e3.y) : _e3.y));
 }
@@ -8261,9 +8252,9 @@ float4 airlight_edge_node(AirlightEdgeRule rule_2, uint j_7)
     return float4(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-float4 airlight_sort4_(float4 x_26)
+float4 airlight_sort4_(float4 x_25)
 {
-    float4 a_48 = float4(min(x_26.x, x_26.y), max(x_26.x, x_26.y), min(x_26.z, x_26.w), max(x_26.z, x_26.w));
+    float4 a_48 = float4(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
     float4 b_24 = float4(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
     return float4(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
@@ -8309,9 +8300,9 @@ AirlightChordEdges airlight_chord_edges(float2 y_6[4], float2 e_8)
             if ((den_1 == 0.0)) {
                 continue;
             }
-            float r_15 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
+            float r_14 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
             float along = (((a_49.x * e_8.y) - (a_49.y * e_8.x)) / den_1);
-            if ((r_15 > 0.0)) {
+            if ((r_14 > 0.0)) {
                 local_185 = (along >= 0.0);
             } else {
                 local_185 = false;
@@ -8328,13 +8319,13 @@ AirlightChordEdges airlight_chord_edges(float2 y_6[4], float2 e_8)
                 float h_10 = dot(n_8, a_49);
                 float2 outward = ((h_10 < 0.0) ? -(n_8) : n_8);
                 float _e79 = nearest_2;
-                if ((r_15 < _e79)) {
-                    nearest_2 = r_15;
+                if ((r_14 < _e79)) {
+                    nearest_2 = r_14;
                     edges_1.entry = outward;
                 }
                 float _e82 = farthest;
-                if ((r_15 > _e82)) {
-                    farthest = r_15;
+                if ((r_14 > _e82)) {
+                    farthest = r_14;
                     edges_1.exit = outward;
                     edges_1.exit_h = abs(h_10);
                 }
@@ -8378,10 +8369,10 @@ float3 airlight_mercator_node(float ua, float ub, uint i_33)
     }
     const float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
     float hw_5 = (0.5 * (hi_10 - lo_9));
-    float x_39 = ((0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x));
-    float e_18 = exp(-(abs(x_39)));
+    float x_38 = ((0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x));
+    float e_18 = exp(-(abs(x_38)));
     float sech = ((2.0 * e_18) / (1.0 + (e_18 * e_18)));
-    return float3(sech, ((sign(x_39) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    return float3(sech, ((sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
 }
 
 float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, float3 u_6, float3 v_8, float2 n_4, float2 first_1, float2 last)
@@ -8804,7 +8795,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     return _e560;
 }
 
-float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_27)
+float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_26)
 {
     bool local_188 = (bool)0;
     bool local_189 = (bool)0;
@@ -8815,9 +8806,9 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_27)
     float2 e_9 = (float2)0;
     float r_max_1 = (float)0;
 
-    float3 rel_1 = (x_27 - a_26.c);
-    float z_21 = dot(rel_1, a_26.n);
-    if (!((z_21 > 0.0))) {
+    float3 rel_1 = (x_26 - a_26.c);
+    float z_20 = dot(rel_1, a_26.n);
+    if (!((z_20 > 0.0))) {
         return 0.0;
     }
     float fx = dot(rel_1, a_26.a1_);
@@ -8826,14 +8817,14 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_27)
     float radius_2 = a_26.radius;
     float2 zero_2 = (0.0).xx;
     AirlightOutline outline = ConstructAirlightOutline(airlight_Constructarray4_float2_(float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_21, outline, float2(-(fx), -(fy_1)), radius_2);
+    const AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, float2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        const float _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
+        const float _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            const bool _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_21);
+            const bool _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -8844,12 +8835,12 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_27)
         local_188 = false;
     }
     bool inside_2 = local_188;
-    const AirlightAbove _e54 = airlight_above(z_21, (0.0).xx);
+    const AirlightAbove _e54 = airlight_above(z_20, (0.0).xx);
     above_3 = _e54;
     if (!(inside_2)) {
         u_7 = float2((-(fx) / rf), (-(fy_1) / rf));
         float2 _e63 = u_7;
-        const AirlightAbove _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
+        const AirlightAbove _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     float k_15 = ((rf - radius_2) * (rf + radius_2));
@@ -8895,7 +8886,7 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, float3 x_27)
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_28)
+float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_27)
 {
     float2 q_9 = (float2)0;
     bool local_190 = (bool)0;
@@ -8903,9 +8894,9 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_28)
     uint i_41 = 0u;
     uint j_12 = (uint)0;
 
-    float3 rel_2 = (x_28 - a_27.c);
-    float z_22 = dot(rel_2, a_27.n);
-    if (!((z_22 > 0.0))) {
+    float3 rel_2 = (x_27 - a_27.c);
+    float z_21 = dot(rel_2, a_27.n);
+    if (!((z_21 > 0.0))) {
         return 0.0;
     }
     float2 foot_1 = float2(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
@@ -8915,15 +8906,15 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_28)
     float det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     AirlightOutline about_foot = ConstructAirlightOutline(airlight_Constructarray4_float2_((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0.0);
     float size_2 = (0.5 * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_22, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
+    const AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
     if ((_e69.scale > 0.0)) {
-        const float _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
+        const float _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
         return _e73;
     }
     const float3 _e76 = airlight_outline_boundary(about_foot, (0.0).xx);
     q_9 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
-        const bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
+        const bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -8933,7 +8924,7 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, float3 x_28)
         q_9 = foot_1;
     }
     float2 _e92 = q_9;
-    const AirlightAbove _e94 = airlight_above(z_22, (_e92 - foot_1));
+    const AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot_1));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
     const float _e99 = airlight_narrowed(s_44, _e94.rho0_);
     uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
@@ -9530,7 +9521,7 @@ AirlightCap ConstructAirlightCap(float3 arg0, float arg1, float arg2, float arg3
     return ret;
 }
 
-float airlight_sphere(AirlightScene s_49, AirlightArea a_30, float3 x_29)
+float airlight_sphere(AirlightScene s_49, AirlightArea a_30, float3 x_28)
 {
     float chosen = 0.0;
     float sign_3 = 1.0;
@@ -9543,7 +9534,7 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, float3 x_29)
     bool local_200 = (bool)0;
     bool local_201 = (bool)0;
 
-    float3 v_12 = (a_30.c - x_29);
+    float3 v_12 = (a_30.c - x_28);
     const float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
         return 0.0;
@@ -9627,19 +9618,19 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, float3 x_29)
     return _e111;
 }
 
-float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, float3 x_30)
+float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, float3 x_29)
 {
     switch(s_50.light_shape) {
         case 2u: {
-            const float _e4 = airlight_disc(s_50, a_31, x_30);
+            const float _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            const float _e5 = airlight_parallelogram(s_50, a_31, x_30);
+            const float _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            const float _e6 = airlight_sphere(s_50, a_31, x_30);
+            const float _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
@@ -9725,8 +9716,8 @@ AirlightResult airlight_area_light(AirlightScene s_52)
                         local_202 = false;
                     }
                     bool _e70 = local_202;
-                    float x_40 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
-                    const float _e72 = airlight_area_node(s_52, _e1, x_40);
+                    float x_39 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
+                    const float _e72 = airlight_area_node(s_52, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;

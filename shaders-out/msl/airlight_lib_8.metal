@@ -764,9 +764,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_31 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_30 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_7 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_31 * x_31) + (y_7 * y_7)) < 1.0;
+    return ((x_30 * x_30) + (y_7 * y_7)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -1215,8 +1215,8 @@ float airlight_light(
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_32 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
-            return (x_32 * x_32) * (3.0 - (2.0 * x_32));
+            float x_31 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
+            return (x_31 * x_31) * (3.0 - (2.0 * x_31));
         }
         default: {
             return 1.0;
@@ -1515,10 +1515,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_33 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_33);
+            float x_32 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_32);
             if (_e42) {
-                float _e43 = airlight_log1p(x_33);
+                float _e43 = airlight_log1p(x_32);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1667,8 +1667,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_34 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_34) : x_34;
+    float x_33 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_33) : x_33;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1749,8 +1749,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_35 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_35 * x_35;
+            float x_34 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_34 * x_34;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2201,8 +2201,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_36 = half_5.big_h * _e13;
-    return (x_36 > 0.0) ? metal::exp(-(x_36)) : 1.0;
+    float x_35 = half_5.big_h * _e13;
+    return (x_35 > 0.0) ? metal::exp(-(x_35)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -2713,13 +2713,13 @@ AirlightPanel airlight_tail_panel(
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_37 = metal::abs(alpha) + metal::abs(beta_1);
+    float x_36 = metal::abs(alpha) + metal::abs(beta_1);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_37) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_36) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2729,7 +2729,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_37) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_36) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2739,7 +2739,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_37) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_36) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2749,7 +2749,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_37) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_36) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2759,7 +2759,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_37) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_36) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2769,7 +2769,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_37) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_36) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2779,7 +2779,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_37) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_36) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2789,7 +2789,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_37) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_36) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -5625,30 +5625,20 @@ float airlight_to_w(
 metal::float2 airlight_cos_sin_half_turn(
     float x_17
 ) {
-    float r_12 = x_17 - 1.5707964;
-    float z_19 = r_12 * r_12;
-    float cos_r = 1.0 - ((z_19 / 2.0) * (1.0 - ((z_19 / 12.0) * (1.0 - ((z_19 / 30.0) * (1.0 - ((z_19 / 56.0) * (1.0 - ((z_19 / 90.0) * (1.0 - ((z_19 / 132.0) * (1.0 - (z_19 / 182.0)))))))))))));
-    float sin_r = r_12 * (1.0 - ((z_19 / 6.0) * (1.0 - ((z_19 / 20.0) * (1.0 - ((z_19 / 42.0) * (1.0 - ((z_19 / 72.0) * (1.0 - ((z_19 / 110.0) * (1.0 - ((z_19 / 156.0) * (1.0 - (z_19 / 210.0))))))))))))));
-    return metal::float2(-(sin_r), cos_r);
-}
-
-metal::float2 airlight_cos_sin_to_pi(
-    float x_18
-) {
-    if (x_18 <= 1.5707964) {
-        metal::float2 _e3 = airlight_cos_sin(x_18);
+    if (x_17 <= 1.5707964) {
+        metal::float2 _e3 = airlight_cos_sin(x_17);
         return _e3;
     }
-    metal::float2 _e6 = airlight_cos_sin(AIRLIGHT_PI - x_18);
+    metal::float2 _e6 = airlight_cos_sin(AIRLIGHT_PI - x_17);
     return metal::float2(-(_e6.x), _e6.y);
 }
 
 float airlight_acos(
-    float x_19
+    float x_18
 ) {
-    float a_42 = metal::abs(x_19);
+    float a_42 = metal::abs(x_18);
     float _e8 = airlight_atan(metal::sqrt((1.0 - a_42) / (1.0 + a_42)));
-    return (x_19 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
+    return (x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
@@ -5757,22 +5747,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_25.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_38 = metal::dot(_e111, _e112);
+        float x_37 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
         float y_12 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_38 * x_38) + (y_12 * y_12));
+        g_22.sin_r = metal::sqrt((x_37 * x_37) + (y_12 * y_12));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_38, metal::abs(y_12));
+            float _e140 = airlight_angle(x_37, metal::abs(y_12));
             float phi_r = ((y_12 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_38 / _e145, -(y_12) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_37 / _e145, -(y_12) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -5984,10 +5974,10 @@ AirlightOuter airlight_surface(
 
 float airlight_lobe_at(
     AirlightLobe q_1,
-    float x_20
+    float x_19
 ) {
     bool local_142 = {};
-    metal::float2 _e4 = airlight_cos_sin(0.5 * x_20);
+    metal::float2 _e4 = airlight_cos_sin(0.5 * x_19);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
     float sin_x = (2.0 * _e4.y) * _e4.x;
@@ -6024,12 +6014,12 @@ float airlight_lobe_node(
 }
 
 float airlight_arc_end(
-    float x_21,
+    float x_20,
     float cut
 ) {
     float end_1 = {};
     bool local_143 = {};
-    end_1 = x_21;
+    end_1 = x_20;
     float _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         float _e6 = end_1;
@@ -6449,7 +6439,7 @@ AirlightCanonical airlight_no_canonical(
 AirlightNode airlight_outer_node(
     AirlightScene s_27,
     AirlightOuter g_25,
-    float x_22
+    float x_21
 ) {
     AirlightScene p = {};
     float gamma_1 = {};
@@ -6468,8 +6458,8 @@ AirlightNode airlight_outer_node(
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        uint i_44 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_22), 0.0)), g_25.panels - 1u);
-        float t_9 = x_22 - static_cast<float>(i_44);
+        uint i_44 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
+        float t_9 = x_21 - static_cast<float>(i_44);
         float a_44 = g_25.gamma.inner[metal::min(unsigned(i_44), 12u)];
         float b_21 = g_25.gamma.inner[metal::min(unsigned(i_44 + 1u), 12u)];
         float w_8 = b_21 - a_44;
@@ -6562,10 +6552,10 @@ AirlightNode airlight_outer_node(
         return AirlightNode {_e206, (_e207 * _e119.y) * _e210, exact, true};
     }
     if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_22;
+        at_1 = x_21;
         if (g_25.scale > 0.0) {
-            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_22));
-            ds = g_25.scale * metal::cosh(x_22);
+            at_1 = g_25.s_star + (g_25.scale * metal::sinh(x_21));
+            ds = g_25.scale * metal::cosh(x_21);
         }
         float _e233 = at_1;
         p.light_position = g_25.a + (_e233 * g_25.e);
@@ -6945,9 +6935,9 @@ metal::float2 airlight_outline_distances(
 AirlightOutline airlight_outline_at(
     AirlightScene s_35,
     AirlightArea a_19,
-    metal::float3 x_23
+    metal::float3 x_22
 ) {
-    metal::float3 rel = x_23 - a_19.c;
+    metal::float3 rel = x_22 - a_19.c;
     metal::float2 foot = metal::float2(metal::dot(rel, a_19.a1_), metal::dot(rel, a_19.a2_));
     metal::float2 zero = metal::float2(0.0);
     if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
@@ -7268,16 +7258,16 @@ float airlight_flat_node(
 ) {
     metal::float2 _e6 = airlight_graded_node(graded_1, node_1);
     metal::float2 _e8 = airlight_cos_sin_half_turn(_e6.x);
-    float r_13 = (above_1.rho0_ * _e8.y) / _e8.x;
+    float r_12 = (above_1.rho0_ * _e8.y) / _e8.x;
     float dr = above_1.rho0_ / (_e8.x * _e8.x);
-    metal::float2 p_4 = above_1.off + (r_13 * e_3);
-    float z_20 = above_1.z;
-    float dist = metal::sqrt(((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y));
+    metal::float2 p_4 = above_1.off + (r_12 * e_3);
+    float z_19 = above_1.z;
+    float dist = metal::sqrt(((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y));
     float inv_5 = 1.0 / dist;
-    float cos = z_20 * inv_5;
-    float _e50 = airlight_area_phase(s_37, (((p_4.x * a_21.dirs[0]) + (p_4.y * a_21.dirs[1])) - (z_20 * a_21.dirs[2])) * inv_5);
+    float cos = z_19 * inv_5;
+    float _e50 = airlight_area_phase(s_37, (((p_4.x * a_21.dirs[0]) + (p_4.y * a_21.dirs[1])) - (z_19 * a_21.dirs[2])) * inv_5);
     float _e52 = airlight_emitted(s_37, cos);
-    return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_37.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_13) * dr;
+    return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_37.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_12) * dr;
 }
 
 float airlight_flat_radial(
@@ -7491,9 +7481,9 @@ metal::float4 airlight_edge_at(
     metal::float2 _e4 = airlight_cos_sin_half_turn(beta + 1.5707964);
     float sigma_13 = (rule_1.reach * -(_e4.x)) / _e4.y;
     float r2_3 = (rule_1.h * rule_1.h) + (sigma_13 * sigma_13);
-    float r_14 = metal::sqrt(r2_3);
+    float r_13 = metal::sqrt(r2_3);
     metal::float2 m_12 = metal::float2(rule_1.t.y, -(rule_1.t.x));
-    return metal::float4(((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / metal::float2(r_14), r_14, (rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3));
+    return metal::float4(((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / metal::float2(r_13), r_13, (rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3));
 }
 
 metal::float2 airlight_clip(
@@ -7574,7 +7564,7 @@ metal::float3 airlight_graded_from_node(
     float g_26
 ) {
     metal::float2 _e3 = airlight_cos_sin_half_turn(g_26);
-    metal::float2 _e9 = airlight_cos_sin_to_pi(start_2 + ((graded_2 * _e3.y) / _e3.x));
+    metal::float2 _e9 = airlight_cos_sin_half_turn(start_2 + ((graded_2 * _e3.y) / _e3.x));
     return metal::float3(_e9, graded_2 / (_e3.x * _e3.x));
 }
 
@@ -7682,15 +7672,15 @@ float airlight_lobe_azimuth(
 }
 
 float airlight_wrap_turn(
-    float x_24
+    float x_23
 ) {
-    return x_24 - (6.2831855 * metal::rint(x_24 / 6.2831855));
+    return x_23 - (6.2831855 * metal::rint(x_23 / 6.2831855));
 }
 
 metal::float2 airlight_cos_sin_turns(
-    float x_25
+    float x_24
 ) {
-    float _e1 = airlight_wrap_turn(x_25);
+    float _e1 = airlight_wrap_turn(x_24);
     metal::float2 _e3 = airlight_cos_sin_half_turn(metal::abs(_e1));
     return metal::float2(_e3.x, (_e1 < 0.0) ? -(_e3.y) : _e3.y);
 }
@@ -7721,9 +7711,9 @@ metal::float4 airlight_edge_node(
 }
 
 metal::float4 airlight_sort4_(
-    metal::float4 x_26
+    metal::float4 x_25
 ) {
-    metal::float4 a_48 = metal::float4(metal::min(x_26.x, x_26.y), metal::max(x_26.x, x_26.y), metal::min(x_26.z, x_26.w), metal::max(x_26.z, x_26.w));
+    metal::float4 a_48 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
     metal::float4 b_24 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
     return metal::float4(b_24.x, metal::min(b_24.y, b_24.z), metal::max(b_24.y, b_24.z), b_24.w);
 }
@@ -7762,9 +7752,9 @@ AirlightChordEdges airlight_chord_edges(
             if (den_1 == 0.0) {
                 continue;
             }
-            float r_15 = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * d_5.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * d_5.x)) / den_1;
+            float r_14 = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * d_5.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * d_5.x)) / den_1;
             float along = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * e_8.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * e_8.x)) / den_1;
-            if (r_15 > 0.0) {
+            if (r_14 > 0.0) {
                 local_185 = along >= 0.0;
             } else {
                 local_185 = false;
@@ -7781,13 +7771,13 @@ AirlightChordEdges airlight_chord_edges(
                 float h_10 = metal::dot(n_8, a_49);
                 metal::float2 outward = (h_10 < 0.0) ? -(n_8) : n_8;
                 float _e79 = nearest_2;
-                if (r_15 < _e79) {
-                    nearest_2 = r_15;
+                if (r_14 < _e79) {
+                    nearest_2 = r_14;
                     edges_1.entry = outward;
                 }
                 float _e82 = farthest;
-                if (r_15 > _e82) {
-                    farthest = r_15;
+                if (r_14 > _e82) {
+                    farthest = r_14;
                     edges_1.exit = outward;
                     edges_1.exit_h = metal::abs(h_10);
                 }
@@ -7838,10 +7828,10 @@ metal::float3 airlight_mercator_node(
     }
     metal::float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
     float hw_5 = 0.5 * (hi_10 - lo_9);
-    float x_39 = (0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x);
-    float e_18 = metal::exp(-(metal::abs(x_39)));
+    float x_38 = (0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x);
+    float e_18 = metal::exp(-(metal::abs(x_38)));
     float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
-    return metal::float3(sech, (metal::sign(x_39) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)), (_e19.y * hw_5) * sech);
+    return metal::float3(sech, (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)), (_e19.y * hw_5) * sech);
 }
 
 float airlight_mercator_wedge(
@@ -8278,7 +8268,7 @@ float airlight_flat_about_lobe(
 float airlight_disc(
     AirlightScene s_43,
     AirlightArea a_26,
-    metal::float3 x_27
+    metal::float3 x_26
 ) {
     bool local_188 = {};
     bool local_189 = {};
@@ -8288,9 +8278,9 @@ float airlight_disc(
     uint i_40 = 0u;
     metal::float2 e_9 = {};
     float r_max_1 = {};
-    metal::float3 rel_1 = x_27 - a_26.c;
-    float z_21 = metal::dot(rel_1, a_26.n);
-    if (!((z_21 > 0.0))) {
+    metal::float3 rel_1 = x_26 - a_26.c;
+    float z_20 = metal::dot(rel_1, a_26.n);
+    if (!((z_20 > 0.0))) {
         return 0.0;
     }
     float fx = metal::dot(rel_1, a_26.a1_);
@@ -8299,14 +8289,14 @@ float airlight_disc(
     float radius_2 = a_26.radius;
     metal::float2 zero_2 = metal::float2(0.0);
     AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2}}, radius_2};
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_21, outline, metal::float2(-(fx), -(fy_1)), radius_2);
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0.0) {
-        float _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_43, radius_2 - rf, z_21);
+            bool _e44 = airlight_far_from_edge(s_43, radius_2 - rf, z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -8317,12 +8307,12 @@ float airlight_disc(
         local_188 = false;
     }
     bool inside_2 = local_188;
-    AirlightAbove _e54 = airlight_above(z_21, metal::float2(0.0));
+    AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
         u_7 = metal::float2(-(fx) / rf, -(fy_1) / rf);
         metal::float2 _e63 = u_7;
-        AirlightAbove _e65 = airlight_above(z_21, (rf - radius_2) * _e63);
+        AirlightAbove _e65 = airlight_above(z_20, (rf - radius_2) * _e63);
         above_3 = _e65;
     }
     float k_15 = (rf - radius_2) * (rf + radius_2);
@@ -8371,16 +8361,16 @@ float airlight_disc(
 float airlight_parallelogram(
     AirlightScene s_44,
     AirlightArea a_27,
-    metal::float3 x_28
+    metal::float3 x_27
 ) {
     metal::float2 q_9 = {};
     bool local_190 = {};
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = {};
-    metal::float3 rel_2 = x_28 - a_27.c;
-    float z_22 = metal::dot(rel_2, a_27.n);
-    if (!((z_22 > 0.0))) {
+    metal::float3 rel_2 = x_27 - a_27.c;
+    float z_21 = metal::dot(rel_2, a_27.n);
+    if (!((z_21 > 0.0))) {
         return 0.0;
     }
     metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_27.a1_), metal::dot(rel_2, a_27.a2_));
@@ -8390,15 +8380,15 @@ float airlight_parallelogram(
     float det = (u2_1.x * v2_1.y) - (u2_1.y * v2_1.x);
     AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot_1, corners.inner[1] - foot_1, corners.inner[2] - foot_1, corners.inner[3] - foot_1}}, 0.0};
     float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_1 + v2_1, u2_1 + v2_1)), metal::sqrt(metal::dot(u2_1 - v2_1, u2_1 - v2_1)));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_22, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
     if (_e69.scale > 0.0) {
-        float _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
         return _e73;
     }
     metal::float3 _e76 = airlight_outline_boundary(about_foot, metal::float2(0.0));
     q_9 = _e76.xy + foot_1;
     if (_e76.z > 0.0) {
-        bool _e89 = airlight_far_from_edge(s_44, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_22);
+        bool _e89 = airlight_far_from_edge(s_44, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -8408,7 +8398,7 @@ float airlight_parallelogram(
         q_9 = foot_1;
     }
     metal::float2 _e92 = q_9;
-    AirlightAbove _e94 = airlight_above(z_22, _e92 - foot_1);
+    AirlightAbove _e94 = airlight_above(z_21, _e92 - foot_1);
     float thin = AIRLIGHT_FLT_EPS * metal::abs(det);
     float _e99 = airlight_narrowed(s_44, _e94.rho0_);
     uint2 loop_bound_49 = uint2(4294967295u);
@@ -9012,7 +9002,7 @@ float airlight_sphere_about_lobe(
 float airlight_sphere(
     AirlightScene s_49,
     AirlightArea a_30,
-    metal::float3 x_29
+    metal::float3 x_28
 ) {
     float chosen = 0.0;
     float sign_3 = 1.0;
@@ -9024,7 +9014,7 @@ float airlight_sphere(
     bool local_199 = {};
     bool local_200 = {};
     bool local_201 = {};
-    metal::float3 v_12 = a_30.c - x_29;
+    metal::float3 v_12 = a_30.c - x_28;
     float _e5 = airlight_safe_length(v_12);
     if (!((_e5 > a_30.radius))) {
         return 0.0;
@@ -9111,19 +9101,19 @@ float airlight_sphere(
 float airlight_emitter_radiance(
     AirlightScene s_50,
     AirlightArea a_31,
-    metal::float3 x_30
+    metal::float3 x_29
 ) {
     switch(s_50.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_50, a_31, x_30);
+            float _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_50, a_31, x_30);
+            float _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_50, a_31, x_30);
+            float _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
@@ -9211,8 +9201,8 @@ AirlightResult airlight_area_light(
                         local_202 = false;
                     }
                     bool _e70 = local_202;
-                    float x_40 = _e70 ? (c_26 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_26 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_52, _e1, x_40);
+                    float x_39 = _e70 ? (c_26 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_26 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_52, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;

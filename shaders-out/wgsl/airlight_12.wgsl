@@ -5297,11 +5297,12 @@ fn airlight_to_w(g_19: AirlightOuter, s_20: f32) -> f32 {
 }
 
 fn airlight_cos_sin_half_turn(x_16: f32) -> vec2<f32> {
-    let r_12 = (x_16 - 1.5707964f);
-    let z_12 = (r_12 * r_12);
-    let cos_r = (1f - ((z_12 / 2f) * (1f - ((z_12 / 12f) * (1f - ((z_12 / 30f) * (1f - ((z_12 / 56f) * (1f - ((z_12 / 90f) * (1f - ((z_12 / 132f) * (1f - (z_12 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_12 / 6f) * (1f - ((z_12 / 20f) * (1f - ((z_12 / 42f) * (1f - ((z_12 / 72f) * (1f - ((z_12 / 110f) * (1f - ((z_12 / 156f) * (1f - (z_12 / 210f)))))))))))))));
-    return vec2<f32>(-(sin_r), cos_r);
+    if (x_16 <= 1.5707964f) {
+        let _e3 = airlight_cos_sin(x_16);
+        return _e3;
+    }
+    let _e6 = airlight_cos_sin((AIRLIGHT_PI - x_16));
+    return vec2<f32>(-(_e6.x), _e6.y);
 }
 
 fn airlight_acos(x_17: f32) -> f32 {

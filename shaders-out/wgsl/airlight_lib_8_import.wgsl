@@ -602,9 +602,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_31 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_31 * x_31) + (y_7 * y_7)) < 1f);
+    return (((x_30 * x_30) + (y_7 * y_7)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -997,8 +997,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_2 * 0.5f))));
             }
-            let x_32 = clamp(((c - p1_2) / width_2), 0f, 1f);
-            return ((x_32 * x_32) * (3f - (2f * x_32)));
+            let x_31 = clamp(((c - p1_2) / width_2), 0f, 1f);
+            return ((x_31 * x_31) * (3f - (2f * x_31)));
         }
         default: {
             return 1f;
@@ -1254,10 +1254,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_33 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_33);
+            let x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_32);
             if _e42 {
-                let _e43 = airlight_log1p(x_33);
+                let _e43 = airlight_log1p(x_32);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1390,8 +1390,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_34 = rule[(i_3 / 2u)].x;
-    return select(x_34, -(x_34), ((i_3 % 2u) == 0u));
+    let x_33 = rule[(i_3 / 2u)].x;
+    return select(x_33, -(x_33), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
@@ -1468,8 +1468,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_35 = (lambda / f32((2u * k0_)));
-            let per_step = (x_35 * x_35);
+            let x_34 = (lambda / f32((2u * k0_)));
+            let per_step = (x_34 * x_34);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1891,8 +1891,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_36 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_36)), (x_36 > 0f));
+    let x_35 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_35)), (x_35 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2354,13 +2354,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_37 = (abs(alpha) + abs(beta_1));
+    let x_36 = (abs(alpha) + abs(beta_1));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_37) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_36) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2370,7 +2370,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_37) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_36) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2380,7 +2380,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_37) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_36) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2390,7 +2390,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_37) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_36) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2400,7 +2400,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_37) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_36) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2410,7 +2410,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_37) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_36) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2420,7 +2420,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_37) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_36) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2430,7 +2430,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_37) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_36) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -5048,26 +5048,18 @@ fn airlight_to_w(g_21: AirlightOuter, s_22: f32) -> f32 {
 }
 
 fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
-    let r_12 = (x_17 - 1.5707964f);
-    let z_19 = (r_12 * r_12);
-    let cos_r = (1f - ((z_19 / 2f) * (1f - ((z_19 / 12f) * (1f - ((z_19 / 30f) * (1f - ((z_19 / 56f) * (1f - ((z_19 / 90f) * (1f - ((z_19 / 132f) * (1f - (z_19 / 182f))))))))))))));
-    let sin_r = (r_12 * (1f - ((z_19 / 6f) * (1f - ((z_19 / 20f) * (1f - ((z_19 / 42f) * (1f - ((z_19 / 72f) * (1f - ((z_19 / 110f) * (1f - ((z_19 / 156f) * (1f - (z_19 / 210f)))))))))))))));
-    return vec2<f32>(-(sin_r), cos_r);
-}
-
-fn airlight_cos_sin_to_pi(x_18: f32) -> vec2<f32> {
-    if (x_18 <= 1.5707964f) {
-        let _e3 = airlight_cos_sin(x_18);
+    if (x_17 <= 1.5707964f) {
+        let _e3 = airlight_cos_sin(x_17);
         return _e3;
     }
-    let _e6 = airlight_cos_sin((AIRLIGHT_PI - x_18));
+    let _e6 = airlight_cos_sin((AIRLIGHT_PI - x_17));
     return vec2<f32>(-(_e6.x), _e6.y);
 }
 
-fn airlight_acos(x_19: f32) -> f32 {
-    let a_42 = abs(x_19);
+fn airlight_acos(x_18: f32) -> f32 {
+    let a_42 = abs(x_18);
     let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
-    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_19 < 0f));
+    return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
 fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
@@ -5164,22 +5156,22 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_38 = dot(_e111, _e112);
+        let x_37 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_38 * x_38) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_38, abs(y_12));
+            let _e140 = airlight_angle(x_37, abs(y_12));
             let phi_r = (select(1f, -1f, (y_12 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_38 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5366,10 +5358,10 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     return _e390;
 }
 
-fn airlight_lobe_at(q_1: AirlightLobe, x_20: f32) -> f32 {
+fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
     var local_142: bool;
 
-    let _e4 = airlight_cos_sin((0.5f * x_20));
+    let _e4 = airlight_cos_sin((0.5f * x_19));
     let s2_ = (_e4.y * _e4.y);
     let cos_x = (1f - (2f * s2_));
     let sin_x = ((2f * _e4.y) * _e4.x);
@@ -5399,11 +5391,11 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
     return (w_1 * _e22);
 }
 
-fn airlight_arc_end(x_21: f32, cut: f32) -> f32 {
+fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     var end_1: f32;
     var local_143: bool;
 
-    end_1 = x_21;
+    end_1 = x_20;
     let _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
         let _e6 = end_1;
@@ -5793,7 +5785,7 @@ fn airlight_no_canonical() -> AirlightCanonical {
     return AirlightCanonical(0f, 0f, 0f, 0f, 0f, 0f, false);
 }
 
-fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_22: f32) -> AirlightNode {
+fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> AirlightNode {
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
@@ -5812,8 +5804,8 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_22: f32) -> A
     p.light_shape = AIRLIGHT_SHAPE_POINT;
     p.surface_kind = AIRLIGHT_SURFACE_NONE;
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
-        let i_44 = min(u32(max(floor(x_22), 0f)), (g_25.panels - 1u));
-        let t_9 = (x_22 - f32(i_44));
+        let i_44 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
+        let t_9 = (x_21 - f32(i_44));
         let a_44 = g_25.gamma[i_44];
         let b_21 = g_25.gamma[(i_44 + 1u)];
         let w_8 = (b_21 - a_44);
@@ -5906,10 +5898,10 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_22: f32) -> A
         return AirlightNode(_e206, ((_e207 * _e119.y) * _e210), exact, true);
     }
     if (s_27.light_shape == AIRLIGHT_SHAPE_SEGMENT) {
-        at_1 = x_22;
+        at_1 = x_21;
         if (g_25.scale > 0f) {
-            at_1 = (g_25.s_star + (g_25.scale * sinh(x_22)));
-            ds = (g_25.scale * cosh(x_22));
+            at_1 = (g_25.s_star + (g_25.scale * sinh(x_21)));
+            ds = (g_25.scale * cosh(x_21));
         }
         let _e233 = at_1;
         p.light_position = (g_25.a + (_e233 * g_25.e));
@@ -6236,8 +6228,8 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     return _e61;
 }
 
-fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_23: vec3<f32>) -> AirlightOutline {
-    let rel = (x_23 - a_19.c);
+fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
+    let rel = (x_22 - a_19.c);
     let foot = vec2<f32>(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     let zero = vec2(0f);
     if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
@@ -6537,16 +6529,16 @@ fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
 fn airlight_flat_node(s_37: AirlightScene, a_21: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
-    let r_13 = ((above_1.rho0_ * _e8.y) / _e8.x);
+    let r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
     let dr = (above_1.rho0_ / (_e8.x * _e8.x));
-    let p_4 = (above_1.off + (r_13 * e_3));
-    let z_20 = above_1.z;
-    let dist = sqrt((((z_20 * z_20) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
+    let p_4 = (above_1.off + (r_12 * e_3));
+    let z_19 = above_1.z;
+    let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
-    let cos_ = (z_20 * inv_5);
-    let _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_20 * a_21.dirs.z)) * inv_5));
+    let cos_ = (z_19 * inv_5);
+    let _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
     let _e52 = airlight_emitted(s_37, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_13) * dr);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
 fn airlight_flat_radial(s_38: AirlightScene, a_22: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
@@ -6730,9 +6722,9 @@ fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
     let _e4 = airlight_cos_sin_half_turn((beta + 1.5707964f));
     let sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
     let r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
-    let r_14 = sqrt(r2_3);
+    let r_13 = sqrt(r2_3);
     let m_12 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
-    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_14)), r_14, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_13)), r_13, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
 fn airlight_clip(chord: vec2<f32>, a_24: vec2<f32>, b_14: vec2<f32>, q_7: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
@@ -6796,7 +6788,7 @@ fn airlight_graded_from(scale_2: f32, start_1: f32, to: f32) -> vec2<f32> {
 
 fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32> {
     let _e3 = airlight_cos_sin_half_turn(g_26);
-    let _e9 = airlight_cos_sin_to_pi((start_2 + ((graded_2 * _e3.y) / _e3.x)));
+    let _e9 = airlight_cos_sin_half_turn((start_2 + ((graded_2 * _e3.y) / _e3.x)));
     return vec3<f32>(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
@@ -6884,12 +6876,12 @@ fn airlight_lobe_azimuth(u_5: vec3<f32>, v_7: vec3<f32>, e_7: vec2<f32>) -> f32 
     return _e17;
 }
 
-fn airlight_wrap_turn(x_24: f32) -> f32 {
-    return (x_24 - (6.2831855f * round((x_24 / 6.2831855f))));
+fn airlight_wrap_turn(x_23: f32) -> f32 {
+    return (x_23 - (6.2831855f * round((x_23 / 6.2831855f))));
 }
 
-fn airlight_cos_sin_turns(x_25: f32) -> vec2<f32> {
-    let _e1 = airlight_wrap_turn(x_25);
+fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
+    let _e1 = airlight_wrap_turn(x_24);
     let _e3 = airlight_cos_sin_half_turn(abs(_e1));
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
@@ -6912,8 +6904,8 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
     return vec4<f32>(_e16.xyz, ((_e2.y * hw_4) * _e16.w));
 }
 
-fn airlight_sort4_(x_26: vec4<f32>) -> vec4<f32> {
-    let a_48 = vec4<f32>(min(x_26.x, x_26.y), max(x_26.x, x_26.y), min(x_26.z, x_26.w), max(x_26.z, x_26.w));
+fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
+    let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
     let b_24 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
     return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
 }
@@ -6941,9 +6933,9 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
             if (den_1 == 0f) {
                 continue;
             }
-            let r_15 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
+            let r_14 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
             let along = (((a_49.x * e_8.y) - (a_49.y * e_8.x)) / den_1);
-            if (r_15 > 0f) {
+            if (r_14 > 0f) {
                 local_185 = (along >= 0f);
             } else {
                 local_185 = false;
@@ -6960,13 +6952,13 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
                 let h_10 = dot(n_8, a_49);
                 let outward = select(n_8, -(n_8), (h_10 < 0f));
                 let _e79 = nearest_2;
-                if (r_15 < _e79) {
-                    nearest_2 = r_15;
+                if (r_14 < _e79) {
+                    nearest_2 = r_14;
                     edges_1.entry = outward;
                 }
                 let _e82 = farthest;
-                if (r_15 > _e82) {
-                    farthest = r_15;
+                if (r_14 > _e82) {
+                    farthest = r_14;
                     edges_1.exit = outward;
                     edges_1.exit_h = abs(h_10);
                 }
@@ -7009,10 +7001,10 @@ fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     }
     let _e19 = airlight_triangle_rule((i_33 % 12u));
     let hw_5 = (0.5f * (hi_10 - lo_9));
-    let x_39 = ((0.5f * (lo_9 + hi_10)) + (hw_5 * _e19.x));
-    let e_18 = exp(-(abs(x_39)));
+    let x_38 = ((0.5f * (lo_9 + hi_10)) + (hw_5 * _e19.x));
+    let e_18 = exp(-(abs(x_38)));
     let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
-    return vec3<f32>(sech, ((sign(x_39) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
 }
 
 fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
@@ -7383,7 +7375,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
     return _e560;
 }
 
-fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
     var local_188: bool;
     var local_189: bool;
     var u_7: vec2<f32> = vec2(0f);
@@ -7393,9 +7385,9 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel_1 = (x_27 - a_26.c);
-    let z_21 = dot(rel_1, a_26.n);
-    if !((z_21 > 0f)) {
+    let rel_1 = (x_26 - a_26.c);
+    let z_20 = dot(rel_1, a_26.n);
+    if !((z_20 > 0f)) {
         return 0f;
     }
     let fx = dot(rel_1, a_26.a1_);
@@ -7404,14 +7396,14 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
     let radius_2 = a_26.radius;
     let zero_2 = vec2(0f);
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    let _e30 = airlight_flat_lobe(a_26, z_21, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_43, z_21, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_21);
+            let _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -7422,12 +7414,12 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
         local_188 = false;
     }
     let inside_2 = local_188;
-    let _e54 = airlight_above(z_21, vec2(0f));
+    let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
         u_7 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
         let _e63 = u_7;
-        let _e65 = airlight_above(z_21, ((rf - radius_2) * _e63));
+        let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
         above_3 = _e65;
     }
     let k_15 = ((rf - radius_2) * (rf + radius_2));
@@ -7468,16 +7460,16 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_27: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_9: vec2<f32>;
     var local_190: bool;
     var sum_12: f32 = 0f;
     var i_41: u32 = 0u;
     var j_12: u32;
 
-    let rel_2 = (x_28 - a_27.c);
-    let z_22 = dot(rel_2, a_27.n);
-    if !((z_22 > 0f)) {
+    let rel_2 = (x_27 - a_27.c);
+    let z_21 = dot(rel_2, a_27.n);
+    if !((z_21 > 0f)) {
         return 0f;
     }
     let foot_1 = vec2<f32>(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
@@ -7487,15 +7479,15 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_28: vec3<f3
     let det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    let _e69 = airlight_flat_lobe(a_27, z_22, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
+    let _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_44, z_22, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_9 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_22);
+        let _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -7505,7 +7497,7 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_28: vec3<f3
         q_9 = foot_1;
     }
     let _e92 = q_9;
-    let _e94 = airlight_above(z_22, (_e92 - foot_1));
+    let _e94 = airlight_above(z_21, (_e92 - foot_1));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
     let _e99 = airlight_narrowed(s_44, _e94.rho0_);
     loop {
@@ -8057,7 +8049,7 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
     return _e423;
 }
 
-fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> f32 {
+fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
     var sign_3: f32 = 1f;
     var cos_p_2: f32 = 0f;
@@ -8069,7 +8061,7 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> 
     var local_200: bool;
     var local_201: bool;
 
-    let v_12 = (a_30.c - x_29);
+    let v_12 = (a_30.c - x_28);
     let _e5 = airlight_safe_length(v_12);
     if !((_e5 > a_30.radius)) {
         return 0f;
@@ -8148,18 +8140,18 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_29: vec3<f32>) -> 
     return _e111;
 }
 
-fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_30: vec3<f32>) -> f32 {
+fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
     switch s_50.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_50, a_31, x_30);
+            let _e4 = airlight_disc(s_50, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_50, a_31, x_30);
+            let _e5 = airlight_parallelogram(s_50, a_31, x_29);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_50, a_31, x_30);
+            let _e6 = airlight_sphere(s_50, a_31, x_29);
             return _e6;
         }
     }
@@ -8224,8 +8216,8 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                         local_202 = false;
                     }
                     let _e70 = local_202;
-                    let x_40 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_52, _e1, x_40);
+                    let x_39 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_52, _e1, x_39);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;

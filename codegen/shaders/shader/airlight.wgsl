@@ -2192,23 +2192,11 @@ fn airlight_to_w(g: AirlightOuter, s: f32) -> f32 {
     return s;
 }
 
-/// (cos x, sin x) for x ∈ [0, π], from cos and sin of r = x − π/2 (|r| ≤ π/2) by Taylor
-/// polynomials of degree 14 and 15 (the next terms below 7e-10), written out: no loop
-/// iterations (see AIRLIGHT_SEGMENT_PANELS).
+/// (cos x, sin x) for x ∈ [0, π], sin x to its own relative precision next to 0 and π (the
+/// polar angles' sin is a solid angle's measure): `airlight_cos_sin` of x, or of π − x reflected
+/// (from cos and sin of x − π/2, sin x was ~2e-7 off absolute next to 0: a sphere's θ rule cut at
+/// LOBE_TAIL was 1.6e-4 off with it, docs/DESIGN.md §12).
 fn airlight_cos_sin_half_turn(x: f32) -> vec2<f32> {
-    let r = x - 1.5707963267948966;
-    let z = r * r;
-    let cos_r = 1.0 - z / 2.0 * (1.0 - z / 12.0 * (1.0 - z / 30.0 * (1.0 - z / 56.0 * (1.0 - z / 90.0 * (1.0 - z / 132.0 * (1.0 - z / 182.0))))));
-    let sin_r = r * (1.0 - z / 6.0 * (1.0 - z / 20.0 * (1.0 - z / 42.0 * (1.0 - z / 72.0 * (1.0 - z / 110.0 * (1.0 - z / 156.0 * (1.0 - z / 210.0)))))));
-    return vec2<f32>(-sin_r, cos_r);
-}
-
-/// (cos x, sin x) for x ∈ [0, π] with sin x to its own relative precision (the polar angle θ
-/// of the lobe rules, whose sin θ is the solid angle's measure), as outer.rs's `sin_cos_turns`:
-/// `airlight_cos_sin` of x, or of π − x reflected (`airlight_cos_sin_half_turn`'s sin x, from
-/// cos(x − π/2), is off by ~2e-7 absolute next to 0 and π: a sphere's θ rule cut at LOBE_TAIL
-/// was 1.6e-4 off with it).
-fn airlight_cos_sin_to_pi(x: f32) -> vec2<f32> {
     if (x <= 0.5 * AIRLIGHT_PI) {
         return airlight_cos_sin(x);
     }
@@ -3247,7 +3235,7 @@ fn airlight_graded_from(scale: f32, start: f32, to: f32) -> vec2<f32> {
 /// A node γ of that rule as (cos θ, sin θ, dθ/dγ), θ = start + g tan γ.
 fn airlight_graded_from_node(start: f32, graded: f32, g: f32) -> vec3<f32> {
     let tg = airlight_cos_sin_half_turn(g);
-    return vec3<f32>(airlight_cos_sin_to_pi(start + graded * tg.y / tg.x), graded / (tg.x * tg.x));
+    return vec3<f32>(airlight_cos_sin_half_turn(start + graded * tg.y / tg.x), graded / (tg.x * tg.x));
 }
 
 /// One node γ of `airlight_flat_lobe_along`: L_e c^{p−1} e^{−σt z/c} P sin θ dθ/dγ,
