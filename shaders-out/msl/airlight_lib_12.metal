@@ -296,7 +296,7 @@ struct AirlightCap {
     float radius;
     float sin_a;
     float cos_a;
-    char _pad5[4];
+    float alpha;
 };
 struct airlight_type_25 {
     metal::float3 inner[16];
@@ -7814,8 +7814,8 @@ metal::float3 airlight_outline_boundary(
         if (metal::all(loop_bound_35 == uint2(0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
         if (!loop_init_34) {
-            uint _e94 = i_30;
-            i_30 = _e94 + 1u;
+            uint _e90 = i_30;
+            i_30 = _e90 + 1u;
         }
         loop_init_34 = false;
         uint _e36 = i_30;
@@ -7827,28 +7827,27 @@ metal::float3 airlight_outline_boundary(
             uint _e40 = i_30;
             metal::float2 a_46 = o_1.corners.inner[metal::min(unsigned(_e40), 3u)];
             uint _e43 = i_30;
-            metal::float2 e_16 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)] - a_46;
-            bool _e50 = inside;
-            if (_e50) {
-                local_181 = (((q_5.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * e_16.y) - ((q_5.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * e_16.x)) <= 0.0;
+            metal::float2 b_23 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)];
+            bool _e49 = inside;
+            if (_e49) {
+                local_181 = (((q_5.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * (o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y)) - ((q_5.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * (o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x))) <= 0.0;
             } else {
                 local_181 = false;
             }
-            bool _e67 = local_181;
-            inside = _e67;
-            uint _e69 = i_30;
-            metal::float2 _e75 = airlight_edge_nearest(a_46, o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e69 + 1u, 4u)), 3u)], q_5);
-            float dd = ((_e75.x - q_5.x) * (_e75.x - q_5.x)) + ((_e75.y - q_5.y) * (_e75.y - q_5.y));
-            float _e91 = best;
-            if (dd < _e91) {
+            bool _e70 = local_181;
+            inside = _e70;
+            metal::float2 _e71 = airlight_edge_nearest(a_46, b_23, q_5);
+            float dd = ((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y));
+            float _e87 = best;
+            if (dd < _e87) {
                 best = dd;
-                nearest_1 = _e75;
+                nearest_1 = _e71;
             }
         }
     }
-    metal::float2 _e96 = nearest_1;
-    bool _e97 = inside;
-    return metal::float3(_e96, _e97 ? 1.0 : 0.0);
+    metal::float2 _e92 = nearest_1;
+    bool _e93 = inside;
+    return metal::float3(_e92, _e93 ? 1.0 : 0.0);
 }
 
 metal::float2 airlight_outline_nearest(
@@ -7975,15 +7974,15 @@ metal::float2 airlight_outline_chord(
     if (o_4.radius > 0.0) {
         metal::float2 qc_1 = q_8 - o_4.corners.inner[0];
         float a_47 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
-        float b_23 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
+        float b_24 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
         float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
         float k_13 = (dq_1 - o_4.radius) * (dq_1 + o_4.radius);
-        float disc_3 = (b_23 * b_23) - (a_47 * k_13);
+        float disc_3 = (b_24 * b_24) - (a_47 * k_13);
         if (!((disc_3 > 0.0))) {
             return metal::float2(0.0);
         }
         float root_3 = metal::sqrt(disc_3);
-        float t_11 = -(b_23) - (((as_type<uint>(b_23) & 2147483648u) != 0u) ? -(root_3) : root_3);
+        float t_11 = -(b_24) - (((as_type<uint>(b_24) & 2147483648u) != 0u) ? -(root_3) : root_3);
         float r1_2 = t_11 / a_47;
         float r2_4 = k_13 / t_11;
         float hi_9 = metal::max(r1_2, r2_4);
@@ -8148,9 +8147,9 @@ AirlightEdgeRule airlight_edge_rule(
     metal::float2 b_15,
     float width_1
 ) {
-    metal::float2 e_17 = b_15 - a_25;
-    float el = metal::sqrt((e_17.x * e_17.x) + (e_17.y * e_17.y));
-    metal::float2 t_12 = e_17 / metal::float2(el);
+    metal::float2 e_16 = b_15 - a_25;
+    float el = metal::sqrt((e_16.x * e_16.x) + (e_16.y * e_16.y));
+    metal::float2 t_12 = e_16 / metal::float2(el);
     float h_9 = ((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el;
     float reach_3 = metal::sqrt((h_9 * h_9) + (width_1 * width_1));
     float _e27 = airlight_atan2_(metal::dot(a_25, t_12), reach_3);
@@ -8172,8 +8171,8 @@ metal::float4 airlight_sort4_(
     metal::float4 x_25
 ) {
     metal::float4 a_48 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
-    metal::float4 b_24 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
-    return metal::float4(b_24.x, metal::min(b_24.y, b_24.z), metal::max(b_24.y, b_24.z), b_24.w);
+    metal::float4 b_25 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
+    return metal::float4(b_25.x, metal::min(b_25.y, b_25.z), metal::max(b_25.y, b_25.z), b_25.w);
 }
 
 AirlightChordEdges airlight_chord_edges(
@@ -8287,9 +8286,9 @@ metal::float3 airlight_mercator_node(
     metal::float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
     float hw_5 = 0.5 * (hi_10 - lo_9);
     float x_38 = (0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x);
-    float e_18 = metal::exp(-(metal::abs(x_38)));
-    float sech = (2.0 * e_18) / (1.0 + (e_18 * e_18));
-    return metal::float3(sech, (metal::sign(x_38) * (1.0 - (e_18 * e_18))) / (1.0 + (e_18 * e_18)), (_e19.y * hw_5) * sech);
+    float e_17 = metal::exp(-(metal::abs(x_38)));
+    float sech = (2.0 * e_17) / (1.0 + (e_17 * e_17));
+    return metal::float3(sech, (metal::sign(x_38) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)), (_e19.y * hw_5) * sech);
 }
 
 float airlight_mercator_wedge(
@@ -8513,7 +8512,7 @@ float airlight_flat_about_lobe(
             }
             {
                 uint _e310 = i_37;
-                metal::float2 b_25 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
+                metal::float2 b_26 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
                 uint _e316 = i_37;
                 uint _e318 = i_37;
                 uint _e323 = i_37;
@@ -8800,9 +8799,9 @@ float airlight_disc(
             r_max_1 = (radius_2 + radius_2) * _e77.x;
             if (inside_2) {
                 e_9 = _e77.xy;
-                float b_26 = (fx * _e77.x) + (fy_1 * _e77.y);
-                float root_4 = metal::sqrt((b_26 * b_26) - k_15);
-                r_max_1 = (b_26 > 0.0) ? (-(k_15) / (b_26 + root_4)) : (root_4 - b_26);
+                float b_27 = (fx * _e77.x) + (fy_1 * _e77.y);
+                float root_4 = metal::sqrt((b_27 * b_27) - k_15);
+                r_max_1 = (b_27 > 0.0) ? (-(k_15) / (b_27 + root_4)) : (root_4 - b_27);
             }
             float _e118 = sum_11;
             AirlightAbove _e120 = above_3;
@@ -9219,12 +9218,11 @@ float airlight_sphere_about_lobe(
         half_15 = _e42;
     }
     float _e43 = airlight_atan2_(sin_p, cos_p_1);
-    float _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
-    float eps = _e46 - _e43;
-    float width_7 = metal::min(scale_3, metal::sqrt(metal::max(eps * (_e46 + _e43), 0.0)));
-    float _e55 = axis_2.y;
-    float _e57 = axis_2.x;
-    AirlightEdgeRule rim_1 = AirlightEdgeRule {eps, {}, metal::float2(_e55, -(_e57)), metal::sqrt((eps * eps) + (width_7 * width_7)), -1.5707964, 1.5707964};
+    float eps = cap_3.alpha - _e43;
+    float width_7 = metal::min(scale_3, metal::sqrt(metal::max(eps * (cap_3.alpha + _e43), 0.0)));
+    float _e54 = axis_2.y;
+    float _e56 = axis_2.x;
+    AirlightEdgeRule rim_1 = AirlightEdgeRule {eps, {}, metal::float2(_e54, -(_e56)), metal::sqrt((eps * eps) + (width_7 * width_7)), -1.5707964, 1.5707964};
     bool beside = cos_p_1 < -(cap_3.cos_a);
     count_3 = inside_3 ? 24u : 16u;
     if (beside) {
@@ -9236,13 +9234,13 @@ float airlight_sphere_about_lobe(
         if (metal::all(loop_bound_52 == uint2(0u))) { break; }
         loop_bound_52 -= uint2(loop_bound_52.y == 0u, 1u);
         if (!loop_init_51) {
-            uint _e421 = i_43;
-            i_43 = _e421 + 1u;
+            uint _e420 = i_43;
+            i_43 = _e420 + 1u;
         }
         loop_init_51 = false;
-        uint _e79 = i_43;
-        uint _e80 = count_3;
-        if (_e79 < _e80) {
+        uint _e78 = i_43;
+        uint _e79 = count_3;
+        if (_e78 < _e79) {
         } else {
             break;
         }
@@ -9250,99 +9248,99 @@ float airlight_sphere_about_lobe(
             big_b_1 = 0.0;
             wpsi = 0.0;
             if (beside) {
-                uint _e88 = i_43;
-                local_191 = _e88 < 84u;
+                uint _e87 = i_43;
+                local_191 = _e87 < 84u;
             } else {
                 local_191 = false;
             }
-            bool _e92 = local_191;
-            if (_e92) {
-                float _e95 = airlight_mercator_cut(7u);
-                uint _e96 = i_43;
-                metal::float3 _e97 = airlight_mercator_node(0.0, _e95, _e96);
-                if (_e97.z == 0.0) {
+            bool _e91 = local_191;
+            if (_e91) {
+                float _e94 = airlight_mercator_cut(7u);
+                uint _e95 = i_43;
+                metal::float3 _e96 = airlight_mercator_node(0.0, _e94, _e95);
+                if (_e96.z == 0.0) {
                     continue;
                 }
-                big_b_1 = sin_p * _e97.x;
-                wpsi = 2.0 * _e97.z;
+                big_b_1 = sin_p * _e96.x;
+                wpsi = 2.0 * _e96.z;
             } else {
                 if (beside) {
-                    uint _e106 = i_43;
-                    metal::float3 _e109 = airlight_azimuths_even(_e106 - 84u);
-                    big_b_1 = -(sin_p) * _e109.x;
-                    wpsi = _e109.z;
+                    uint _e105 = i_43;
+                    metal::float3 _e108 = airlight_azimuths_even(_e105 - 84u);
+                    big_b_1 = -(sin_p) * _e108.x;
+                    wpsi = _e108.z;
                 } else {
                     if (inside_3) {
-                        uint _e116 = i_43;
-                        local_192 = _e116 < 8u;
+                        uint _e115 = i_43;
+                        local_192 = _e115 < 8u;
                     } else {
                         local_192 = false;
                     }
-                    bool _e120 = local_192;
-                    if (_e120) {
+                    bool _e119 = local_192;
+                    if (_e119) {
                         if (!((eps > 0.0))) {
                             continue;
                         }
-                        uint _e125 = i_43;
-                        metal::float2 _e129 = airlight_radial_rule((2u * _e125) + 1u);
-                        metal::float4 _e133 = airlight_edge_at(rim_1, 1.5707964 * _e129.x);
-                        metal::float2 _e135 = axis_2;
-                        big_b_1 = sin_p * metal::dot(_e133.xy, _e135);
-                        wpsi = (((2.0 * _e129.y) * 0.5) * AIRLIGHT_PI) * _e133.w;
+                        uint _e124 = i_43;
+                        metal::float2 _e128 = airlight_radial_rule((2u * _e124) + 1u);
+                        metal::float4 _e132 = airlight_edge_at(rim_1, 1.5707964 * _e128.x);
+                        metal::float2 _e134 = axis_2;
+                        big_b_1 = sin_p * metal::dot(_e132.xy, _e134);
+                        wpsi = (((2.0 * _e128.y) * 0.5) * AIRLIGHT_PI) * _e132.w;
                     } else {
                         if (inside_3) {
-                            uint _e147 = i_43;
-                            metal::float3 _e150 = airlight_azimuths_even(_e147 - 8u);
-                            big_b_1 = sin_p * _e150.x;
-                            wpsi = _e150.z;
+                            uint _e146 = i_43;
+                            metal::float3 _e149 = airlight_azimuths_even(_e146 - 8u);
+                            big_b_1 = sin_p * _e149.x;
+                            wpsi = _e149.z;
                         } else {
-                            uint _e154 = i_43;
-                            metal::float3 _e155 = airlight_azimuths_even(_e154);
-                            float _e156 = half_15;
-                            metal::float2 _e159 = airlight_cos_sin(_e156 * _e155.y);
-                            big_b_1 = sin_p * _e159.x;
-                            float _e163 = half_15;
-                            wpsi = (_e155.z * _e163) * _e155.x;
+                            uint _e153 = i_43;
+                            metal::float3 _e154 = airlight_azimuths_even(_e153);
+                            float _e155 = half_15;
+                            metal::float2 _e158 = airlight_cos_sin(_e155 * _e154.y);
+                            big_b_1 = sin_p * _e158.x;
+                            float _e162 = half_15;
+                            wpsi = (_e154.z * _e162) * _e154.x;
                         }
                     }
                 }
             }
-            float _e167 = big_b_1;
-            float _e168 = airlight_atan2_(_e167, cos_p_1);
-            mid = _e168;
+            float _e166 = big_b_1;
+            float _e167 = airlight_atan2_(_e166, cos_p_1);
+            mid = _e167;
             if (beside) {
-                float _e172 = mid;
-                local_193 = _e172 < 0.0;
+                float _e171 = mid;
+                local_193 = _e171 < 0.0;
             } else {
                 local_193 = false;
             }
-            bool _e176 = local_193;
-            if (_e176) {
-                float _e177 = mid;
-                mid = _e177 + 6.2831855;
+            bool _e175 = local_193;
+            if (_e175) {
+                float _e176 = mid;
+                mid = _e176 + 6.2831855;
             }
+            float _e181 = big_b_1;
             float _e182 = big_b_1;
-            float _e183 = big_b_1;
-            float _e190 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e182 * _e183)), 1.0));
+            float _e189 = airlight_acos(metal::min(cap_3.cos_a / metal::sqrt((cos_p_1 * cos_p_1) + (_e181 * _e182)), 1.0));
             lo_7 = 0.0;
             if (!(inside_3)) {
-                float _e194 = mid;
-                lo_7 = metal::max(_e194 - _e190, 0.0);
+                float _e193 = mid;
+                lo_7 = metal::max(_e193 - _e189, 0.0);
             }
-            float _e198 = mid;
-            hi_6 = _e198 + _e190;
+            float _e197 = mid;
+            hi_6 = _e197 + _e189;
             if (beside) {
-                float _e201 = hi_6;
-                hi_6 = metal::min(_e201, AIRLIGHT_PI);
+                float _e200 = hi_6;
+                hi_6 = metal::min(_e200, AIRLIGHT_PI);
             }
-            float _e204 = lo_7;
-            float tail_1 = _e204 + AIRLIGHT_LOBE_TAIL;
-            float _e207 = hi_6;
-            if (_e207 > tail_1) {
-                float _e211 = hi_6;
-                float _e212 = lo_7;
-                float _e215 = lo_7;
-                local_194 = (_e211 - _e212) > (AIRLIGHT_LOBE_REACH * metal::max(scale_3, _e215));
+            float _e203 = lo_7;
+            float tail_1 = _e203 + AIRLIGHT_LOBE_TAIL;
+            float _e206 = hi_6;
+            if (_e206 > tail_1) {
+                float _e210 = hi_6;
+                float _e211 = lo_7;
+                float _e214 = lo_7;
+                local_194 = (_e210 - _e211) > (AIRLIGHT_LOBE_REACH * metal::max(scale_3, _e214));
             } else {
                 local_194 = false;
             }
@@ -9355,106 +9353,106 @@ float airlight_sphere_about_lobe(
                 if (metal::all(loop_bound_53 == uint2(0u))) { break; }
                 loop_bound_53 -= uint2(loop_bound_53.y == 0u, 1u);
                 if (!loop_init_52) {
-                    uint _e413 = k_9;
-                    k_9 = _e413 + 1u;
+                    uint _e412 = k_9;
+                    k_9 = _e412 + 1u;
                 }
                 loop_init_52 = false;
-                uint _e225 = k_9;
-                if (_e225 < (cut_3 ? 2u : 1u)) {
+                uint _e224 = k_9;
+                if (_e224 < (cut_3 ? 2u : 1u)) {
                 } else {
                     break;
                 }
                 {
-                    float _e230 = lo_7;
-                    uint _e231 = k_9;
-                    float start_5 = (_e231 == 1u) ? tail_1 : _e230;
-                    float _e235 = hi_6;
+                    float _e229 = lo_7;
+                    uint _e230 = k_9;
+                    float start_5 = (_e230 == 1u) ? tail_1 : _e229;
+                    float _e234 = hi_6;
                     if (cut_3) {
-                        uint _e238 = k_9;
-                        local_195 = _e238 == 0u;
+                        uint _e237 = k_9;
+                        local_195 = _e237 == 0u;
                     } else {
                         local_195 = false;
                     }
-                    bool _e242 = local_195;
-                    float to_1 = _e242 ? tail_1 : _e235;
-                    metal::float2 _e244 = airlight_graded_from(scale_3, start_5, to_1);
-                    float graded_10 = _e244.x;
-                    float c_24 = 0.5 * _e244.y;
-                    float hw_8 = 0.5 * _e244.y;
-                    float _e252 = around;
-                    float _e255 = big_b_1;
-                    float _e259 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e255, start_5, graded_10, c_24 - (0.09501251 * hw_8));
-                    around = _e252 + ((0.1894506 * hw_8) * _e259);
-                    float _e262 = around;
-                    float _e265 = big_b_1;
-                    float _e269 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e265, start_5, graded_10, c_24 + (0.09501251 * hw_8));
-                    around = _e262 + ((0.1894506 * hw_8) * _e269);
-                    float _e272 = around;
-                    float _e275 = big_b_1;
-                    float _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e275, start_5, graded_10, c_24 - (0.28160354 * hw_8));
-                    around = _e272 + ((0.18260342 * hw_8) * _e279);
-                    float _e282 = around;
-                    float _e285 = big_b_1;
-                    float _e289 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, start_5, graded_10, c_24 + (0.28160354 * hw_8));
-                    around = _e282 + ((0.18260342 * hw_8) * _e289);
-                    float _e292 = around;
-                    float _e295 = big_b_1;
-                    float _e299 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e295, start_5, graded_10, c_24 - (0.45801678 * hw_8));
-                    around = _e292 + ((0.16915652 * hw_8) * _e299);
-                    float _e302 = around;
-                    float _e305 = big_b_1;
-                    float _e309 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e305, start_5, graded_10, c_24 + (0.45801678 * hw_8));
-                    around = _e302 + ((0.16915652 * hw_8) * _e309);
-                    float _e312 = around;
-                    float _e315 = big_b_1;
-                    float _e319 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e315, start_5, graded_10, c_24 - (0.61787623 * hw_8));
-                    around = _e312 + ((0.14959599 * hw_8) * _e319);
-                    float _e322 = around;
-                    float _e325 = big_b_1;
-                    float _e329 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e325, start_5, graded_10, c_24 + (0.61787623 * hw_8));
-                    around = _e322 + ((0.14959599 * hw_8) * _e329);
-                    float _e332 = around;
-                    float _e335 = big_b_1;
-                    float _e339 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e335, start_5, graded_10, c_24 - (0.7554044 * hw_8));
-                    around = _e332 + ((0.12462897 * hw_8) * _e339);
-                    float _e342 = around;
-                    float _e345 = big_b_1;
-                    float _e349 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e345, start_5, graded_10, c_24 + (0.7554044 * hw_8));
-                    around = _e342 + ((0.12462897 * hw_8) * _e349);
-                    float _e352 = around;
-                    float _e355 = big_b_1;
-                    float _e359 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e355, start_5, graded_10, c_24 - (0.8656312 * hw_8));
-                    around = _e352 + ((0.09515851 * hw_8) * _e359);
-                    float _e362 = around;
-                    float _e365 = big_b_1;
-                    float _e369 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e365, start_5, graded_10, c_24 + (0.8656312 * hw_8));
-                    around = _e362 + ((0.09515851 * hw_8) * _e369);
-                    float _e372 = around;
-                    float _e375 = big_b_1;
-                    float _e379 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e375, start_5, graded_10, c_24 - (0.944575 * hw_8));
-                    around = _e372 + ((0.062253524 * hw_8) * _e379);
-                    float _e382 = around;
-                    float _e385 = big_b_1;
-                    float _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e385, start_5, graded_10, c_24 + (0.944575 * hw_8));
-                    around = _e382 + ((0.062253524 * hw_8) * _e389);
-                    float _e392 = around;
-                    float _e395 = big_b_1;
-                    float _e399 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, start_5, graded_10, c_24 - (0.9894009 * hw_8));
-                    around = _e392 + ((0.02715246 * hw_8) * _e399);
-                    float _e402 = around;
-                    float _e405 = big_b_1;
-                    float _e409 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e405, start_5, graded_10, c_24 + (0.9894009 * hw_8));
-                    around = _e402 + ((0.02715246 * hw_8) * _e409);
+                    bool _e241 = local_195;
+                    float to_1 = _e241 ? tail_1 : _e234;
+                    metal::float2 _e243 = airlight_graded_from(scale_3, start_5, to_1);
+                    float graded_10 = _e243.x;
+                    float c_24 = 0.5 * _e243.y;
+                    float hw_8 = 0.5 * _e243.y;
+                    float _e251 = around;
+                    float _e254 = big_b_1;
+                    float _e258 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e254, start_5, graded_10, c_24 - (0.09501251 * hw_8));
+                    around = _e251 + ((0.1894506 * hw_8) * _e258);
+                    float _e261 = around;
+                    float _e264 = big_b_1;
+                    float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e264, start_5, graded_10, c_24 + (0.09501251 * hw_8));
+                    around = _e261 + ((0.1894506 * hw_8) * _e268);
+                    float _e271 = around;
+                    float _e274 = big_b_1;
+                    float _e278 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, start_5, graded_10, c_24 - (0.28160354 * hw_8));
+                    around = _e271 + ((0.18260342 * hw_8) * _e278);
+                    float _e281 = around;
+                    float _e284 = big_b_1;
+                    float _e288 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e284, start_5, graded_10, c_24 + (0.28160354 * hw_8));
+                    around = _e281 + ((0.18260342 * hw_8) * _e288);
+                    float _e291 = around;
+                    float _e294 = big_b_1;
+                    float _e298 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e294, start_5, graded_10, c_24 - (0.45801678 * hw_8));
+                    around = _e291 + ((0.16915652 * hw_8) * _e298);
+                    float _e301 = around;
+                    float _e304 = big_b_1;
+                    float _e308 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e304, start_5, graded_10, c_24 + (0.45801678 * hw_8));
+                    around = _e301 + ((0.16915652 * hw_8) * _e308);
+                    float _e311 = around;
+                    float _e314 = big_b_1;
+                    float _e318 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e314, start_5, graded_10, c_24 - (0.61787623 * hw_8));
+                    around = _e311 + ((0.14959599 * hw_8) * _e318);
+                    float _e321 = around;
+                    float _e324 = big_b_1;
+                    float _e328 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e324, start_5, graded_10, c_24 + (0.61787623 * hw_8));
+                    around = _e321 + ((0.14959599 * hw_8) * _e328);
+                    float _e331 = around;
+                    float _e334 = big_b_1;
+                    float _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e334, start_5, graded_10, c_24 - (0.7554044 * hw_8));
+                    around = _e331 + ((0.12462897 * hw_8) * _e338);
+                    float _e341 = around;
+                    float _e344 = big_b_1;
+                    float _e348 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e344, start_5, graded_10, c_24 + (0.7554044 * hw_8));
+                    around = _e341 + ((0.12462897 * hw_8) * _e348);
+                    float _e351 = around;
+                    float _e354 = big_b_1;
+                    float _e358 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e354, start_5, graded_10, c_24 - (0.8656312 * hw_8));
+                    around = _e351 + ((0.09515851 * hw_8) * _e358);
+                    float _e361 = around;
+                    float _e364 = big_b_1;
+                    float _e368 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e364, start_5, graded_10, c_24 + (0.8656312 * hw_8));
+                    around = _e361 + ((0.09515851 * hw_8) * _e368);
+                    float _e371 = around;
+                    float _e374 = big_b_1;
+                    float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e374, start_5, graded_10, c_24 - (0.944575 * hw_8));
+                    around = _e371 + ((0.062253524 * hw_8) * _e378);
+                    float _e381 = around;
+                    float _e384 = big_b_1;
+                    float _e388 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, start_5, graded_10, c_24 + (0.944575 * hw_8));
+                    around = _e381 + ((0.062253524 * hw_8) * _e388);
+                    float _e391 = around;
+                    float _e394 = big_b_1;
+                    float _e398 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e394, start_5, graded_10, c_24 - (0.9894009 * hw_8));
+                    around = _e391 + ((0.02715246 * hw_8) * _e398);
+                    float _e401 = around;
+                    float _e404 = big_b_1;
+                    float _e408 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e404, start_5, graded_10, c_24 + (0.9894009 * hw_8));
+                    around = _e401 + ((0.02715246 * hw_8) * _e408);
                 }
             }
-            float _e415 = sum_14;
-            float _e416 = wpsi;
-            float _e417 = around;
-            sum_14 = _e415 + (_e416 * _e417);
+            float _e414 = sum_14;
+            float _e415 = wpsi;
+            float _e416 = around;
+            sum_14 = _e414 + (_e415 * _e416);
         }
     }
-    float _e423 = sum_14;
-    return _e423;
+    float _e422 = sum_14;
+    return _e422;
 }
 
 float airlight_sphere(
@@ -9478,82 +9476,83 @@ float airlight_sphere(
         return 0.0;
     }
     float sin_a_2 = a_30.radius / _e5;
-    AirlightCap cap_4 = AirlightCap {v_12 / metal::float3(_e5), _e5, a_30.radius, sin_a_2, metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2))};
-    float _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
+    float cos_a_3 = metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2));
+    float _e18 = airlight_atan2_upper(sin_a_2, cos_a_3);
+    AirlightCap cap_4 = AirlightCap {v_12 / metal::float3(_e5), _e5, a_30.radius, sin_a_2, cos_a_3, _e18};
     uint2 loop_bound_54 = uint2(4294967295u);
     bool loop_init_53 = true;
     while(true) {
         if (metal::all(loop_bound_54 == uint2(0u))) { break; }
         loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
         if (!loop_init_53) {
-            uint _e102 = j_13;
-            j_13 = _e102 + 1u;
+            uint _e101 = j_13;
+            j_13 = _e101 + 1u;
         }
         loop_init_53 = false;
-        uint _e32 = j_13;
-        if (_e32 < 2u) {
+        uint _e31 = j_13;
+        if (_e31 < 2u) {
         } else {
             break;
         }
         {
-            uint _e39 = j_13;
-            metal::float2 lobe_6 = (_e39 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
+            uint _e38 = j_13;
+            metal::float2 lobe_6 = (_e38 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
             float c_25 = metal::dot(cap_4.a, lobe_6.x * a_30.d);
-            float _e48 = chosen;
-            if (_e48 == 0.0) {
+            float _e47 = chosen;
+            if (_e47 == 0.0) {
                 local_196 = lobe_6.y > 0.0;
             } else {
                 local_196 = false;
             }
-            bool _e57 = local_196;
-            if (_e57) {
-                local_197 = lobe_6.y < (_e23 + _e23);
+            bool _e56 = local_196;
+            if (_e56) {
+                local_197 = lobe_6.y < (_e18 + _e18);
             } else {
                 local_197 = false;
             }
-            bool _e64 = local_197;
-            if (_e64) {
+            bool _e63 = local_197;
+            if (_e63) {
                 if (!(!((c_25 < -(cap_4.cos_a))))) {
                     local_199 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
                 } else {
                     local_199 = true;
                 }
-                bool _e78 = local_199;
-                local_198 = _e78;
+                bool _e77 = local_199;
+                local_198 = _e77;
             } else {
                 local_198 = false;
             }
-            bool _e80 = local_198;
-            if (_e80) {
+            bool _e79 = local_198;
+            if (_e79) {
                 if (!((c_25 > cap_4.cos_a))) {
-                    float _e88 = airlight_acos(c_25);
-                    local_201 = (_e88 - _e23) < metal::max(AIRLIGHT_LOBE_REACH * lobe_6.y, _e23);
+                    float _e87 = airlight_acos(c_25);
+                    local_201 = (_e87 - _e18) < metal::max(AIRLIGHT_LOBE_REACH * lobe_6.y, _e18);
                 } else {
                     local_201 = true;
                 }
-                bool _e96 = local_201;
-                local_200 = _e96;
+                bool _e95 = local_201;
+                local_200 = _e95;
             } else {
                 local_200 = false;
             }
-            bool _e98 = local_200;
-            if (_e98) {
+            bool _e97 = local_200;
+            if (_e97) {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
                 cos_p_2 = c_25;
             }
         }
     }
-    float _e104 = chosen;
-    if (_e104 > 0.0) {
-        float _e107 = sign_3;
-        float _e108 = cos_p_2;
-        float _e109 = chosen;
-        float _e110 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e107, _e108, _e109);
-        return _e110;
+    float _e103 = chosen;
+    if (_e103 > 0.0) {
+        float _e106 = sign_3;
+        float _e107 = cos_p_2;
+        float _e108 = chosen;
+        float _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
+        return _e109;
     }
-    float _e111 = airlight_sphere_cap(s_49, a_30, cap_4);
-    return _e111;
+    float _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
+    return _e110;
 }
 
 float airlight_emitter_radiance(

@@ -239,6 +239,7 @@ struct AirlightCap {
     radius: f32,
     sin_a: f32,
     cos_a: f32,
+    alpha: f32,
 }
 
 const AIRLIGHT_TERMS: u32 = 12u;
@@ -7074,32 +7075,31 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> 
             let _e40 = i_30;
             let a_46 = o_1.corners[_e40];
             let _e43 = i_30;
-            let e_16 = (o_1.corners[((_e43 + 1u) % 4u)] - a_46);
-            let _e50 = inside;
-            if _e50 {
-                local_181 = ((((q_5.x - a_46.x) * e_16.y) - ((q_5.y - a_46.y) * e_16.x)) <= 0f);
+            let b_23 = o_1.corners[((_e43 + 1u) % 4u)];
+            let _e49 = inside;
+            if _e49 {
+                local_181 = ((((q_5.x - a_46.x) * (b_23.y - a_46.y)) - ((q_5.y - a_46.y) * (b_23.x - a_46.x))) <= 0f);
             } else {
                 local_181 = false;
             }
-            let _e67 = local_181;
-            inside = _e67;
-            let _e69 = i_30;
-            let _e75 = airlight_edge_nearest(a_46, o_1.corners[((_e69 + 1u) % 4u)], q_5);
-            let dd = (((_e75.x - q_5.x) * (_e75.x - q_5.x)) + ((_e75.y - q_5.y) * (_e75.y - q_5.y)));
-            let _e91 = best;
-            if (dd < _e91) {
+            let _e70 = local_181;
+            inside = _e70;
+            let _e71 = airlight_edge_nearest(a_46, b_23, q_5);
+            let dd = (((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y)));
+            let _e87 = best;
+            if (dd < _e87) {
                 best = dd;
-                nearest_1 = _e75;
+                nearest_1 = _e71;
             }
         }
         continuing {
-            let _e94 = i_30;
-            i_30 = (_e94 + 1u);
+            let _e90 = i_30;
+            i_30 = (_e90 + 1u);
         }
     }
-    let _e96 = nearest_1;
-    let _e97 = inside;
-    return vec3<f32>(_e96, select(0f, 1f, _e97));
+    let _e92 = nearest_1;
+    let _e93 = inside;
+    return vec3<f32>(_e92, select(0f, 1f, _e93));
 }
 
 fn airlight_outline_nearest(o_2: AirlightOutline, q_6: vec2<f32>) -> vec2<f32> {
@@ -7199,15 +7199,15 @@ fn airlight_outline_chord(o_4: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) 
     if (o_4.radius > 0f) {
         let qc_1 = (q_8 - o_4.corners[0]);
         let a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        let b_23 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+        let b_24 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
         let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        let disc_3 = ((b_23 * b_23) - (a_47 * k_13));
+        let disc_3 = ((b_24 * b_24) - (a_47 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_11 = (-(b_23) - select(root_3, -(root_3), ((bitcast<u32>(b_23) & 2147483648u) != 0u)));
+        let t_11 = (-(b_24) - select(root_3, -(root_3), ((bitcast<u32>(b_24) & 2147483648u) != 0u)));
         let r1_2 = (t_11 / a_47);
         let r2_4 = (k_13 / t_11);
         let hi_9 = max(r1_2, r2_4);
@@ -7337,9 +7337,9 @@ fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
 }
 
 fn airlight_edge_rule(a_25: vec2<f32>, b_15: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
-    let e_17 = (b_15 - a_25);
-    let el = sqrt(((e_17.x * e_17.x) + (e_17.y * e_17.y)));
-    let t_12 = (e_17 / vec2(el));
+    let e_16 = (b_15 - a_25);
+    let el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
+    let t_12 = (e_16 / vec2(el));
     let h_9 = (((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el);
     let reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
     let _e27 = airlight_atan2_(dot(a_25, t_12), reach_3);
@@ -7356,8 +7356,8 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
 
 fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
     let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
-    let b_24 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
-    return vec4<f32>(b_24.x, min(b_24.y, b_24.z), max(b_24.y, b_24.z), b_24.w);
+    let b_25 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
+    return vec4<f32>(b_25.x, min(b_25.y, b_25.z), max(b_25.y, b_25.z), b_25.w);
 }
 
 fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
@@ -7452,9 +7452,9 @@ fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     let _e19 = airlight_triangle_rule((i_33 % 12u));
     let hw_5 = (0.5f * (hi_10 - lo_9));
     let x_38 = ((0.5f * (lo_9 + hi_10)) + (hw_5 * _e19.x));
-    let e_18 = exp(-(abs(x_38)));
-    let sech = ((2f * e_18) / (1f + (e_18 * e_18)));
-    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_18 * e_18))) / (1f + (e_18 * e_18))), ((_e19.y * hw_5) * sech));
+    let e_17 = exp(-(abs(x_38)));
+    let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
+    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
 }
 
 fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
@@ -7636,11 +7636,11 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
             }
             {
                 let _e310 = i_37;
-                let b_25 = y_14[((_e310 + 1u) % 4u)];
+                let b_26 = y_14[((_e310 + 1u) % 4u)];
                 let _e316 = i_37;
                 let _e318 = i_37;
                 let _e323 = i_37;
-                area[_e316] = ((y_14[_e318].x * b_25.y) - (y_14[_e323].y * b_25.x));
+                area[_e316] = ((y_14[_e318].x * b_26.y) - (y_14[_e323].y * b_26.x));
             }
             continuing {
                 let _e330 = i_37;
@@ -7890,9 +7890,9 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
             r_max_1 = ((radius_2 + radius_2) * _e77.x);
             if inside_2 {
                 e_9 = _e77.xy;
-                let b_26 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_26 * b_26) - k_15));
-                r_max_1 = select((root_4 - b_26), (-(k_15) / (b_26 + root_4)), (b_26 > 0f));
+                let b_27 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_27 * b_27) - k_15));
+                r_max_1 = select((root_4 - b_27), (-(k_15) / (b_27 + root_4)), (b_27 > 0f));
             }
             let _e118 = sum_11;
             let _e120 = above_3;
@@ -8271,21 +8271,20 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
         half_15 = _e42;
     }
     let _e43 = airlight_atan2_(sin_p, cos_p_1);
-    let _e46 = airlight_atan2_upper(cap_3.sin_a, cap_3.cos_a);
-    let eps = (_e46 - _e43);
-    let width_7 = min(scale_3, sqrt(max((eps * (_e46 + _e43)), 0f)));
-    let _e55 = axis_2.y;
-    let _e57 = axis_2.x;
-    let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e55, -(_e57)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
+    let eps = (cap_3.alpha - _e43);
+    let width_7 = min(scale_3, sqrt(max((eps * (cap_3.alpha + _e43)), 0f)));
+    let _e54 = axis_2.y;
+    let _e56 = axis_2.x;
+    let rim_1 = AirlightEdgeRule(eps, vec2<f32>(_e54, -(_e56)), sqrt(((eps * eps) + (width_7 * width_7))), -1.5707964f, 1.5707964f);
     let beside = (cos_p_1 < -(cap_3.cos_a));
     count_3 = select(16u, 24u, inside_3);
     if beside {
         count_3 = 100u;
     }
     loop {
-        let _e79 = i_43;
-        let _e80 = count_3;
-        if (_e79 < _e80) {
+        let _e78 = i_43;
+        let _e79 = count_3;
+        if (_e78 < _e79) {
         } else {
             break;
         }
@@ -8293,99 +8292,99 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
             big_b_1 = 0f;
             wpsi = 0f;
             if beside {
-                let _e88 = i_43;
-                local_191 = (_e88 < 84u);
+                let _e87 = i_43;
+                local_191 = (_e87 < 84u);
             } else {
                 local_191 = false;
             }
-            let _e92 = local_191;
-            if _e92 {
-                let _e95 = airlight_mercator_cut(7u);
-                let _e96 = i_43;
-                let _e97 = airlight_mercator_node(0f, _e95, _e96);
-                if (_e97.z == 0f) {
+            let _e91 = local_191;
+            if _e91 {
+                let _e94 = airlight_mercator_cut(7u);
+                let _e95 = i_43;
+                let _e96 = airlight_mercator_node(0f, _e94, _e95);
+                if (_e96.z == 0f) {
                     continue;
                 }
-                big_b_1 = (sin_p * _e97.x);
-                wpsi = (2f * _e97.z);
+                big_b_1 = (sin_p * _e96.x);
+                wpsi = (2f * _e96.z);
             } else {
                 if beside {
-                    let _e106 = i_43;
-                    let _e109 = airlight_azimuths_even((_e106 - 84u));
-                    big_b_1 = (-(sin_p) * _e109.x);
-                    wpsi = _e109.z;
+                    let _e105 = i_43;
+                    let _e108 = airlight_azimuths_even((_e105 - 84u));
+                    big_b_1 = (-(sin_p) * _e108.x);
+                    wpsi = _e108.z;
                 } else {
                     if inside_3 {
-                        let _e116 = i_43;
-                        local_192 = (_e116 < 8u);
+                        let _e115 = i_43;
+                        local_192 = (_e115 < 8u);
                     } else {
                         local_192 = false;
                     }
-                    let _e120 = local_192;
-                    if _e120 {
+                    let _e119 = local_192;
+                    if _e119 {
                         if !((eps > 0f)) {
                             continue;
                         }
-                        let _e125 = i_43;
-                        let _e129 = airlight_radial_rule(((2u * _e125) + 1u));
-                        let _e133 = airlight_edge_at(rim_1, (1.5707964f * _e129.x));
-                        let _e135 = axis_2;
-                        big_b_1 = (sin_p * dot(_e133.xy, _e135));
-                        wpsi = ((((2f * _e129.y) * 0.5f) * AIRLIGHT_PI) * _e133.w);
+                        let _e124 = i_43;
+                        let _e128 = airlight_radial_rule(((2u * _e124) + 1u));
+                        let _e132 = airlight_edge_at(rim_1, (1.5707964f * _e128.x));
+                        let _e134 = axis_2;
+                        big_b_1 = (sin_p * dot(_e132.xy, _e134));
+                        wpsi = ((((2f * _e128.y) * 0.5f) * AIRLIGHT_PI) * _e132.w);
                     } else {
                         if inside_3 {
-                            let _e147 = i_43;
-                            let _e150 = airlight_azimuths_even((_e147 - 8u));
-                            big_b_1 = (sin_p * _e150.x);
-                            wpsi = _e150.z;
+                            let _e146 = i_43;
+                            let _e149 = airlight_azimuths_even((_e146 - 8u));
+                            big_b_1 = (sin_p * _e149.x);
+                            wpsi = _e149.z;
                         } else {
-                            let _e154 = i_43;
-                            let _e155 = airlight_azimuths_even(_e154);
-                            let _e156 = half_15;
-                            let _e159 = airlight_cos_sin((_e156 * _e155.y));
-                            big_b_1 = (sin_p * _e159.x);
-                            let _e163 = half_15;
-                            wpsi = ((_e155.z * _e163) * _e155.x);
+                            let _e153 = i_43;
+                            let _e154 = airlight_azimuths_even(_e153);
+                            let _e155 = half_15;
+                            let _e158 = airlight_cos_sin((_e155 * _e154.y));
+                            big_b_1 = (sin_p * _e158.x);
+                            let _e162 = half_15;
+                            wpsi = ((_e154.z * _e162) * _e154.x);
                         }
                     }
                 }
             }
-            let _e167 = big_b_1;
-            let _e168 = airlight_atan2_(_e167, cos_p_1);
-            mid = _e168;
+            let _e166 = big_b_1;
+            let _e167 = airlight_atan2_(_e166, cos_p_1);
+            mid = _e167;
             if beside {
-                let _e172 = mid;
-                local_193 = (_e172 < 0f);
+                let _e171 = mid;
+                local_193 = (_e171 < 0f);
             } else {
                 local_193 = false;
             }
-            let _e176 = local_193;
-            if _e176 {
-                let _e177 = mid;
-                mid = (_e177 + 6.2831855f);
+            let _e175 = local_193;
+            if _e175 {
+                let _e176 = mid;
+                mid = (_e176 + 6.2831855f);
             }
+            let _e181 = big_b_1;
             let _e182 = big_b_1;
-            let _e183 = big_b_1;
-            let _e190 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e182 * _e183)))), 1f));
+            let _e189 = airlight_acos(min((cap_3.cos_a / sqrt(((cos_p_1 * cos_p_1) + (_e181 * _e182)))), 1f));
             lo_7 = 0f;
             if !(inside_3) {
-                let _e194 = mid;
-                lo_7 = max((_e194 - _e190), 0f);
+                let _e193 = mid;
+                lo_7 = max((_e193 - _e189), 0f);
             }
-            let _e198 = mid;
-            hi_6 = (_e198 + _e190);
+            let _e197 = mid;
+            hi_6 = (_e197 + _e189);
             if beside {
-                let _e201 = hi_6;
-                hi_6 = min(_e201, AIRLIGHT_PI);
+                let _e200 = hi_6;
+                hi_6 = min(_e200, AIRLIGHT_PI);
             }
-            let _e204 = lo_7;
-            let tail_1 = (_e204 + AIRLIGHT_LOBE_TAIL);
-            let _e207 = hi_6;
-            if (_e207 > tail_1) {
-                let _e211 = hi_6;
-                let _e212 = lo_7;
-                let _e215 = lo_7;
-                local_194 = ((_e211 - _e212) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e215)));
+            let _e203 = lo_7;
+            let tail_1 = (_e203 + AIRLIGHT_LOBE_TAIL);
+            let _e206 = hi_6;
+            if (_e206 > tail_1) {
+                let _e210 = hi_6;
+                let _e211 = lo_7;
+                let _e214 = lo_7;
+                local_194 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
             } else {
                 local_194 = false;
             }
@@ -8393,110 +8392,110 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
             around = 0f;
             k_9 = 0u;
             loop {
-                let _e225 = k_9;
-                if (_e225 < select(1u, 2u, cut_3)) {
+                let _e224 = k_9;
+                if (_e224 < select(1u, 2u, cut_3)) {
                 } else {
                     break;
                 }
                 {
-                    let _e230 = lo_7;
-                    let _e231 = k_9;
-                    let start_5 = select(_e230, tail_1, (_e231 == 1u));
-                    let _e235 = hi_6;
+                    let _e229 = lo_7;
+                    let _e230 = k_9;
+                    let start_5 = select(_e229, tail_1, (_e230 == 1u));
+                    let _e234 = hi_6;
                     if cut_3 {
-                        let _e238 = k_9;
-                        local_195 = (_e238 == 0u);
+                        let _e237 = k_9;
+                        local_195 = (_e237 == 0u);
                     } else {
                         local_195 = false;
                     }
-                    let _e242 = local_195;
-                    let to_1 = select(_e235, tail_1, _e242);
-                    let _e244 = airlight_graded_from(scale_3, start_5, to_1);
-                    let graded_10 = _e244.x;
-                    let c_24 = (0.5f * _e244.y);
-                    let hw_8 = (0.5f * _e244.y);
-                    let _e252 = around;
-                    let _e255 = big_b_1;
-                    let _e259 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e255, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
-                    around = (_e252 + ((0.1894506f * hw_8) * _e259));
-                    let _e262 = around;
-                    let _e265 = big_b_1;
-                    let _e269 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e265, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
-                    around = (_e262 + ((0.1894506f * hw_8) * _e269));
-                    let _e272 = around;
-                    let _e275 = big_b_1;
-                    let _e279 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e275, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
-                    around = (_e272 + ((0.18260342f * hw_8) * _e279));
-                    let _e282 = around;
-                    let _e285 = big_b_1;
-                    let _e289 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e285, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
-                    around = (_e282 + ((0.18260342f * hw_8) * _e289));
-                    let _e292 = around;
-                    let _e295 = big_b_1;
-                    let _e299 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e295, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
-                    around = (_e292 + ((0.16915652f * hw_8) * _e299));
-                    let _e302 = around;
-                    let _e305 = big_b_1;
-                    let _e309 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e305, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
-                    around = (_e302 + ((0.16915652f * hw_8) * _e309));
-                    let _e312 = around;
-                    let _e315 = big_b_1;
-                    let _e319 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e315, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
-                    around = (_e312 + ((0.14959599f * hw_8) * _e319));
-                    let _e322 = around;
-                    let _e325 = big_b_1;
-                    let _e329 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e325, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
-                    around = (_e322 + ((0.14959599f * hw_8) * _e329));
-                    let _e332 = around;
-                    let _e335 = big_b_1;
-                    let _e339 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e335, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
-                    around = (_e332 + ((0.12462897f * hw_8) * _e339));
-                    let _e342 = around;
-                    let _e345 = big_b_1;
-                    let _e349 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e345, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
-                    around = (_e342 + ((0.12462897f * hw_8) * _e349));
-                    let _e352 = around;
-                    let _e355 = big_b_1;
-                    let _e359 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e355, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
-                    around = (_e352 + ((0.09515851f * hw_8) * _e359));
-                    let _e362 = around;
-                    let _e365 = big_b_1;
-                    let _e369 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e365, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
-                    around = (_e362 + ((0.09515851f * hw_8) * _e369));
-                    let _e372 = around;
-                    let _e375 = big_b_1;
-                    let _e379 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e375, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
-                    around = (_e372 + ((0.062253524f * hw_8) * _e379));
-                    let _e382 = around;
-                    let _e385 = big_b_1;
-                    let _e389 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e385, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
-                    around = (_e382 + ((0.062253524f * hw_8) * _e389));
-                    let _e392 = around;
-                    let _e395 = big_b_1;
-                    let _e399 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e395, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
-                    around = (_e392 + ((0.02715246f * hw_8) * _e399));
-                    let _e402 = around;
-                    let _e405 = big_b_1;
-                    let _e409 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e405, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
-                    around = (_e402 + ((0.02715246f * hw_8) * _e409));
+                    let _e241 = local_195;
+                    let to_1 = select(_e234, tail_1, _e241);
+                    let _e243 = airlight_graded_from(scale_3, start_5, to_1);
+                    let graded_10 = _e243.x;
+                    let c_24 = (0.5f * _e243.y);
+                    let hw_8 = (0.5f * _e243.y);
+                    let _e251 = around;
+                    let _e254 = big_b_1;
+                    let _e258 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
+                    around = (_e251 + ((0.1894506f * hw_8) * _e258));
+                    let _e261 = around;
+                    let _e264 = big_b_1;
+                    let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
+                    around = (_e261 + ((0.1894506f * hw_8) * _e268));
+                    let _e271 = around;
+                    let _e274 = big_b_1;
+                    let _e278 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
+                    around = (_e271 + ((0.18260342f * hw_8) * _e278));
+                    let _e281 = around;
+                    let _e284 = big_b_1;
+                    let _e288 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
+                    around = (_e281 + ((0.18260342f * hw_8) * _e288));
+                    let _e291 = around;
+                    let _e294 = big_b_1;
+                    let _e298 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
+                    around = (_e291 + ((0.16915652f * hw_8) * _e298));
+                    let _e301 = around;
+                    let _e304 = big_b_1;
+                    let _e308 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
+                    around = (_e301 + ((0.16915652f * hw_8) * _e308));
+                    let _e311 = around;
+                    let _e314 = big_b_1;
+                    let _e318 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
+                    around = (_e311 + ((0.14959599f * hw_8) * _e318));
+                    let _e321 = around;
+                    let _e324 = big_b_1;
+                    let _e328 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
+                    around = (_e321 + ((0.14959599f * hw_8) * _e328));
+                    let _e331 = around;
+                    let _e334 = big_b_1;
+                    let _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
+                    around = (_e331 + ((0.12462897f * hw_8) * _e338));
+                    let _e341 = around;
+                    let _e344 = big_b_1;
+                    let _e348 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
+                    around = (_e341 + ((0.12462897f * hw_8) * _e348));
+                    let _e351 = around;
+                    let _e354 = big_b_1;
+                    let _e358 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
+                    around = (_e351 + ((0.09515851f * hw_8) * _e358));
+                    let _e361 = around;
+                    let _e364 = big_b_1;
+                    let _e368 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
+                    around = (_e361 + ((0.09515851f * hw_8) * _e368));
+                    let _e371 = around;
+                    let _e374 = big_b_1;
+                    let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
+                    around = (_e371 + ((0.062253524f * hw_8) * _e378));
+                    let _e381 = around;
+                    let _e384 = big_b_1;
+                    let _e388 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
+                    around = (_e381 + ((0.062253524f * hw_8) * _e388));
+                    let _e391 = around;
+                    let _e394 = big_b_1;
+                    let _e398 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
+                    around = (_e391 + ((0.02715246f * hw_8) * _e398));
+                    let _e401 = around;
+                    let _e404 = big_b_1;
+                    let _e408 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
+                    around = (_e401 + ((0.02715246f * hw_8) * _e408));
                 }
                 continuing {
-                    let _e413 = k_9;
-                    k_9 = (_e413 + 1u);
+                    let _e412 = k_9;
+                    k_9 = (_e412 + 1u);
                 }
             }
-            let _e415 = sum_14;
-            let _e416 = wpsi;
-            let _e417 = around;
-            sum_14 = (_e415 + (_e416 * _e417));
+            let _e414 = sum_14;
+            let _e415 = wpsi;
+            let _e416 = around;
+            sum_14 = (_e414 + (_e415 * _e416));
         }
         continuing {
-            let _e421 = i_43;
-            i_43 = (_e421 + 1u);
+            let _e420 = i_43;
+            i_43 = (_e420 + 1u);
         }
     }
-    let _e423 = sum_14;
-    return _e423;
+    let _e422 = sum_14;
+    return _e422;
 }
 
 fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
@@ -8517,77 +8516,78 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> 
         return 0f;
     }
     let sin_a_2 = (a_30.radius / _e5);
-    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_30.radius, sin_a_2, sqrt(((1f - sin_a_2) * (1f + sin_a_2))));
-    let _e23 = airlight_atan2_upper(sin_a_2, cap_4.cos_a);
+    let cos_a_3 = sqrt(((1f - sin_a_2) * (1f + sin_a_2)));
+    let _e18 = airlight_atan2_upper(sin_a_2, cos_a_3);
+    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_30.radius, sin_a_2, cos_a_3, _e18);
     loop {
-        let _e32 = j_13;
-        if (_e32 < 2u) {
+        let _e31 = j_13;
+        if (_e31 < 2u) {
         } else {
             break;
         }
         {
-            let _e39 = j_13;
-            let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e39 == 1u));
+            let _e38 = j_13;
+            let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e38 == 1u));
             let c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
-            let _e48 = chosen;
-            if (_e48 == 0f) {
+            let _e47 = chosen;
+            if (_e47 == 0f) {
                 local_196 = (lobe_6.y > 0f);
             } else {
                 local_196 = false;
             }
-            let _e57 = local_196;
-            if _e57 {
-                local_197 = (lobe_6.y < (_e23 + _e23));
+            let _e56 = local_196;
+            if _e56 {
+                local_197 = (lobe_6.y < (_e18 + _e18));
             } else {
                 local_197 = false;
             }
-            let _e64 = local_197;
-            if _e64 {
+            let _e63 = local_197;
+            if _e63 {
                 if !(!((c_25 < -(cap_4.cos_a)))) {
                     local_199 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
                 } else {
                     local_199 = true;
                 }
-                let _e78 = local_199;
-                local_198 = _e78;
+                let _e77 = local_199;
+                local_198 = _e77;
             } else {
                 local_198 = false;
             }
-            let _e80 = local_198;
-            if _e80 {
+            let _e79 = local_198;
+            if _e79 {
                 if !((c_25 > cap_4.cos_a)) {
-                    let _e88 = airlight_acos(c_25);
-                    local_201 = ((_e88 - _e23) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e23));
+                    let _e87 = airlight_acos(c_25);
+                    local_201 = ((_e87 - _e18) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e18));
                 } else {
                     local_201 = true;
                 }
-                let _e96 = local_201;
-                local_200 = _e96;
+                let _e95 = local_201;
+                local_200 = _e95;
             } else {
                 local_200 = false;
             }
-            let _e98 = local_200;
-            if _e98 {
+            let _e97 = local_200;
+            if _e97 {
                 chosen = lobe_6.y;
                 sign_3 = lobe_6.x;
                 cos_p_2 = c_25;
             }
         }
         continuing {
-            let _e102 = j_13;
-            j_13 = (_e102 + 1u);
+            let _e101 = j_13;
+            j_13 = (_e101 + 1u);
         }
     }
-    let _e104 = chosen;
-    if (_e104 > 0f) {
-        let _e107 = sign_3;
-        let _e108 = cos_p_2;
-        let _e109 = chosen;
-        let _e110 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e107, _e108, _e109);
-        return _e110;
+    let _e103 = chosen;
+    if (_e103 > 0f) {
+        let _e106 = sign_3;
+        let _e107 = cos_p_2;
+        let _e108 = chosen;
+        let _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
+        return _e109;
     }
-    let _e111 = airlight_sphere_cap(s_49, a_30, cap_4);
-    return _e111;
+    let _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
+    return _e110;
 }
 
 fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {

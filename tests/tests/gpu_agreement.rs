@@ -523,6 +523,20 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
     use airlight::{AreaLight, AreaScene, Emitter, Medium, Ray};
     let (center, radius) = (Vec3::new(6.0, 1.5, -0.5), 0.6f32);
     let (towards, side) = (center.normalize(), center.normalize().cross(Vec3::Z).normalize());
+    // the f32 scene of the ray along `dir` over `[t_min, t_max]` in HG fog of `g`, and the nested
+    // construction's value on its f32 inputs
+    let case = |dir: Vec3, (t_min, t_max): (f32, f32), g: f32, label: String| {
+        let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
+        let single = AreaScene::new(Ray { origin: Vec3::ZERO, dir, t_min, t_max }, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
+        let double = AreaScene::new(
+            Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: t_min as f64, t_max: t_max as f64 },
+            AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
+            Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
+            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }),
+        )
+        .unwrap();
+        (single, double.in_scatter_counted(1e-9).0, label)
+    };
     let mut cases = Vec::new();
     for g in [0.95f32, 0.99] {
         for depth in [0.001f32, 0.00001] {
@@ -530,17 +544,7 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
             let dir = towards * angle.cos() + side * angle.sin();
             let ends: &[(f32, &str)] = if depth < 0.0001 { &[(dir.dot(center), "to its chord's middle"), (f32::INFINITY, "whole")] } else { &[(dir.dot(center), "to its chord's middle")] };
             for &(t_max, part) in ends {
-                let ray = Ray { origin: Vec3::ZERO, dir, t_min: 0.0, t_max };
-                let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
-                let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
-                let double = AreaScene::new(
-                    Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: 0.0, t_max: t_max as f64 },
-                    AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
-                    Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
-                    AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f64 }),
-                )
-                .unwrap();
-                cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = {g} sphere, entering {depth} of its radius inside its limb, {part}")));
+                cases.push(case(dir, (0.0, t_max), g, format!("g = {g} sphere, entering {depth} of its radius inside its limb, {part}")));
             }
         }
     }
@@ -549,17 +553,7 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
     for miss in [0.001f32, 0.0001] {
         let angle = (radius * (1.0 + miss) / center.length()).asin();
         let dir = towards * angle.cos() + side * angle.sin();
-        let ray = Ray { origin: Vec3::ZERO, dir, t_min: dir.dot(center), t_max: f32::INFINITY };
-        let (medium, light) = (Medium { sigma_s: 0.05f32, sigma_t: 0.08 }, AreaLight::new(Emitter::Sphere { center, radius }, 2.0f32));
-        let single = AreaScene::new(ray, light, medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99 })).unwrap();
-        let double = AreaScene::new(
-            Ray { origin: DVec3::ZERO, dir: dir.as_dvec3(), t_min: ray.t_min as f64, t_max: f64::INFINITY },
-            AreaLight::new(airlight::record::cast_emitter::<f32, f64>(&light.emitter), 2.0),
-            Medium { sigma_s: 0.05f32 as f64, sigma_t: 0.08f32 as f64 },
-            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99f32 as f64 }),
-        )
-        .unwrap();
-        cases.push((single, double.in_scatter_counted(1e-9).0, format!("g = 0.99 sphere, behind it, missing it by {miss} of its radius")));
+        cases.push(case(dir, (dir.dot(center), f32::INFINITY), 0.99, format!("g = 0.99 sphere, behind it, missing it by {miss} of its radius")));
     }
     cases
 }

@@ -3110,9 +3110,9 @@ fn airlight_outline_boundary(o: AirlightOutline, q: vec2<f32>) -> vec3<f32> {
     var inside = true;
     for (var i = 0u; i < 4u; i++) {
         let a = o.corners[i];
-        let e = o.corners[(i + 1u) % 4u] - a;
-        inside = inside && (q.x - a.x) * e.y - (q.y - a.y) * e.x <= 0.0;
-        let p = airlight_edge_nearest(a, o.corners[(i + 1u) % 4u], q);
+        let b = o.corners[(i + 1u) % 4u];
+        inside = inside && (q.x - a.x) * (b.y - a.y) - (q.y - a.y) * (b.x - a.x) <= 0.0;
+        let p = airlight_edge_nearest(a, b, q);
         let dd = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
         if (dd < best) {
             best = dd;
@@ -3516,6 +3516,8 @@ struct AirlightCap {
     radius: f32,
     sin_a: f32,
     cos_a: f32,
+    // its angular radius α
+    alpha: f32,
 }
 
 /// One node φ of the cap rule (outer.rs `sphere`): (the φ-weight's factor w L_e cos^{p−1} φ
@@ -3593,9 +3595,8 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
     // ε = α − β_p away) in the angle β of the rim's tangent there (σ = D tan β, D = hypot(ε,
     // min(s, the rim's half chord through p))), 16 nodes, then the far half in ψ about axis, 32
     let beta_p = airlight_atan2(sin_p, cos_p);
-    let alpha = airlight_atan2_upper(cap.sin_a, cap.cos_a);
-    let eps = alpha - beta_p;
-    let width = min(scale, sqrt(max(eps * (alpha + beta_p), 0.0)));
+    let eps = cap.alpha - beta_p;
+    let width = min(scale, sqrt(max(eps * (cap.alpha + beta_p), 0.0)));
     // (both halves even about axis, as the wedge outside is in φ: the rules' nodes on one side,
     // weights doubled)
     let rim = AirlightEdgeRule(eps, vec2<f32>(axis.y, -axis.x), sqrt(eps * eps + width * width), -0.5 * AIRLIGHT_PI, 0.5 * AIRLIGHT_PI);
@@ -3669,11 +3670,12 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
     let dc = airlight_safe_length(v);
     if (!(dc > a.radius)) { return 0.0; }
     let sin_a = a.radius / dc;
-    let cap = AirlightCap(v / dc, dc, a.radius, sin_a, sqrt((1.0 - sin_a) * (1.0 + sin_a)));
+    let cos_a = sqrt((1.0 - sin_a) * (1.0 + sin_a));
+    let alpha = airlight_atan2_upper(sin_a, cos_a);
+    let cap = AirlightCap(v / dc, dc, a.radius, sin_a, cos_a, alpha);
     // a lobe narrower than the cap (κ < α) whose direction lies inside it, or outside within
     // LOBE_REACH scales of its rim or the cap's radius α (beyond the great circle opposite the
     // centre, beside the sphere, only one narrower than BESIDE_SCALE)
-    let alpha = airlight_atan2_upper(sin_a, cap.cos_a);
     var chosen = 0.0;
     var sign = 1.0;
     var cos_p = 0.0;

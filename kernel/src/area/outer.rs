@@ -753,6 +753,8 @@ struct Cap<T> {
     dc: T,
     radius: T,
     cos_a: T,
+    /// The cap's angular radius `α = asin(R/dc)`.
+    alpha: T,
 }
 
 /// `S(x)` of a sphere (centre `c`, radius `R`); `0` inside it.
@@ -764,9 +766,9 @@ fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [
     }
     let a = [v[0] / dc, v[1] / dc, v[2] / dc];
     let sin_a = radius / dc;
-    let cap = Cap { a, dc, radius, cos_a: ((T::one() - sin_a) * (T::one() + sin_a)).sqrt() };
-    // a lobe whose direction falls inside the cap or near it: polar about it instead
     let alpha = sin_a.asin();
+    let cap = Cap { a, dc, radius, cos_a: ((T::one() - sin_a) * (T::one() + sin_a)).sqrt(), alpha };
+    // a lobe whose direction falls inside the cap or near it: polar about it instead
     for &(sign, scale) in light.lobes.iter().flatten() {
         let p = [sign * light.d[0], sign * light.d[1], sign * light.d[2]];
         let cos_p = dot(a, p);
@@ -842,7 +844,7 @@ pub const BESIDE_SCALE: f64 = 0.25;
 /// distance to the surface `dc (ω·a) − √(R² − dc²(1 − (ω·a)²))`, the emitted cosine that root
 /// over `R`.
 fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap: &Cap<T>, (p, sign, cos_p): ([T; 3], T, T), scale: T) -> T {
-    let Cap { a, dc, radius, cos_a } = *cap;
+    let Cap { a, dc, radius, cos_a, alpha } = *cap;
     let (u, v) = basis(p);
     let (au, av) = (dot(a, u), dot(a, v));
     let inside = cos_p > cos_a;
@@ -889,7 +891,7 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
         // the rim's tangent there (σ = D tan β, D = hypot(ε, min(s, the rim's half chord through
         // p))), the far half in ψ; in ψ alone the θ ranges towards the rim grow as ε/cos over
         // the last ε/α of the half
-        let (alpha, beta_p) = ((radius / dc).asin(), sin_p.atan2(cos_p));
+        let beta_p = sin_p.atan2(cos_p);
         // t with m = (t.1, −t.0) = −axis
         let t = (axis.1, -axis.0);
         let eps = alpha - beta_p;
