@@ -444,8 +444,8 @@ vec2 airlight_csqrt(vec2 z_1) {
 vec2 airlight_cos_sin(float x) {
     float z_16 = (x * x);
     float c_8 = (1.0 + (z_16 * (-0.5 + (z_16 * (0.041666668 + (z_16 * (-0.0013888889 + (z_16 * (2.4801588e-5 + (z_16 * (-2.755732e-7 + (z_16 * (2.0876756e-9 + (z_16 * (-1.1470745e-11 + (z_16 * 4.7794773e-14))))))))))))))));
-    float s_57 = (1.0 + (z_16 * (-0.16666667 + (z_16 * (0.008333334 + (z_16 * (-0.0001984127 + (z_16 * (2.7557319e-6 + (z_16 * (-2.5052108e-8 + (z_16 * (1.6059044e-10 + (z_16 * (-7.6471636e-13 + (z_16 * 2.8114574e-15))))))))))))))));
-    return vec2(c_8, (s_57 * x));
+    float s_58 = (1.0 + (z_16 * (-0.16666667 + (z_16 * (0.008333334 + (z_16 * (-0.0001984127 + (z_16 * (2.7557319e-6 + (z_16 * (-2.5052108e-8 + (z_16 * (1.6059044e-10 + (z_16 * (-7.6471636e-13 + (z_16 * 2.8114574e-15))))))))))))))));
+    return vec2(c_8, (s_58 * x));
 }
 
 vec2 airlight_cexp(vec2 z_2) {
@@ -499,10 +499,10 @@ float airlight_log1p(float x_2) {
     if (_e9) {
         return log((1.0 + x_2));
     }
-    float s_58 = (x_2 / (2.0 + x_2));
-    float z_18 = (s_58 * s_58);
+    float s_59 = (x_2 / (2.0 + x_2));
+    float z_18 = (s_59 * s_59);
     float sum_15 = ((((((((((((((((z_18 / 17.0) + 0.06666667) * z_18) + 0.07692308) * z_18) + 0.09090909) * z_18) + 0.11111111) * z_18) + 0.14285715) * z_18) + 0.2) * z_18) + 0.33333334) * z_18) + 1.0);
-    return ((2.0 * s_58) * sum_15);
+    return ((2.0 * s_59) * sum_15);
 }
 
 bool airlight_is_finite(float x_3) {
@@ -1127,13 +1127,13 @@ vec2 airlight_integrand_over(AirlightScene s_4, AirlightCanonical g_5, float sig
     float om_3 = (1.0 - y2_);
     float mu_3 = (-(sigma_2) * (om_3 * inv_2));
     float c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2.0 * g_5.d_c) * y_1)) * inv_2);
-    float far = ((y2_ * inv_2) * 2.0);
-    float near = (inv_2 * 2.0);
-    minus = near;
-    plus = far;
+    float far_1 = ((y2_ * inv_2) * 2.0);
+    float near_1 = (inv_2 * 2.0);
+    minus = near_1;
+    plus = far_1;
     if ((sigma_2 < 0.0)) {
-        minus = far;
-        plus = near;
+        minus = far_1;
+        plus = near_1;
     }
     float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
     float _e40 = minus;
@@ -2610,8 +2610,8 @@ AirlightPanel airlight_tail_panel(AirlightScene s_8, AirlightCanonical g_10, flo
     } else {
         local_17 = false;
     }
-    bool far_1 = local_17;
-    if (far_1) {
+    bool far_2 = local_17;
+    if (far_2) {
         decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     float _e648 = decay;
@@ -3408,15 +3408,15 @@ vec2 airlight_angle_route(AirlightScene s_11, AirlightCanonical g_13) {
             bool below_1 = (lower <= 1.5707964);
             float _e248 = psi1_1;
             vec2 _e254 = airlight_cos_sin((below_1 ? lower : (_e248 + (hw_1 * (1.0 - _e241)))));
-            float cs_4 = _e254.y;
+            float cs_5 = _e254.y;
             float sn = (below_1 ? -(_e254.x) : _e254.x);
             float near_pole = (1.0 + _e254.x);
-            float far_pole = ((cs_4 * cs_4) / near_pole);
+            float far_pole = ((cs_5 * cs_5) / near_pole);
             float one_minus = (below_1 ? near_pole : far_pole);
             float one_plus = (below_1 ? far_pole : near_pole);
-            float y_11 = (below_1 ? (cs_4 / near_pole) : (near_pole / cs_4));
-            float weight_3 = ((cs_4 > 0.0) ? exp(-(max((big_h_7 * (y_11 - _e26)), 0.0))) : 0.0);
-            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_4)));
+            float y_11 = (below_1 ? (cs_5 / near_pole) : (near_pole / cs_5));
+            float weight_3 = ((cs_5 > 0.0) ? exp(-(max((big_h_7 * (y_11 - _e26)), 0.0))) : 0.0);
+            float _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_5)));
             float _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             float f_2 = (_e288 * _e294);
             float gw = (weight_3 * f_2);
@@ -6116,8 +6116,8 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     } else {
         local_155 = false;
     }
-    bool near_1 = local_155;
-    if (near_1) {
+    bool near_2 = local_155;
+    if (near_2) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
@@ -6389,13 +6389,33 @@ float airlight_area_phase(AirlightScene s_28, float mu_2) {
     return _e6;
 }
 
-float airlight_emitted(AirlightScene s_29, float c_7) {
+float airlight_area_phase_about(AirlightScene s_29, float sign_, vec2 cs_1) {
+    float near = 0.0;
+    float far = 0.0;
+    float ss = (cs_1.y * cs_1.y);
+    near = (ss / (1.0 + cs_1.x));
+    far = (1.0 + cs_1.x);
+    if ((cs_1.x < 0.0)) {
+        near = (1.0 - cs_1.x);
+        far = (ss / (1.0 - cs_1.x));
+    }
+    float _e25 = far;
+    float _e26 = near;
+    float om_4 = ((sign_ > 0.0) ? _e26 : _e25);
+    float _e30 = near;
+    float _e31 = far;
+    float op_3 = ((sign_ > 0.0) ? _e31 : _e30);
+    float _e41 = airlight_phase(s_29.phase_kind, s_29.phase_param_a, s_29.phase_param_b, s_29.phase_param_c, (sign_ * cs_1.x), om_4, op_3);
+    return _e41;
+}
+
+float airlight_emitted(AirlightScene s_30, float c_7) {
     uint e_2 = 0u;
     float base_1 = 0.0;
     float acc_1 = 1.0;
-    uint p_2 = uint(s_29.light_param_b);
+    uint p_2 = uint(s_30.light_param_b);
     if ((p_2 <= 1u)) {
-        return s_29.intensity;
+        return s_30.intensity;
     }
     e_2 = (p_2 - 1u);
     base_1 = c_7;
@@ -6510,20 +6530,20 @@ float airlight_emitted(AirlightScene s_29, float c_7) {
     float _e151 = base_1;
     base_1 = (_e150 * _e151);
     float _e154 = acc_1;
-    return (s_29.intensity * _e154);
+    return (s_30.intensity * _e154);
 }
 
-float airlight_emission_scale(AirlightScene s_30) {
-    uint p_3 = uint(s_30.light_param_b);
+float airlight_emission_scale(AirlightScene s_31) {
+    uint p_3 = uint(s_31.light_param_b);
     if ((p_3 <= 1u)) {
         return 0.0;
     }
     return (2.0 / sqrt(float((p_3 - 1u))));
 }
 
-vec2 airlight_graded_range(AirlightScene s_31, float top) {
+vec2 airlight_graded_range(AirlightScene s_32, float top) {
     bool local_169 = false;
-    float _e2 = airlight_emission_scale(s_31);
+    float _e2 = airlight_emission_scale(s_32);
     if ((_e2 > 0.0)) {
         local_169 = (_e2 < top);
     } else {
@@ -6545,17 +6565,17 @@ vec2 airlight_graded_node(float graded, float node) {
     return vec2(node, 1.0);
 }
 
-float airlight_narrowed(AirlightScene s_32, float length_) {
-    float _e2 = airlight_emission_scale(s_32);
+float airlight_narrowed(AirlightScene s_33, float length_) {
+    float _e2 = airlight_emission_scale(s_33);
     return (length_ * ((_e2 > 0.0) ? min(_e2, 1.0) : 1.0));
 }
 
-bool airlight_far_from_edge(AirlightScene s_33, float depth, float z_9) {
-    float _e4 = airlight_narrowed(s_33, z_9);
+bool airlight_far_from_edge(AirlightScene s_34, float depth, float z_9) {
+    float _e4 = airlight_narrowed(s_34, z_9);
     return (depth >= (AIRLIGHT_EDGE_REACH * _e4));
 }
 
-vec2 airlight_lobe(float sign_, float gap_3) {
+vec2 airlight_lobe(float sign_1, float gap_3) {
     bool local_170 = false;
     if (!(!((gap_3 > 0.0)))) {
         local_170 = !((gap_3 < AIRLIGHT_FLT_MAX));
@@ -6566,14 +6586,14 @@ vec2 airlight_lobe(float sign_, float gap_3) {
     if (_e12) {
         return vec2(1.0, 0.0);
     }
-    return vec2(((sign_ < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
+    return vec2(((sign_1 < 0.0) ? -1.0 : 1.0), (2.0 * sqrt((gap_3 + gap_3))));
 }
 
-vec4 airlight_phase_lobes(AirlightScene s_34) {
+vec4 airlight_phase_lobes(AirlightScene s_35) {
     vec2 first = vec2(1.0, 0.0);
     vec2 second = vec2(1.0, 0.0);
-    float p0_5 = s_34.phase_param_a;
-    switch(s_34.phase_kind) {
+    float p0_5 = s_35.phase_param_a;
+    switch(s_35.phase_kind) {
         case 2u:
         case 4u: {
             float _e11 = airlight_hg_gap(p0_5);
@@ -6591,8 +6611,8 @@ vec4 airlight_phase_lobes(AirlightScene s_34) {
             float _e22 = airlight_hg_gap(p0_5);
             vec2 _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            float _e26 = airlight_hg_gap(s_34.phase_param_b);
-            vec2 _e27 = airlight_lobe(s_34.phase_param_b, _e26);
+            float _e26 = airlight_hg_gap(s_35.phase_param_b);
+            vec2 _e27 = airlight_lobe(s_35.phase_param_b, _e26);
             second = _e27;
             break;
         }
@@ -6680,11 +6700,11 @@ vec2 airlight_outline_distances(AirlightOutline o) {
     return _e61;
 }
 
-AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 x_22) {
+AirlightOutline airlight_outline_at(AirlightScene s_36, AirlightArea a_19, vec3 x_22) {
     vec3 rel = (x_22 - a_19.c);
     vec2 foot = vec2(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     vec2 zero = vec2(0.0);
-    if ((s_35.light_shape == AIRLIGHT_SHAPE_DISC)) {
+    if ((s_36.light_shape == AIRLIGHT_SHAPE_DISC)) {
         return AirlightOutline(vec2[4](-(foot), zero, zero, zero), a_19.radius);
     }
     vec2 u2_ = vec2(dot(a_19.eu, a_19.a1_), dot(a_19.eu, a_19.a2_));
@@ -6692,7 +6712,7 @@ AirlightOutline airlight_outline_at(AirlightScene s_35, AirlightArea a_19, vec3 
     return AirlightOutline(vec2[4](-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0.0);
 }
 
-AirlightArea airlight_area(AirlightScene s_36) {
+AirlightArea airlight_area(AirlightScene s_37) {
     AirlightArea a_20 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false);
     bool local_172 = false;
     uint cut_count = 0u;
@@ -6717,12 +6737,12 @@ AirlightArea airlight_area(AirlightScene s_36) {
     bool local_179 = false;
     bool local_180 = false;
     vec3 zero_1 = vec3(0.0);
-    vec4 _e21 = airlight_phase_lobes(s_36);
-    a_20 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
-    bool _e28 = airlight_isotropic_phase(s_36);
+    vec4 _e21 = airlight_phase_lobes(s_37);
+    a_20 = AirlightArea(zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false);
+    bool _e28 = airlight_isotropic_phase(s_37);
     a_20.isotropic = _e28;
-    if (!((s_36.intensity == 0.0))) {
-        local_172 = (s_36.sigma_s == 0.0);
+    if (!((s_37.intensity == 0.0))) {
+        local_172 = (s_37.sigma_s == 0.0);
     } else {
         local_172 = true;
     }
@@ -6732,14 +6752,14 @@ AirlightArea airlight_area(AirlightScene s_36) {
         AirlightArea _e42 = a_20;
         return _e42;
     }
-    vec3 o_8 = s_36.origin;
-    vec3 _e45 = airlight_normalize(s_36.dir);
+    vec3 o_8 = s_37.origin;
+    vec3 _e45 = airlight_normalize(s_37.dir);
     a_20.d = _e45;
-    bool infinite_6 = ((s_36.flags & 1u) != 0u);
-    float t0_2 = s_36.t_min;
-    centre = s_36.light_position;
-    size = s_36.light_param_a;
-    if ((s_36.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
+    bool infinite_6 = ((s_37.flags & 1u) != 0u);
+    float t0_2 = s_37.t_min;
+    centre = s_37.light_position;
+    size = s_37.light_param_a;
+    if ((s_37.light_shape == AIRLIGHT_SHAPE_SPHERE)) {
         vec3 _e72 = a_20.c;
         vec3 oc = (o_8 - _e72);
         float b_22 = dot(oc, _e45);
@@ -6758,15 +6778,15 @@ AirlightArea airlight_area(AirlightScene s_36) {
             cut_count = 2u;
         }
     } else {
-        if ((s_36.light_shape == AIRLIGHT_SHAPE_DISC)) {
-            vec3 _e111 = airlight_normalize(s_36.light_axis);
+        if ((s_37.light_shape == AIRLIGHT_SHAPE_DISC)) {
+            vec3 _e111 = airlight_normalize(s_37.light_axis);
             a_20.n = _e111;
             vec3 _e114 = a_20.n;
             vec3 _e115 = airlight_basis_e1_(_e114);
             a_20.a1_ = _e115;
         } else {
-            a_20.eu = s_36.light_axis;
-            a_20.ev = s_36.light_end;
+            a_20.eu = s_37.light_axis;
+            a_20.ev = s_37.light_end;
             vec3 _e122 = a_20.eu;
             vec3 _e124 = a_20.ev;
             vec3 _e126 = airlight_normalize(cross(_e122, _e124));
@@ -6799,7 +6819,7 @@ AirlightArea airlight_area(AirlightScene s_36) {
         cut_count = 1u;
         AirlightArea _e179 = a_20;
         float _e180 = cut0_;
-        AirlightOutline _e183 = airlight_outline_at(s_36, _e179, (o_8 + (_e180 * _e45)));
+        AirlightOutline _e183 = airlight_outline_at(s_37, _e179, (o_8 + (_e180 * _e45)));
         vec2 _e184 = airlight_outline_distances(_e183);
         distances = _e184;
         vec3 _e186 = a_20.n;
@@ -6819,13 +6839,13 @@ AirlightArea airlight_area(AirlightScene s_36) {
     float _e211 = size;
     float _e212 = size;
     a_20.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
-    t_end_1 = s_36.t_max;
+    t_end_1 = s_37.t_max;
     end_infinite = infinite_6;
-    if ((s_36.sigma_t > 0.0)) {
+    if ((s_37.sigma_t > 0.0)) {
         vec3 _e222 = centre;
         float _e226 = airlight_safe_length((_e222 - (o_8 + (t0_2 * _e45))));
         float _e228 = size;
-        float reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385 / s_36.sigma_t));
+        float reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385 / s_37.sigma_t));
         if (!(infinite_6)) {
             float _e237 = t_end_1;
             local_173 = (reach_1 < _e237);
@@ -6981,7 +7001,7 @@ AirlightAbove airlight_above(float z_10, vec2 off) {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-float airlight_flat_node(AirlightScene s_37, AirlightArea a_21, AirlightAbove above_1, vec2 e_3, float graded_1, float node_1) {
+float airlight_flat_node(AirlightScene s_38, AirlightArea a_21, AirlightAbove above_1, vec2 e_3, float graded_1, float node_1) {
     vec2 _e6 = airlight_graded_node(graded_1, node_1);
     vec2 _e8 = airlight_cos_sin_half_turn(_e6.x);
     float r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
@@ -6991,65 +7011,65 @@ float airlight_flat_node(AirlightScene s_37, AirlightArea a_21, AirlightAbove ab
     float dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     float inv_5 = (1.0 / dist);
     float cos_ = (z_19 * inv_5);
-    float _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
-    float _e52 = airlight_emitted(s_37, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
+    float _e50 = airlight_area_phase(s_38, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
+    float _e52 = airlight_emitted(s_38, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_38.sigma_t) * dist), 0.0))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
-float airlight_flat_radial(AirlightScene s_38, AirlightArea a_22, AirlightAbove above_2, vec2 e_4, float r_max) {
+float airlight_flat_radial(AirlightScene s_39, AirlightArea a_22, AirlightAbove above_2, vec2 e_4, float r_max) {
     float sum_7 = 0.0;
     float _e7 = airlight_atan((r_max / above_2.rho0_));
-    vec2 _e8 = airlight_graded_range(s_38, _e7);
+    vec2 _e8 = airlight_graded_range(s_39, _e7);
     float graded_6 = _e8.y;
     float c_19 = (0.5 * _e8.x);
     float hw_2 = (0.5 * _e8.x);
     float _e18 = sum_7;
-    float _e24 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251 * hw_2)));
+    float _e24 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251 * hw_2)));
     sum_7 = (_e18 + ((0.1894506 * hw_2) * _e24));
     float _e27 = sum_7;
-    float _e33 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251 * hw_2)));
+    float _e33 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251 * hw_2)));
     sum_7 = (_e27 + ((0.1894506 * hw_2) * _e33));
     float _e36 = sum_7;
-    float _e42 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354 * hw_2)));
+    float _e42 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354 * hw_2)));
     sum_7 = (_e36 + ((0.18260342 * hw_2) * _e42));
     float _e45 = sum_7;
-    float _e51 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354 * hw_2)));
+    float _e51 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354 * hw_2)));
     sum_7 = (_e45 + ((0.18260342 * hw_2) * _e51));
     float _e54 = sum_7;
-    float _e60 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678 * hw_2)));
+    float _e60 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678 * hw_2)));
     sum_7 = (_e54 + ((0.16915652 * hw_2) * _e60));
     float _e63 = sum_7;
-    float _e69 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678 * hw_2)));
+    float _e69 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678 * hw_2)));
     sum_7 = (_e63 + ((0.16915652 * hw_2) * _e69));
     float _e72 = sum_7;
-    float _e78 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623 * hw_2)));
+    float _e78 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623 * hw_2)));
     sum_7 = (_e72 + ((0.14959599 * hw_2) * _e78));
     float _e81 = sum_7;
-    float _e87 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623 * hw_2)));
+    float _e87 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623 * hw_2)));
     sum_7 = (_e81 + ((0.14959599 * hw_2) * _e87));
     float _e90 = sum_7;
-    float _e96 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044 * hw_2)));
+    float _e96 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044 * hw_2)));
     sum_7 = (_e90 + ((0.12462897 * hw_2) * _e96));
     float _e99 = sum_7;
-    float _e105 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044 * hw_2)));
+    float _e105 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044 * hw_2)));
     sum_7 = (_e99 + ((0.12462897 * hw_2) * _e105));
     float _e108 = sum_7;
-    float _e114 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312 * hw_2)));
+    float _e114 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312 * hw_2)));
     sum_7 = (_e108 + ((0.09515851 * hw_2) * _e114));
     float _e117 = sum_7;
-    float _e123 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312 * hw_2)));
+    float _e123 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312 * hw_2)));
     sum_7 = (_e117 + ((0.09515851 * hw_2) * _e123));
     float _e126 = sum_7;
-    float _e132 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.944575 * hw_2)));
+    float _e132 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.944575 * hw_2)));
     sum_7 = (_e126 + ((0.062253524 * hw_2) * _e132));
     float _e135 = sum_7;
-    float _e141 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.944575 * hw_2)));
+    float _e141 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.944575 * hw_2)));
     sum_7 = (_e135 + ((0.062253524 * hw_2) * _e141));
     float _e144 = sum_7;
-    float _e150 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009 * hw_2)));
+    float _e150 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009 * hw_2)));
     sum_7 = (_e144 + ((0.02715246 * hw_2) * _e150));
     float _e153 = sum_7;
-    float _e159 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009 * hw_2)));
+    float _e159 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009 * hw_2)));
     sum_7 = (_e153 + ((0.02715246 * hw_2) * _e159));
     float _e162 = sum_7;
     return _e162;
@@ -7246,20 +7266,20 @@ vec3 airlight_graded_from_node(float start_2, float graded_2, float g_26) {
     return vec3(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
-float airlight_flat_lobe_node(AirlightScene s_39, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_3, float graded_3, float g_27) {
+float airlight_flat_lobe_node(AirlightScene s_40, float z_12, AirlightFlatLobe lobe_1, float k_7, float start_3, float graded_3, float g_27) {
     vec3 _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
     float c_20 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
     if (!((c_20 > 0.0))) {
         return 0.0;
     }
-    float _e20 = airlight_emitted(s_39, c_20);
-    float _e32 = airlight_area_phase(s_39, (lobe_1.sign_ * _e7.x));
-    return ((((_e20 * exp(min(((-(s_39.sigma_t) * z_12) / c_20), 0.0))) * _e32) * _e7.y) * _e7.z);
+    float _e20 = airlight_emitted(s_40, c_20);
+    float _e31 = airlight_area_phase_about(s_40, lobe_1.sign_, _e7.xy);
+    return ((((_e20 * exp(min(((-(s_40.sigma_t) * z_12) / c_20), 0.0))) * _e31) * _e7.y) * _e7.z);
 }
 
-float airlight_flat_lobe_along(AirlightScene s_40, float z_13, AirlightOutline o_5, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_1) {
+float airlight_flat_lobe_along(AirlightScene s_41, float z_13, AirlightOutline o_5, AirlightFlatLobe lobe_2, vec3 u_4, vec3 v_6, vec2 cs_2) {
     float sum_8 = 0.0;
-    vec3 w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
+    vec3 w_9 = ((cs_2.x * u_4) + (cs_2.y * v_6));
     float k_14 = (w_9.z / -(lobe_2.p.z));
     vec2 _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if (!((_e23.x < _e23.y))) {
@@ -7272,52 +7292,52 @@ float airlight_flat_lobe_along(AirlightScene s_40, float z_13, AirlightOutline o
     float c_21 = (0.5 * _e42.y);
     float hw_3 = (0.5 * _e42.y);
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
+    float _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251 * hw_3)));
     sum_8 = (_e52 + ((0.1894506 * hw_3) * _e58));
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
+    float _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251 * hw_3)));
     sum_8 = (_e61 + ((0.1894506 * hw_3) * _e67));
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
+    float _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354 * hw_3)));
     sum_8 = (_e70 + ((0.18260342 * hw_3) * _e76));
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
+    float _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354 * hw_3)));
     sum_8 = (_e79 + ((0.18260342 * hw_3) * _e85));
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
+    float _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678 * hw_3)));
     sum_8 = (_e88 + ((0.16915652 * hw_3) * _e94));
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
+    float _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678 * hw_3)));
     sum_8 = (_e97 + ((0.16915652 * hw_3) * _e103));
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
+    float _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623 * hw_3)));
     sum_8 = (_e106 + ((0.14959599 * hw_3) * _e112));
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
+    float _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623 * hw_3)));
     sum_8 = (_e115 + ((0.14959599 * hw_3) * _e121));
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
+    float _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044 * hw_3)));
     sum_8 = (_e124 + ((0.12462897 * hw_3) * _e130));
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
+    float _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044 * hw_3)));
     sum_8 = (_e133 + ((0.12462897 * hw_3) * _e139));
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
+    float _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312 * hw_3)));
     sum_8 = (_e142 + ((0.09515851 * hw_3) * _e148));
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
+    float _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312 * hw_3)));
     sum_8 = (_e151 + ((0.09515851 * hw_3) * _e157));
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
+    float _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575 * hw_3)));
     sum_8 = (_e160 + ((0.062253524 * hw_3) * _e166));
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
+    float _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575 * hw_3)));
     sum_8 = (_e169 + ((0.062253524 * hw_3) * _e175));
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
+    float _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009 * hw_3)));
     sum_8 = (_e178 + ((0.02715246 * hw_3) * _e184));
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
+    float _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009 * hw_3)));
     sum_8 = (_e187 + ((0.02715246 * hw_3) * _e193));
     float _e196 = sum_8;
     return _e196;
@@ -7427,9 +7447,9 @@ AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
     return _e90;
 }
 
-float airlight_line_beta(AirlightEdgeRule rule_3, vec2 cs_2) {
+float airlight_line_beta(AirlightEdgeRule rule_3, vec2 cs_3) {
     vec2 m_14 = vec2(rule_3.t.y, -(rule_3.t.x));
-    float _e17 = airlight_atan2_((dot(cs_2, rule_3.t) * rule_3.h), (max(dot(cs_2, m_14), 0.0) * rule_3.reach));
+    float _e17 = airlight_atan2_((dot(cs_3, rule_3.t) * rule_3.h), (max(dot(cs_3, m_14), 0.0) * rule_3.reach));
     return _e17;
 }
 
@@ -7438,9 +7458,9 @@ float airlight_mercator_cut(uint k_8) {
     return cuts_5[k_8];
 }
 
-float airlight_mercator(vec2 n_3, vec2 cs_3) {
+float airlight_mercator(vec2 n_3, vec2 cs_4) {
     float _e3 = airlight_mercator_cut(7u);
-    float tangent = (((cs_3.y * n_3.x) - (cs_3.x * n_3.y)) / max(((cs_3.x * n_3.x) + (cs_3.y * n_3.y)), 1e-30));
+    float tangent = (((cs_4.y * n_3.x) - (cs_4.x * n_3.y)) / max(((cs_4.x * n_3.x) + (cs_4.y * n_3.y)), 1e-30));
     float _e21 = airlight_asinh(tangent);
     return clamp(_e21, -(_e3), _e3);
 }
@@ -7461,7 +7481,7 @@ vec3 airlight_mercator_node(float ua, float ub, uint i_33) {
     return vec3(sech, ((sign(x_38) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
 }
 
-float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, vec3 u_6, vec3 v_8, vec2 n_4, vec2 first_1, vec2 last) {
+float airlight_mercator_wedge(AirlightScene s_42, float z_14, AirlightOutline o_6, AirlightFlatLobe lobe_3, vec3 u_6, vec3 v_8, vec2 n_4, vec2 first_1, vec2 last) {
     float sum_9 = 0.0;
     uint i_34 = 0u;
     vec2 t_13 = vec2(-(n_4.y), n_4.x);
@@ -7486,7 +7506,7 @@ float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_
                 continue;
             }
             float _e27 = sum_9;
-            float _e34 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
+            float _e34 = airlight_flat_lobe_along(s_42, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
             sum_9 = (_e27 + (_e23.z * _e34));
         }
     }
@@ -7494,7 +7514,7 @@ float airlight_mercator_wedge(AirlightScene s_41, float z_14, AirlightOutline o_
     return _e40;
 }
 
-float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o_7, AirlightFlatLobe lobe_4) {
+float airlight_flat_about_lobe(AirlightScene s_43, float z_15, AirlightOutline o_7, AirlightFlatLobe lobe_4) {
     float sum_10 = 0.0;
     vec2 m_4 = vec2(1.0, 0.0);
     vec2 t_4 = vec2(0.0);
@@ -7570,7 +7590,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                     vec2 _e125 = airlight_radial_rule(_e124);
                     vec4 _e129 = airlight_edge_at(rule_7, (1.5707964 * _e125.x));
                     float _e130 = sum_10;
-                    float _e139 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    float _e139 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
                     sum_10 = (_e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
             }
@@ -7594,7 +7614,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                     vec3 _e158 = airlight_azimuths(false, _e157);
                     float _e159 = sum_10;
                     vec2 _e163 = t_4;
-                    float _e168 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    float _e168 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
                     sum_10 = (_e159 + (_e158.z * _e168));
                 }
             }
@@ -7629,7 +7649,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                 vec3 _e239 = airlight_azimuths(false, _e238);
                 float _e240 = sum_10;
                 vec2 _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                float _e249 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                float _e249 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e248);
                 sum_10 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
         }
@@ -7712,7 +7732,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                         uint _e386 = j_9;
                         vec4 _e387 = airlight_edge_node(_e380, _e386);
                         float _e388 = sum_10;
-                        float _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        float _e391 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
                         sum_10 = (_e388 + (_e387.w * _e391));
                     }
                 }
@@ -7772,7 +7792,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                         vec2 _e471 = airlight_triangle_rule(_e470);
                         float _e472 = sum_10;
                         vec2 _e478 = airlight_cos_sin_turns((c_22 + (hw_6 * _e471.x)));
-                        float _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        float _e479 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e478);
                         sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
                 }
@@ -7831,7 +7851,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
                         uint _e541 = j_11;
                         vec4 _e542 = airlight_edge_node(_e540, _e541);
                         float _e543 = sum_10;
-                        float _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        float _e546 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
                         sum_10 = (_e543 + (_e542.w * _e546));
                     }
                 }
@@ -7839,7 +7859,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
             float _e552 = sum_10;
             vec2 _e553 = merc_first;
             vec2 _e554 = merc_last;
-            float _e555 = airlight_mercator_wedge(s_42, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            float _e555 = airlight_mercator_wedge(s_43, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
             sum_10 = (_e552 + _e555);
         }
     }
@@ -7847,7 +7867,7 @@ float airlight_flat_about_lobe(AirlightScene s_42, float z_15, AirlightOutline o
     return _e560;
 }
 
-float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
+float airlight_disc(AirlightScene s_44, AirlightArea a_26, vec3 x_26) {
     bool local_188 = false;
     bool local_189 = false;
     vec2 u_7 = vec2(0.0);
@@ -7869,12 +7889,12 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
     AirlightOutline outline = AirlightOutline(vec2[4](vec2(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
     AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2(-(fx), -(fy_1)), radius_2);
     if ((_e30.scale > 0.0)) {
-        float _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
+        float _e34 = airlight_flat_about_lobe(s_44, z_20, outline, _e30);
         return _e34;
     }
     if ((rf <= radius_2)) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_20);
+            bool _e44 = airlight_far_from_edge(s_44, (radius_2 - rf), z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -7925,7 +7945,7 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
             AirlightAbove _e120 = above_3;
             vec2 _e121 = e_9;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_43, a_26, _e120, _e121, _e122);
+            float _e123 = airlight_flat_radial(s_44, a_26, _e120, _e121, _e122);
             sum_11 = (_e118 + (_e77.z * _e123));
         }
     }
@@ -7933,7 +7953,7 @@ float airlight_disc(AirlightScene s_43, AirlightArea a_26, vec3 x_26) {
     return _e129;
 }
 
-float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
+float airlight_parallelogram(AirlightScene s_45, AirlightArea a_27, vec3 x_27) {
     vec2 q_9 = vec2(0.0);
     bool local_190 = false;
     float sum_12 = 0.0;
@@ -7953,13 +7973,13 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
     float size_2 = (0.5 * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
     AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5 * corners[2]) - foot_1), size_2);
     if ((_e69.scale > 0.0)) {
-        float _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
+        float _e73 = airlight_flat_about_lobe(s_45, z_21, about_foot, _e69);
         return _e73;
     }
     vec3 _e76 = airlight_outline_boundary(about_foot, vec2(0.0));
     q_9 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
-        bool _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        bool _e89 = airlight_far_from_edge(s_45, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -7971,7 +7991,7 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
     vec2 _e92 = q_9;
     AirlightAbove _e94 = airlight_above(z_21, (_e92 - foot_1));
     float thin = (AIRLIGHT_FLT_EPS * abs(det));
-    float _e99 = airlight_narrowed(s_44, _e94.rho0_);
+    float _e99 = airlight_narrowed(s_45, _e94.rho0_);
     bool loop_init_48 = true;
     while(true) {
         if (!loop_init_48) {
@@ -8012,7 +8032,7 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
                     uint _e132 = j_12;
                     vec4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_12;
-                    float _e138 = airlight_flat_radial(s_44, a_27, _e94, _e133.xy, _e133.z);
+                    float _e138 = airlight_flat_radial(s_45, a_27, _e94, _e133.xy, _e133.z);
                     sum_12 = (_e134 + (_e133.w * _e138));
                 }
             }
@@ -8022,19 +8042,19 @@ float airlight_parallelogram(AirlightScene s_44, AirlightArea a_27, vec3 x_27) {
     return _e147;
 }
 
-vec3 airlight_cap_row(AirlightScene s_45, AirlightCap cap, float graded_4, float node_2, float weight_1) {
+vec3 airlight_cap_row(AirlightScene s_46, AirlightCap cap, float graded_4, float node_2, float weight_1) {
     vec2 _e5 = airlight_graded_node(graded_4, node_2);
     float w_10 = (weight_1 * _e5.y);
     vec2 _e9 = airlight_cos_sin_half_turn(_e5.x);
     float sb_2 = (cap.sin_a * _e9.y);
     float cb_2 = sqrt(((1.0 - sb_2) * (1.0 + sb_2)));
     float dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0.0);
-    float _e28 = airlight_emitted(s_45, _e9.x);
-    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_45.sigma_t) * dist_1), 0.0)));
+    float _e28 = airlight_emitted(s_46, _e9.x);
+    float factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_46.sigma_t) * dist_1), 0.0)));
     return vec3(factor, cb_2, sb_2);
 }
 
-float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_28, AirlightCap cap_1) {
+float airlight_sphere_cap(AirlightScene s_47, AirlightArea a_28, AirlightCap cap_1) {
     vec3 rows[16] = vec3[16](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     float sum_13 = 0.0;
     uint i_42 = 0u;
@@ -8044,44 +8064,44 @@ float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_28, AirlightCap cap
     float ad = dot(cap_1.a, a_28.d);
     float e1d = dot(_e4, a_28.d);
     float e2d = dot(e2_2, a_28.d);
-    vec2 _e15 = airlight_graded_range(s_46, 1.5707964);
+    vec2 _e15 = airlight_graded_range(s_47, 1.5707964);
     float graded_9 = _e15.y;
     float c_23 = (0.5 * _e15.x);
     float hw_7 = (0.5 * _e15.x);
-    vec3 _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    vec3 _e63 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[0] = _e63;
-    vec3 _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
+    vec3 _e70 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.09501251 * hw_7)), (0.1894506 * hw_7));
     rows[1] = _e70;
-    vec3 _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    vec3 _e77 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[2] = _e77;
-    vec3 _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
+    vec3 _e84 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.28160354 * hw_7)), (0.18260342 * hw_7));
     rows[3] = _e84;
-    vec3 _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    vec3 _e91 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[4] = _e91;
-    vec3 _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
+    vec3 _e98 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.45801678 * hw_7)), (0.16915652 * hw_7));
     rows[5] = _e98;
-    vec3 _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    vec3 _e105 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[6] = _e105;
-    vec3 _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
+    vec3 _e112 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.61787623 * hw_7)), (0.14959599 * hw_7));
     rows[7] = _e112;
-    vec3 _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    vec3 _e119 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[8] = _e119;
-    vec3 _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
+    vec3 _e126 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.7554044 * hw_7)), (0.12462897 * hw_7));
     rows[9] = _e126;
-    vec3 _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    vec3 _e133 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[10] = _e133;
-    vec3 _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
+    vec3 _e140 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.8656312 * hw_7)), (0.09515851 * hw_7));
     rows[11] = _e140;
-    vec3 _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.944575 * hw_7)), (0.062253524 * hw_7));
+    vec3 _e147 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[12] = _e147;
-    vec3 _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.944575 * hw_7)), (0.062253524 * hw_7));
+    vec3 _e154 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.944575 * hw_7)), (0.062253524 * hw_7));
     rows[13] = _e154;
-    vec3 _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    vec3 _e161 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[14] = _e161;
-    vec3 _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
+    vec3 _e168 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.9894009 * hw_7)), (0.02715246 * hw_7));
     rows[15] = _e168;
     if (a_28.isotropic) {
-        float _e174 = airlight_area_phase(s_46, 0.0);
+        float _e174 = airlight_area_phase(s_47, 0.0);
         float around_1 = (6.2831855 * _e174);
         float _e176 = sum_13;
         float _e179 = rows[0].x;
@@ -8155,97 +8175,97 @@ float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_28, AirlightCap cap
             float _e291 = rows[0].x;
             float _e294 = rows[0].y;
             float _e298 = rows[0].z;
-            float _e301 = airlight_area_phase(s_46, ((_e294 * ad) + (_e298 * across_1)));
+            float _e301 = airlight_area_phase(s_47, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             float _e304 = at_2;
             float _e307 = rows[1].x;
             float _e310 = rows[1].y;
             float _e314 = rows[1].z;
-            float _e317 = airlight_area_phase(s_46, ((_e310 * ad) + (_e314 * across_1)));
+            float _e317 = airlight_area_phase(s_47, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             float _e320 = at_2;
             float _e323 = rows[2].x;
             float _e326 = rows[2].y;
             float _e330 = rows[2].z;
-            float _e333 = airlight_area_phase(s_46, ((_e326 * ad) + (_e330 * across_1)));
+            float _e333 = airlight_area_phase(s_47, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             float _e336 = at_2;
             float _e339 = rows[3].x;
             float _e342 = rows[3].y;
             float _e346 = rows[3].z;
-            float _e349 = airlight_area_phase(s_46, ((_e342 * ad) + (_e346 * across_1)));
+            float _e349 = airlight_area_phase(s_47, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             float _e352 = at_2;
             float _e355 = rows[4].x;
             float _e358 = rows[4].y;
             float _e362 = rows[4].z;
-            float _e365 = airlight_area_phase(s_46, ((_e358 * ad) + (_e362 * across_1)));
+            float _e365 = airlight_area_phase(s_47, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             float _e368 = at_2;
             float _e371 = rows[5].x;
             float _e374 = rows[5].y;
             float _e378 = rows[5].z;
-            float _e381 = airlight_area_phase(s_46, ((_e374 * ad) + (_e378 * across_1)));
+            float _e381 = airlight_area_phase(s_47, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             float _e384 = at_2;
             float _e387 = rows[6].x;
             float _e390 = rows[6].y;
             float _e394 = rows[6].z;
-            float _e397 = airlight_area_phase(s_46, ((_e390 * ad) + (_e394 * across_1)));
+            float _e397 = airlight_area_phase(s_47, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             float _e400 = at_2;
             float _e403 = rows[7].x;
             float _e406 = rows[7].y;
             float _e410 = rows[7].z;
-            float _e413 = airlight_area_phase(s_46, ((_e406 * ad) + (_e410 * across_1)));
+            float _e413 = airlight_area_phase(s_47, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             float _e416 = at_2;
             float _e419 = rows[8].x;
             float _e422 = rows[8].y;
             float _e426 = rows[8].z;
-            float _e429 = airlight_area_phase(s_46, ((_e422 * ad) + (_e426 * across_1)));
+            float _e429 = airlight_area_phase(s_47, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             float _e432 = at_2;
             float _e435 = rows[9].x;
             float _e438 = rows[9].y;
             float _e442 = rows[9].z;
-            float _e445 = airlight_area_phase(s_46, ((_e438 * ad) + (_e442 * across_1)));
+            float _e445 = airlight_area_phase(s_47, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             float _e448 = at_2;
             float _e451 = rows[10].x;
             float _e454 = rows[10].y;
             float _e458 = rows[10].z;
-            float _e461 = airlight_area_phase(s_46, ((_e454 * ad) + (_e458 * across_1)));
+            float _e461 = airlight_area_phase(s_47, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             float _e464 = at_2;
             float _e467 = rows[11].x;
             float _e470 = rows[11].y;
             float _e474 = rows[11].z;
-            float _e477 = airlight_area_phase(s_46, ((_e470 * ad) + (_e474 * across_1)));
+            float _e477 = airlight_area_phase(s_47, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             float _e480 = at_2;
             float _e483 = rows[12].x;
             float _e486 = rows[12].y;
             float _e490 = rows[12].z;
-            float _e493 = airlight_area_phase(s_46, ((_e486 * ad) + (_e490 * across_1)));
+            float _e493 = airlight_area_phase(s_47, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             float _e496 = at_2;
             float _e499 = rows[13].x;
             float _e502 = rows[13].y;
             float _e506 = rows[13].z;
-            float _e509 = airlight_area_phase(s_46, ((_e502 * ad) + (_e506 * across_1)));
+            float _e509 = airlight_area_phase(s_47, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             float _e512 = at_2;
             float _e515 = rows[14].x;
             float _e518 = rows[14].y;
             float _e522 = rows[14].z;
-            float _e525 = airlight_area_phase(s_46, ((_e518 * ad) + (_e522 * across_1)));
+            float _e525 = airlight_area_phase(s_47, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             float _e528 = at_2;
             float _e531 = rows[15].x;
             float _e534 = rows[15].y;
             float _e538 = rows[15].z;
-            float _e541 = airlight_area_phase(s_46, ((_e534 * ad) + (_e538 * across_1)));
+            float _e541 = airlight_area_phase(s_47, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             float _e544 = sum_13;
             float _e546 = at_2;
@@ -8256,17 +8276,17 @@ float airlight_sphere_cap(AirlightScene s_46, AirlightArea a_28, AirlightCap cap
     return _e552;
 }
 
-float airlight_sphere_lobe_node(AirlightScene s_47, AirlightCap cap_2, float sign_1, float cos_p, float big_b, float start_4, float graded_5, float g_28) {
+float airlight_sphere_lobe_node(AirlightScene s_48, AirlightCap cap_2, float sign_2, float cos_p, float big_b, float start_4, float graded_5, float g_28) {
     vec3 _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
     float toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     float root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1.0 - toward_a)) * (1.0 + toward_a))), 0.0));
     float dist_2 = max(((cap_2.dc * toward_a) - root_5), 0.0);
-    float _e37 = airlight_emitted(s_47, (root_5 / cap_2.radius));
-    float _e47 = airlight_area_phase(s_47, (sign_1 * _e8.x));
-    return ((((_e37 * exp(min((-(s_47.sigma_t) * dist_2), 0.0))) * _e47) * _e8.y) * _e8.z);
+    float _e37 = airlight_emitted(s_48, (root_5 / cap_2.radius));
+    float _e46 = airlight_area_phase_about(s_48, sign_2, _e8.xy);
+    return ((((_e37 * exp(min((-(s_48.sigma_t) * dist_2), 0.0))) * _e46) * _e8.y) * _e8.z);
 }
 
-float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, AirlightCap cap_3, float sign_2, float cos_p_1, float scale_3) {
+float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_29, AirlightCap cap_3, float sign_3, float cos_p_1, float scale_3) {
     vec2 axis_2 = vec2(1.0, 0.0);
     float half_15 = 0.0;
     uint count_3 = 0u;
@@ -8284,7 +8304,7 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     float around = 0.0;
     uint k_9 = 0u;
     bool local_195 = false;
-    vec3 p_6 = (sign_2 * a_29.d);
+    vec3 p_6 = (sign_3 * a_29.d);
     vec3 _e8 = airlight_basis_e1_(p_6);
     vec3 v_11 = cross(p_6, _e8);
     float au = dot(cap_3.a, _e8);
@@ -8454,67 +8474,67 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
                     float hw_8 = (0.5 * _e243.y);
                     float _e251 = around;
                     float _e254 = big_b_1;
-                    float _e258 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251 * hw_8)));
+                    float _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251 * hw_8)));
                     around = (_e251 + ((0.1894506 * hw_8) * _e258));
                     float _e261 = around;
                     float _e264 = big_b_1;
-                    float _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251 * hw_8)));
+                    float _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251 * hw_8)));
                     around = (_e261 + ((0.1894506 * hw_8) * _e268));
                     float _e271 = around;
                     float _e274 = big_b_1;
-                    float _e278 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354 * hw_8)));
+                    float _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354 * hw_8)));
                     around = (_e271 + ((0.18260342 * hw_8) * _e278));
                     float _e281 = around;
                     float _e284 = big_b_1;
-                    float _e288 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354 * hw_8)));
+                    float _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354 * hw_8)));
                     around = (_e281 + ((0.18260342 * hw_8) * _e288));
                     float _e291 = around;
                     float _e294 = big_b_1;
-                    float _e298 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678 * hw_8)));
+                    float _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678 * hw_8)));
                     around = (_e291 + ((0.16915652 * hw_8) * _e298));
                     float _e301 = around;
                     float _e304 = big_b_1;
-                    float _e308 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678 * hw_8)));
+                    float _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678 * hw_8)));
                     around = (_e301 + ((0.16915652 * hw_8) * _e308));
                     float _e311 = around;
                     float _e314 = big_b_1;
-                    float _e318 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623 * hw_8)));
+                    float _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623 * hw_8)));
                     around = (_e311 + ((0.14959599 * hw_8) * _e318));
                     float _e321 = around;
                     float _e324 = big_b_1;
-                    float _e328 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623 * hw_8)));
+                    float _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623 * hw_8)));
                     around = (_e321 + ((0.14959599 * hw_8) * _e328));
                     float _e331 = around;
                     float _e334 = big_b_1;
-                    float _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044 * hw_8)));
+                    float _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044 * hw_8)));
                     around = (_e331 + ((0.12462897 * hw_8) * _e338));
                     float _e341 = around;
                     float _e344 = big_b_1;
-                    float _e348 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044 * hw_8)));
+                    float _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044 * hw_8)));
                     around = (_e341 + ((0.12462897 * hw_8) * _e348));
                     float _e351 = around;
                     float _e354 = big_b_1;
-                    float _e358 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312 * hw_8)));
+                    float _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312 * hw_8)));
                     around = (_e351 + ((0.09515851 * hw_8) * _e358));
                     float _e361 = around;
                     float _e364 = big_b_1;
-                    float _e368 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312 * hw_8)));
+                    float _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312 * hw_8)));
                     around = (_e361 + ((0.09515851 * hw_8) * _e368));
                     float _e371 = around;
                     float _e374 = big_b_1;
-                    float _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575 * hw_8)));
+                    float _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575 * hw_8)));
                     around = (_e371 + ((0.062253524 * hw_8) * _e378));
                     float _e381 = around;
                     float _e384 = big_b_1;
-                    float _e388 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575 * hw_8)));
+                    float _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575 * hw_8)));
                     around = (_e381 + ((0.062253524 * hw_8) * _e388));
                     float _e391 = around;
                     float _e394 = big_b_1;
-                    float _e398 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009 * hw_8)));
+                    float _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009 * hw_8)));
                     around = (_e391 + ((0.02715246 * hw_8) * _e398));
                     float _e401 = around;
                     float _e404 = big_b_1;
-                    float _e408 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009 * hw_8)));
+                    float _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009 * hw_8)));
                     around = (_e401 + ((0.02715246 * hw_8) * _e408));
                 }
             }
@@ -8528,9 +8548,9 @@ float airlight_sphere_about_lobe(AirlightScene s_48, AirlightArea a_29, Airlight
     return _e422;
 }
 
-float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
+float airlight_sphere(AirlightScene s_50, AirlightArea a_30, vec3 x_28) {
     float chosen = 0.0;
-    float sign_3 = 1.0;
+    float sign_4 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
     bool local_196 = false;
@@ -8604,57 +8624,57 @@ float airlight_sphere(AirlightScene s_49, AirlightArea a_30, vec3 x_28) {
             bool _e97 = local_200;
             if (_e97) {
                 chosen = lobe_6.y;
-                sign_3 = lobe_6.x;
+                sign_4 = lobe_6.x;
                 cos_p_2 = c_25;
             }
         }
     }
     float _e103 = chosen;
     if ((_e103 > 0.0)) {
-        float _e106 = sign_3;
+        float _e106 = sign_4;
         float _e107 = cos_p_2;
         float _e108 = chosen;
-        float _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
+        float _e109 = airlight_sphere_about_lobe(s_50, a_30, cap_4, _e106, _e107, _e108);
         return _e109;
     }
-    float _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
+    float _e110 = airlight_sphere_cap(s_50, a_30, cap_4);
     return _e110;
 }
 
-float airlight_emitter_radiance(AirlightScene s_50, AirlightArea a_31, vec3 x_29) {
-    switch(s_50.light_shape) {
+float airlight_emitter_radiance(AirlightScene s_51, AirlightArea a_31, vec3 x_29) {
+    switch(s_51.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_50, a_31, x_29);
+            float _e4 = airlight_disc(s_51, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            float _e5 = airlight_parallelogram(s_50, a_31, x_29);
+            float _e5 = airlight_parallelogram(s_51, a_31, x_29);
             return _e5;
         }
         default: {
-            float _e6 = airlight_sphere(s_50, a_31, x_29);
+            float _e6 = airlight_sphere(s_51, a_31, x_29);
             return _e6;
         }
     }
 }
 
-float airlight_area_node(AirlightScene s_51, AirlightArea a_32, float theta) {
+float airlight_area_node(AirlightScene s_52, AirlightArea a_32, float theta) {
     vec2 _e3 = airlight_cos_sin(theta);
     float along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
     float t_14 = (a_32.x_h + along_1);
-    float fade = exp(min((-(s_51.sigma_t) * max(((a_32.x_h - s_51.t_min) + along_1), 0.0)), 0.0));
-    float _e33 = airlight_emitter_radiance(s_51, a_32, (s_51.origin + (t_14 * a_32.d)));
+    float fade = exp(min((-(s_52.sigma_t) * max(((a_32.x_h - s_52.t_min) + along_1), 0.0)), 0.0));
+    float _e33 = airlight_emitter_radiance(s_52, a_32, (s_52.origin + (t_14 * a_32.d)));
     return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-AirlightResult airlight_area_light(AirlightScene s_52) {
+AirlightResult airlight_area_light(AirlightScene s_53) {
     AirlightAdaptive st_1 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_2 = 0u;
     float k_10 = 0.0;
     float gauss_1 = 0.0;
     uint j_14 = 0u;
     bool local_202 = false;
-    AirlightArea _e1 = airlight_area(s_52);
+    AirlightArea _e1 = airlight_area(s_53);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -8709,7 +8729,7 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
                     }
                     bool _e70 = local_202;
                     float x_39 = (_e70 ? (c_26 - (hw_9 * node_4.x)) : (c_26 + (hw_9 * node_4.x)));
-                    float _e72 = airlight_area_node(s_52, _e1, x_39);
+                    float _e72 = airlight_area_node(s_53, _e1, x_39);
                     float _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     float _e77 = gauss_1;
@@ -8735,21 +8755,21 @@ AirlightResult airlight_area_light(AirlightScene s_52) {
     if (!(_e105)) {
         return AirlightResult(3.4028235e38, 2u);
     }
-    return AirlightResult((s_52.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_53.sigma_s * max(total_4, 0.0)), AIRLIGHT_STATUS_OK);
 }
 
-AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
+AirlightResult airlight_in_scatter_area(AirlightScene s_54) {
     bool local_203 = false;
     bool local_204 = false;
-    bool _e1 = airlight_valid(s_53);
+    bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_203 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_203 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_203 = true;
     }
     bool _e10 = local_203;
     if (!(_e10)) {
-        local_204 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_204 = true;
     }
@@ -8757,7 +8777,7 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_53) {
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_area_light(s_53);
+    AirlightResult _e22 = airlight_area_light(s_54);
     return _e22;
 }
 
@@ -8811,18 +8831,18 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
     return _e5;
 }
 
-AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
+AirlightResult airlight_in_scatter_point(AirlightScene s_55) {
     bool local_207 = false;
     bool local_208 = false;
-    bool _e1 = airlight_valid(s_54);
+    bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_207 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_207 = true;
     }
     bool _e10 = local_207;
     if (!(_e10)) {
-        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_208 = true;
     }
@@ -8830,22 +8850,22 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_54) {
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightResult _e22 = airlight_point_integral(s_54);
+    AirlightResult _e22 = airlight_point_integral(s_55);
     return _e22;
 }
 
-AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
+AirlightResult airlight_in_scatter_route(AirlightScene s_56) {
     bool local_209 = false;
     bool local_210 = false;
-    bool _e1 = airlight_valid(s_55);
+    bool _e1 = airlight_valid(s_56);
     if (!(!(_e1))) {
-        local_209 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_209 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_209 = true;
     }
     bool _e10 = local_209;
     if (!(_e10)) {
-        local_210 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_210 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_210 = true;
     }
@@ -8853,16 +8873,16 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightCanonical _e22 = airlight_canonical(s_55);
-    AirlightCanonical _e23 = airlight_refined(s_55, _e22);
-    AirlightResult _e24 = airlight_limits(s_55, _e23);
+    AirlightCanonical _e22 = airlight_canonical(s_56);
+    AirlightCanonical _e23 = airlight_refined(s_56, _e22);
+    AirlightResult _e24 = airlight_limits(s_56, _e23);
     if ((_e24.status != AIRLIGHT_STATUS_DEFERRED)) {
         AirlightResult _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    bool _e29 = airlight_isotropic_scene(s_55);
+    bool _e29 = airlight_isotropic_scene(s_56);
     if (!(_e29)) {
-        vec2 _e31 = airlight_angle_route(s_55, _e23);
+        vec2 _e31 = airlight_angle_route(s_56, _e23);
         if ((_e31.x > 0.5)) {
             AirlightResult _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0.0), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8871,7 +8891,7 @@ AirlightResult airlight_in_scatter_route(AirlightScene s_55) {
     return AirlightResult(0.0, 3u);
 }
 
-AirlightResult airlight_in_scatter(AirlightScene s_56) {
+AirlightResult airlight_in_scatter(AirlightScene s_57) {
     AirlightAdaptive st_2 = AirlightAdaptive(AirlightPanelList(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)), 0u, 0.0, 0.0, 0u, false, false, 0.0, 0.0);
     uint step_3 = 0u;
     float k_11 = 0.0;
@@ -8880,14 +8900,14 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
     bool local_211 = false;
     float f = 0.0;
     bool local_212 = false;
-    bool _e1 = airlight_valid(s_56);
+    bool _e1 = airlight_valid(s_57);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
     }
-    if ((s_56.light_shape >= AIRLIGHT_SHAPE_DISC)) {
+    if ((s_57.light_shape >= AIRLIGHT_SHAPE_DISC)) {
         return AirlightResult(0.0, 1u);
     }
-    AirlightOuter _e12 = airlight_outer(s_56);
+    AirlightOuter _e12 = airlight_outer(s_57);
     if ((_e12.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
     }
@@ -8944,15 +8964,15 @@ AirlightResult airlight_in_scatter(AirlightScene s_56) {
                     }
                     bool _e85 = local_211;
                     float w_11 = (_e85 ? (c_27 - (hw_10 * node_5.x)) : (c_27 + (hw_10 * node_5.x)));
-                    AirlightNode _e87 = airlight_outer_node(s_56, _e12, w_11);
+                    AirlightNode _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0.0;
                     if ((_e87.weight != 0.0)) {
                         AirlightResult _e93 = airlight_node_integral(_e87);
                         if ((_e93.status == AIRLIGHT_STATUS_INFINITE)) {
                             return _e93;
                         }
-                        if ((s_56.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_212 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if ((s_57.light_shape == AIRLIGHT_SHAPE_POINT)) {
+                            local_212 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_212 = false;
                         }

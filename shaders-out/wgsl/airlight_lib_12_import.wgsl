@@ -472,8 +472,8 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_16 = (x * x);
     let c_8 = (1f + (z_16 * (-0.5f + (z_16 * (0.041666668f + (z_16 * (-0.0013888889f + (z_16 * (0.000024801588f + (z_16 * (-0.0000002755732f + (z_16 * (0.0000000020876756f + (z_16 * (-0.000000000011470745f + (z_16 * 0.000000000000047794773f))))))))))))))));
-    let s_57 = (1f + (z_16 * (-0.16666667f + (z_16 * (0.008333334f + (z_16 * (-0.0001984127f + (z_16 * (0.0000027557319f + (z_16 * (-0.000000025052108f + (z_16 * (0.00000000016059044f + (z_16 * (-0.00000000000076471636f + (z_16 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_57 * x));
+    let s_58 = (1f + (z_16 * (-0.16666667f + (z_16 * (0.008333334f + (z_16 * (-0.0001984127f + (z_16 * (0.0000027557319f + (z_16 * (-0.000000025052108f + (z_16 * (0.00000000016059044f + (z_16 * (-0.00000000000076471636f + (z_16 * 0.0000000000000028114574f))))))))))))))));
+    return vec2<f32>(c_8, (s_58 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -530,10 +530,10 @@ fn airlight_log1p(x_2: f32) -> f32 {
     if _e9 {
         return log((1f + x_2));
     }
-    let s_58 = (x_2 / (2f + x_2));
-    let z_18 = (s_58 * s_58);
+    let s_59 = (x_2 / (2f + x_2));
+    let z_18 = (s_59 * s_59);
     let sum_15 = ((((((((((((((((z_18 / 17f) + 0.06666667f) * z_18) + 0.07692308f) * z_18) + 0.09090909f) * z_18) + 0.11111111f) * z_18) + 0.14285715f) * z_18) + 0.2f) * z_18) + 0.33333334f) * z_18) + 1f);
-    return ((2f * s_58) * sum_15);
+    return ((2f * s_59) * sum_15);
 }
 
 fn airlight_is_finite(x_3: f32) -> bool {
@@ -1146,13 +1146,13 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
     let om_3 = (1f - y2_);
     let mu_3 = (-(sigma_2) * (om_3 * inv_2));
     let c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
-    let far = ((y2_ * inv_2) * 2f);
-    let near = (inv_2 * 2f);
-    minus = near;
-    plus = far;
+    let far_1 = ((y2_ * inv_2) * 2f);
+    let near_1 = (inv_2 * 2f);
+    minus = near_1;
+    plus = far_1;
     if (sigma_2 < 0f) {
-        minus = far;
-        plus = near;
+        minus = far_1;
+        plus = near_1;
     }
     let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
     let _e40 = minus;
@@ -2629,8 +2629,8 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     } else {
         local_17 = false;
     }
-    let far_1 = local_17;
-    if far_1 {
+    let far_2 = local_17;
+    if far_2 {
         decay = exp((-(big_h_6) * ((b_6 - a_7) / (a_7 * b_6))));
     }
     let _e648 = decay;
@@ -3413,15 +3413,15 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             let below_1 = (lower <= 1.5707964f);
             let _e248 = psi1_1;
             let _e254 = airlight_cos_sin(select((_e248 + (hw_1 * (1f - _e241))), lower, below_1));
-            let cs_4 = _e254.y;
+            let cs_5 = _e254.y;
             let sn = select(_e254.x, -(_e254.x), below_1);
             let near_pole = (1f + _e254.x);
-            let far_pole = ((cs_4 * cs_4) / near_pole);
+            let far_pole = ((cs_5 * cs_5) / near_pole);
             let one_minus = select(far_pole, near_pole, below_1);
             let one_plus = select(near_pole, far_pole, below_1);
-            let y_11 = select((near_pole / cs_4), (cs_4 / near_pole), below_1);
-            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_11 - _e26)), 0f))), (cs_4 > 0f));
-            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_4)));
+            let y_11 = select((near_pole / cs_5), (cs_5 / near_pole), below_1);
+            let weight_3 = select(0f, exp(-(max((big_h_7 * (y_11 - _e26)), 0f))), (cs_5 > 0f));
+            let _e288 = airlight_light(s_11.light_kind, s_11.light_param_a, s_11.light_param_b, ((g_13.d_el * sn) + (g_13.d_c * cs_5)));
             let _e294 = airlight_phase(s_11.phase_kind, s_11.phase_param_a, s_11.phase_param_b, s_11.phase_param_c, -(sn), one_plus, one_minus);
             let f_2 = (_e288 * _e294);
             let gw = (weight_3 * f_2);
@@ -6119,8 +6119,8 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     } else {
         local_155 = false;
     }
-    let near_1 = local_155;
-    if near_1 {
+    let near_2 = local_155;
+    if near_2 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
@@ -6391,14 +6391,35 @@ fn airlight_area_phase(s_28: AirlightScene, mu_2: f32) -> f32 {
     return _e6;
 }
 
-fn airlight_emitted(s_29: AirlightScene, c_7: f32) -> f32 {
+fn airlight_area_phase_about(s_29: AirlightScene, sign_: f32, cs_1: vec2<f32>) -> f32 {
+    var near: f32;
+    var far: f32;
+
+    let ss = (cs_1.y * cs_1.y);
+    near = (ss / (1f + cs_1.x));
+    far = (1f + cs_1.x);
+    if (cs_1.x < 0f) {
+        near = (1f - cs_1.x);
+        far = (ss / (1f - cs_1.x));
+    }
+    let _e25 = far;
+    let _e26 = near;
+    let om_4 = select(_e25, _e26, (sign_ > 0f));
+    let _e30 = near;
+    let _e31 = far;
+    let op_3 = select(_e30, _e31, (sign_ > 0f));
+    let _e41 = airlight_phase(s_29.phase_kind, s_29.phase_param_a, s_29.phase_param_b, s_29.phase_param_c, (sign_ * cs_1.x), om_4, op_3);
+    return _e41;
+}
+
+fn airlight_emitted(s_30: AirlightScene, c_7: f32) -> f32 {
     var e_2: u32;
     var base_1: f32;
     var acc_1: f32 = 1f;
 
-    let p_2 = u32(s_29.light_param_b);
+    let p_2 = u32(s_30.light_param_b);
     if (p_2 <= 1u) {
-        return s_29.intensity;
+        return s_30.intensity;
     }
     e_2 = (p_2 - 1u);
     base_1 = c_7;
@@ -6513,21 +6534,21 @@ fn airlight_emitted(s_29: AirlightScene, c_7: f32) -> f32 {
     let _e151 = base_1;
     base_1 = (_e150 * _e151);
     let _e154 = acc_1;
-    return (s_29.intensity * _e154);
+    return (s_30.intensity * _e154);
 }
 
-fn airlight_emission_scale(s_30: AirlightScene) -> f32 {
-    let p_3 = u32(s_30.light_param_b);
+fn airlight_emission_scale(s_31: AirlightScene) -> f32 {
+    let p_3 = u32(s_31.light_param_b);
     if (p_3 <= 1u) {
         return 0f;
     }
     return (2f / sqrt(f32((p_3 - 1u))));
 }
 
-fn airlight_graded_range(s_31: AirlightScene, top: f32) -> vec2<f32> {
+fn airlight_graded_range(s_32: AirlightScene, top: f32) -> vec2<f32> {
     var local_169: bool;
 
-    let _e2 = airlight_emission_scale(s_31);
+    let _e2 = airlight_emission_scale(s_32);
     if (_e2 > 0f) {
         local_169 = (_e2 < top);
     } else {
@@ -6549,17 +6570,17 @@ fn airlight_graded_node(graded: f32, node: f32) -> vec2<f32> {
     return vec2<f32>(node, 1f);
 }
 
-fn airlight_narrowed(s_32: AirlightScene, length_: f32) -> f32 {
-    let _e2 = airlight_emission_scale(s_32);
+fn airlight_narrowed(s_33: AirlightScene, length_: f32) -> f32 {
+    let _e2 = airlight_emission_scale(s_33);
     return (length_ * select(1f, min(_e2, 1f), (_e2 > 0f)));
 }
 
-fn airlight_far_from_edge(s_33: AirlightScene, depth: f32, z_9: f32) -> bool {
-    let _e4 = airlight_narrowed(s_33, z_9);
+fn airlight_far_from_edge(s_34: AirlightScene, depth: f32, z_9: f32) -> bool {
+    let _e4 = airlight_narrowed(s_34, z_9);
     return (depth >= (AIRLIGHT_EDGE_REACH * _e4));
 }
 
-fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
+fn airlight_lobe(sign_1: f32, gap_3: f32) -> vec2<f32> {
     var local_170: bool;
 
     if !(!((gap_3 > 0f))) {
@@ -6571,15 +6592,15 @@ fn airlight_lobe(sign_: f32, gap_3: f32) -> vec2<f32> {
     if _e12 {
         return vec2<f32>(1f, 0f);
     }
-    return vec2<f32>(select(1f, -1f, (sign_ < 0f)), (2f * sqrt((gap_3 + gap_3))));
+    return vec2<f32>(select(1f, -1f, (sign_1 < 0f)), (2f * sqrt((gap_3 + gap_3))));
 }
 
-fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
+fn airlight_phase_lobes(s_35: AirlightScene) -> vec4<f32> {
     var first: vec2<f32> = vec2<f32>(1f, 0f);
     var second: vec2<f32> = vec2<f32>(1f, 0f);
 
-    let p0_5 = s_34.phase_param_a;
-    switch s_34.phase_kind {
+    let p0_5 = s_35.phase_param_a;
+    switch s_35.phase_kind {
         case 2u, 4u: {
             let _e11 = airlight_hg_gap(p0_5);
             let _e12 = airlight_lobe(p0_5, _e11);
@@ -6594,8 +6615,8 @@ fn airlight_phase_lobes(s_34: AirlightScene) -> vec4<f32> {
             let _e22 = airlight_hg_gap(p0_5);
             let _e23 = airlight_lobe(p0_5, _e22);
             first = _e23;
-            let _e26 = airlight_hg_gap(s_34.phase_param_b);
-            let _e27 = airlight_lobe(s_34.phase_param_b, _e26);
+            let _e26 = airlight_hg_gap(s_35.phase_param_b);
+            let _e27 = airlight_lobe(s_35.phase_param_b, _e26);
             second = _e27;
         }
         default: {
@@ -6681,11 +6702,11 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     return _e61;
 }
 
-fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
+fn airlight_outline_at(s_36: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
     let rel = (x_22 - a_19.c);
     let foot = vec2<f32>(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
     let zero = vec2(0f);
-    if (s_35.light_shape == AIRLIGHT_SHAPE_DISC) {
+    if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
         return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_19.radius);
     }
     let u2_ = vec2<f32>(dot(a_19.eu, a_19.a1_), dot(a_19.eu, a_19.a2_));
@@ -6693,7 +6714,7 @@ fn airlight_outline_at(s_35: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>)
     return AirlightOutline(array<vec2<f32>, 4>(-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0f);
 }
 
-fn airlight_area(s_36: AirlightScene) -> AirlightArea {
+fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     var a_20: AirlightArea;
     var local_172: bool;
     var cut_count: u32 = 0u;
@@ -6719,12 +6740,12 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
     var local_180: bool;
 
     let zero_1 = vec3(0f);
-    let _e21 = airlight_phase_lobes(s_36);
-    a_20 = AirlightArea(zero_1, s_36.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_36.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    let _e28 = airlight_isotropic_phase(s_36);
+    let _e21 = airlight_phase_lobes(s_37);
+    a_20 = AirlightArea(zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
+    let _e28 = airlight_isotropic_phase(s_37);
     a_20.isotropic = _e28;
-    if !((s_36.intensity == 0f)) {
-        local_172 = (s_36.sigma_s == 0f);
+    if !((s_37.intensity == 0f)) {
+        local_172 = (s_37.sigma_s == 0f);
     } else {
         local_172 = true;
     }
@@ -6734,14 +6755,14 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
         let _e42 = a_20;
         return _e42;
     }
-    let o_8 = s_36.origin;
-    let _e45 = airlight_normalize(s_36.dir);
+    let o_8 = s_37.origin;
+    let _e45 = airlight_normalize(s_37.dir);
     a_20.d = _e45;
-    let infinite_6 = ((s_36.flags & 1u) != 0u);
-    let t0_2 = s_36.t_min;
-    centre = s_36.light_position;
-    size = s_36.light_param_a;
-    if (s_36.light_shape == AIRLIGHT_SHAPE_SPHERE) {
+    let infinite_6 = ((s_37.flags & 1u) != 0u);
+    let t0_2 = s_37.t_min;
+    centre = s_37.light_position;
+    size = s_37.light_param_a;
+    if (s_37.light_shape == AIRLIGHT_SHAPE_SPHERE) {
         let _e72 = a_20.c;
         let oc = (o_8 - _e72);
         let b_22 = dot(oc, _e45);
@@ -6760,15 +6781,15 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
             cut_count = 2u;
         }
     } else {
-        if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e111 = airlight_normalize(s_36.light_axis);
+        if (s_37.light_shape == AIRLIGHT_SHAPE_DISC) {
+            let _e111 = airlight_normalize(s_37.light_axis);
             a_20.n = _e111;
             let _e114 = a_20.n;
             let _e115 = airlight_basis_e1_(_e114);
             a_20.a1_ = _e115;
         } else {
-            a_20.eu = s_36.light_axis;
-            a_20.ev = s_36.light_end;
+            a_20.eu = s_37.light_axis;
+            a_20.ev = s_37.light_end;
             let _e122 = a_20.eu;
             let _e124 = a_20.ev;
             let _e126 = airlight_normalize(cross(_e122, _e124));
@@ -6801,7 +6822,7 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
         cut_count = 1u;
         let _e179 = a_20;
         let _e180 = cut0_;
-        let _e183 = airlight_outline_at(s_36, _e179, (o_8 + (_e180 * _e45)));
+        let _e183 = airlight_outline_at(s_37, _e179, (o_8 + (_e180 * _e45)));
         let _e184 = airlight_outline_distances(_e183);
         distances = _e184;
         let _e186 = a_20.n;
@@ -6821,13 +6842,13 @@ fn airlight_area(s_36: AirlightScene) -> AirlightArea {
     let _e211 = size;
     let _e212 = size;
     a_20.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
-    t_end_1 = s_36.t_max;
+    t_end_1 = s_37.t_max;
     end_infinite = infinite_6;
-    if (s_36.sigma_t > 0f) {
+    if (s_37.sigma_t > 0f) {
         let _e222 = centre;
         let _e226 = airlight_safe_length((_e222 - (o_8 + (t0_2 * _e45))));
         let _e228 = size;
-        let reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385f / s_36.sigma_t));
+        let reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385f / s_37.sigma_t));
         if !(infinite_6) {
             let _e237 = t_end_1;
             local_173 = (reach_1 < _e237);
@@ -6979,7 +7000,7 @@ fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_37: AirlightScene, a_21: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+fn airlight_flat_node(s_38: AirlightScene, a_21: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
@@ -6989,66 +7010,66 @@ fn airlight_flat_node(s_37: AirlightScene, a_21: AirlightArea, above_1: Airlight
     let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_37, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
-    let _e52 = airlight_emitted(s_37, cos_);
-    return ((((((((_e6.y * _e52) * exp(min((-(s_37.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
+    let _e50 = airlight_area_phase(s_38, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
+    let _e52 = airlight_emitted(s_38, cos_);
+    return ((((((((_e6.y * _e52) * exp(min((-(s_38.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
-fn airlight_flat_radial(s_38: AirlightScene, a_22: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_39: AirlightScene, a_22: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
-    let _e8 = airlight_graded_range(s_38, _e7);
+    let _e8 = airlight_graded_range(s_39, _e7);
     let graded_6 = _e8.y;
     let c_19 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_38, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
@@ -7244,21 +7265,21 @@ fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32
     return vec3<f32>(_e9, (graded_2 / (_e3.x * _e3.x)));
 }
 
-fn airlight_flat_lobe_node(s_39: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
+fn airlight_flat_lobe_node(s_40: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
     let _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
     let c_20 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
     if !((c_20 > 0f)) {
         return 0f;
     }
-    let _e20 = airlight_emitted(s_39, c_20);
-    let _e32 = airlight_area_phase(s_39, (lobe_1.sign * _e7.x));
-    return ((((_e20 * exp(min(((-(s_39.sigma_t) * z_12) / c_20), 0f))) * _e32) * _e7.y) * _e7.z);
+    let _e20 = airlight_emitted(s_40, c_20);
+    let _e31 = airlight_area_phase_about(s_40, lobe_1.sign, _e7.xy);
+    return ((((_e20 * exp(min(((-(s_40.sigma_t) * z_12) / c_20), 0f))) * _e31) * _e7.y) * _e7.z);
 }
 
-fn airlight_flat_lobe_along(s_40: AirlightScene, z_13: f32, o_5: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_1: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_41: AirlightScene, z_13: f32, o_5: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_2: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
-    let w_9 = ((cs_1.x * u_4) + (cs_1.y * v_6));
+    let w_9 = ((cs_2.x * u_4) + (cs_2.y * v_6));
     let k_14 = (w_9.z / -(lobe_2.p.z));
     let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
@@ -7271,52 +7292,52 @@ fn airlight_flat_lobe_along(s_40: AirlightScene, z_13: f32, o_5: AirlightOutline
     let c_21 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_40, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -7425,9 +7446,9 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
     return _e90;
 }
 
-fn airlight_line_beta(rule_3: AirlightEdgeRule, cs_2: vec2<f32>) -> f32 {
+fn airlight_line_beta(rule_3: AirlightEdgeRule, cs_3: vec2<f32>) -> f32 {
     let m_14 = vec2<f32>(rule_3.t.y, -(rule_3.t.x));
-    let _e17 = airlight_atan2_((dot(cs_2, rule_3.t) * rule_3.h), (max(dot(cs_2, m_14), 0f) * rule_3.reach));
+    let _e17 = airlight_atan2_((dot(cs_3, rule_3.t) * rule_3.h), (max(dot(cs_3, m_14), 0f) * rule_3.reach));
     return _e17;
 }
 
@@ -7436,9 +7457,9 @@ fn airlight_mercator_cut(k_8: u32) -> f32 {
     return cuts_5[k_8];
 }
 
-fn airlight_mercator(n_3: vec2<f32>, cs_3: vec2<f32>) -> f32 {
+fn airlight_mercator(n_3: vec2<f32>, cs_4: vec2<f32>) -> f32 {
     let _e3 = airlight_mercator_cut(7u);
-    let tangent = (((cs_3.y * n_3.x) - (cs_3.x * n_3.y)) / max(((cs_3.x * n_3.x) + (cs_3.y * n_3.y)), 0.000000000000000000000000000001f));
+    let tangent = (((cs_4.y * n_3.x) - (cs_4.x * n_3.y)) / max(((cs_4.x * n_3.x) + (cs_4.y * n_3.y)), 0.000000000000000000000000000001f));
     let _e21 = airlight_asinh(tangent);
     return clamp(_e21, -(_e3), _e3);
 }
@@ -7459,7 +7480,7 @@ fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     return vec3<f32>(sech, ((sign(x_38) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
 }
 
-fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
+fn airlight_mercator_wedge(s_42: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
     var sum_9: f32 = 0f;
     var i_34: u32 = 0u;
 
@@ -7479,7 +7500,7 @@ fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline,
                 continue;
             }
             let _e27 = sum_9;
-            let _e34 = airlight_flat_lobe_along(s_41, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
+            let _e34 = airlight_flat_lobe_along(s_42, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
             sum_9 = (_e27 + (_e23.z * _e34));
         }
         continuing {
@@ -7491,7 +7512,7 @@ fn airlight_mercator_wedge(s_41: AirlightScene, z_14: f32, o_6: AirlightOutline,
     return _e40;
 }
 
-fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
     var sum_10: f32 = 0f;
     var m_4: vec2<f32> = vec2<f32>(1f, 0f);
     var t_4: vec2<f32>;
@@ -7562,7 +7583,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     let _e125 = airlight_radial_rule(_e124);
                     let _e129 = airlight_edge_at(rule_7, (1.5707964f * _e125.x));
                     let _e130 = sum_10;
-                    let _e139 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    let _e139 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
                     sum_10 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
@@ -7584,7 +7605,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                     let _e158 = airlight_azimuths(false, _e157);
                     let _e159 = sum_10;
                     let _e163 = t_4;
-                    let _e168 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    let _e168 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
                     sum_10 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
@@ -7617,7 +7638,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                 let _e239 = airlight_azimuths(false, _e238);
                 let _e240 = sum_10;
                 let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                let _e249 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                let _e249 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e248);
                 sum_10 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
@@ -7690,7 +7711,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e386 = j_9;
                         let _e387 = airlight_edge_node(_e380, _e386);
                         let _e388 = sum_10;
-                        let _e391 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        let _e391 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
                         sum_10 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
@@ -7746,7 +7767,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e471 = airlight_triangle_rule(_e470);
                         let _e472 = sum_10;
                         let _e478 = airlight_cos_sin_turns((c_22 + (hw_6 * _e471.x)));
-                        let _e479 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        let _e479 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e478);
                         sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
                     continuing {
@@ -7803,7 +7824,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e541 = j_11;
                         let _e542 = airlight_edge_node(_e540, _e541);
                         let _e543 = sum_10;
-                        let _e546 = airlight_flat_lobe_along(s_42, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        let _e546 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
                         sum_10 = (_e543 + (_e542.w * _e546));
                     }
                     continuing {
@@ -7815,7 +7836,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
             let _e552 = sum_10;
             let _e553 = merc_first;
             let _e554 = merc_last;
-            let _e555 = airlight_mercator_wedge(s_42, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            let _e555 = airlight_mercator_wedge(s_43, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
             sum_10 = (_e552 + _e555);
         }
         continuing {
@@ -7827,7 +7848,7 @@ fn airlight_flat_about_lobe(s_42: AirlightScene, z_15: f32, o_7: AirlightOutline
     return _e560;
 }
 
-fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
+fn airlight_disc(s_44: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
     var local_188: bool;
     var local_189: bool;
     var u_7: vec2<f32> = vec2(0f);
@@ -7850,12 +7871,12 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
     let _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
     if (_e30.scale > 0f) {
-        let _e34 = airlight_flat_about_lobe(s_43, z_20, outline, _e30);
+        let _e34 = airlight_flat_about_lobe(s_44, z_20, outline, _e30);
         return _e34;
     }
     if (rf <= radius_2) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_43, (radius_2 - rf), z_20);
+            let _e44 = airlight_far_from_edge(s_44, (radius_2 - rf), z_20);
             local_189 = _e44;
         } else {
             local_189 = true;
@@ -7900,7 +7921,7 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_43, a_26, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_44, a_26, _e120, _e121, _e122);
             sum_11 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -7912,7 +7933,7 @@ fn airlight_disc(s_43: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_45: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_9: vec2<f32>;
     var local_190: bool;
     var sum_12: f32 = 0f;
@@ -7933,13 +7954,13 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
     let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
     let _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
-        let _e73 = airlight_flat_about_lobe(s_44, z_21, about_foot, _e69);
+        let _e73 = airlight_flat_about_lobe(s_45, z_21, about_foot, _e69);
         return _e73;
     }
     let _e76 = airlight_outline_boundary(about_foot, vec2(0f));
     q_9 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
-        let _e89 = airlight_far_from_edge(s_44, sqrt(dot(_e76.xy, _e76.xy)), z_21);
+        let _e89 = airlight_far_from_edge(s_45, sqrt(dot(_e76.xy, _e76.xy)), z_21);
         local_190 = _e89;
     } else {
         local_190 = false;
@@ -7951,7 +7972,7 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
     let _e92 = q_9;
     let _e94 = airlight_above(z_21, (_e92 - foot_1));
     let thin = (AIRLIGHT_FLT_EPS * abs(det));
-    let _e99 = airlight_narrowed(s_44, _e94.rho0_);
+    let _e99 = airlight_narrowed(s_45, _e94.rho0_);
     loop {
         let _e104 = i_41;
         if (_e104 < 4u) {
@@ -7980,7 +8001,7 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
                     let _e132 = j_12;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_12;
-                    let _e138 = airlight_flat_radial(s_44, a_27, _e94, _e133.xy, _e133.z);
+                    let _e138 = airlight_flat_radial(s_45, a_27, _e94, _e133.xy, _e133.z);
                     sum_12 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
@@ -7998,19 +8019,19 @@ fn airlight_parallelogram(s_44: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
     return _e147;
 }
 
-fn airlight_cap_row(s_45: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
+fn airlight_cap_row(s_46: AirlightScene, cap: AirlightCap, graded_4: f32, node_2: f32, weight_1: f32) -> vec3<f32> {
     let _e5 = airlight_graded_node(graded_4, node_2);
     let w_10 = (weight_1 * _e5.y);
     let _e9 = airlight_cos_sin_half_turn(_e5.x);
     let sb_2 = (cap.sin_a * _e9.y);
     let cb_2 = sqrt(((1f - sb_2) * (1f + sb_2)));
     let dist_1 = max(((cap.dc * cb_2) - (cap.radius * _e9.x)), 0f);
-    let _e28 = airlight_emitted(s_45, _e9.x);
-    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_45.sigma_t) * dist_1), 0f)));
+    let _e28 = airlight_emitted(s_46, _e9.x);
+    let factor = (((((((w_10 * _e28) * cap.sin_a) * cap.sin_a) * _e9.y) * _e9.x) / cb_2) * exp(min((-(s_46.sigma_t) * dist_1), 0f)));
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_46: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_47: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_13: f32 = 0f;
     var i_42: u32 = 0u;
@@ -8021,44 +8042,44 @@ fn airlight_sphere_cap(s_46: AirlightScene, a_28: AirlightArea, cap_1: AirlightC
     let ad = dot(cap_1.a, a_28.d);
     let e1d = dot(_e4, a_28.d);
     let e2d = dot(e2_2, a_28.d);
-    let _e15 = airlight_graded_range(s_46, 1.5707964f);
+    let _e15 = airlight_graded_range(s_47, 1.5707964f);
     let graded_9 = _e15.y;
     let c_23 = (0.5f * _e15.x);
     let hw_7 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e63 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e70 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e77 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e84 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e91 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e98 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e105 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e112 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e119 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e126 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e133 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e140 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e147 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e154 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e161 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_46, cap_1, graded_9, (c_23 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e168 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
     if a_28.isotropic {
-        let _e174 = airlight_area_phase(s_46, 0f);
+        let _e174 = airlight_area_phase(s_47, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_13;
         let _e179 = rows[0].x;
@@ -8126,97 +8147,97 @@ fn airlight_sphere_cap(s_46: AirlightScene, a_28: AirlightArea, cap_1: AirlightC
             let _e291 = rows[0].x;
             let _e294 = rows[0].y;
             let _e298 = rows[0].z;
-            let _e301 = airlight_area_phase(s_46, ((_e294 * ad) + (_e298 * across_1)));
+            let _e301 = airlight_area_phase(s_47, ((_e294 * ad) + (_e298 * across_1)));
             at_2 = (_e288 + (_e291 * _e301));
             let _e304 = at_2;
             let _e307 = rows[1].x;
             let _e310 = rows[1].y;
             let _e314 = rows[1].z;
-            let _e317 = airlight_area_phase(s_46, ((_e310 * ad) + (_e314 * across_1)));
+            let _e317 = airlight_area_phase(s_47, ((_e310 * ad) + (_e314 * across_1)));
             at_2 = (_e304 + (_e307 * _e317));
             let _e320 = at_2;
             let _e323 = rows[2].x;
             let _e326 = rows[2].y;
             let _e330 = rows[2].z;
-            let _e333 = airlight_area_phase(s_46, ((_e326 * ad) + (_e330 * across_1)));
+            let _e333 = airlight_area_phase(s_47, ((_e326 * ad) + (_e330 * across_1)));
             at_2 = (_e320 + (_e323 * _e333));
             let _e336 = at_2;
             let _e339 = rows[3].x;
             let _e342 = rows[3].y;
             let _e346 = rows[3].z;
-            let _e349 = airlight_area_phase(s_46, ((_e342 * ad) + (_e346 * across_1)));
+            let _e349 = airlight_area_phase(s_47, ((_e342 * ad) + (_e346 * across_1)));
             at_2 = (_e336 + (_e339 * _e349));
             let _e352 = at_2;
             let _e355 = rows[4].x;
             let _e358 = rows[4].y;
             let _e362 = rows[4].z;
-            let _e365 = airlight_area_phase(s_46, ((_e358 * ad) + (_e362 * across_1)));
+            let _e365 = airlight_area_phase(s_47, ((_e358 * ad) + (_e362 * across_1)));
             at_2 = (_e352 + (_e355 * _e365));
             let _e368 = at_2;
             let _e371 = rows[5].x;
             let _e374 = rows[5].y;
             let _e378 = rows[5].z;
-            let _e381 = airlight_area_phase(s_46, ((_e374 * ad) + (_e378 * across_1)));
+            let _e381 = airlight_area_phase(s_47, ((_e374 * ad) + (_e378 * across_1)));
             at_2 = (_e368 + (_e371 * _e381));
             let _e384 = at_2;
             let _e387 = rows[6].x;
             let _e390 = rows[6].y;
             let _e394 = rows[6].z;
-            let _e397 = airlight_area_phase(s_46, ((_e390 * ad) + (_e394 * across_1)));
+            let _e397 = airlight_area_phase(s_47, ((_e390 * ad) + (_e394 * across_1)));
             at_2 = (_e384 + (_e387 * _e397));
             let _e400 = at_2;
             let _e403 = rows[7].x;
             let _e406 = rows[7].y;
             let _e410 = rows[7].z;
-            let _e413 = airlight_area_phase(s_46, ((_e406 * ad) + (_e410 * across_1)));
+            let _e413 = airlight_area_phase(s_47, ((_e406 * ad) + (_e410 * across_1)));
             at_2 = (_e400 + (_e403 * _e413));
             let _e416 = at_2;
             let _e419 = rows[8].x;
             let _e422 = rows[8].y;
             let _e426 = rows[8].z;
-            let _e429 = airlight_area_phase(s_46, ((_e422 * ad) + (_e426 * across_1)));
+            let _e429 = airlight_area_phase(s_47, ((_e422 * ad) + (_e426 * across_1)));
             at_2 = (_e416 + (_e419 * _e429));
             let _e432 = at_2;
             let _e435 = rows[9].x;
             let _e438 = rows[9].y;
             let _e442 = rows[9].z;
-            let _e445 = airlight_area_phase(s_46, ((_e438 * ad) + (_e442 * across_1)));
+            let _e445 = airlight_area_phase(s_47, ((_e438 * ad) + (_e442 * across_1)));
             at_2 = (_e432 + (_e435 * _e445));
             let _e448 = at_2;
             let _e451 = rows[10].x;
             let _e454 = rows[10].y;
             let _e458 = rows[10].z;
-            let _e461 = airlight_area_phase(s_46, ((_e454 * ad) + (_e458 * across_1)));
+            let _e461 = airlight_area_phase(s_47, ((_e454 * ad) + (_e458 * across_1)));
             at_2 = (_e448 + (_e451 * _e461));
             let _e464 = at_2;
             let _e467 = rows[11].x;
             let _e470 = rows[11].y;
             let _e474 = rows[11].z;
-            let _e477 = airlight_area_phase(s_46, ((_e470 * ad) + (_e474 * across_1)));
+            let _e477 = airlight_area_phase(s_47, ((_e470 * ad) + (_e474 * across_1)));
             at_2 = (_e464 + (_e467 * _e477));
             let _e480 = at_2;
             let _e483 = rows[12].x;
             let _e486 = rows[12].y;
             let _e490 = rows[12].z;
-            let _e493 = airlight_area_phase(s_46, ((_e486 * ad) + (_e490 * across_1)));
+            let _e493 = airlight_area_phase(s_47, ((_e486 * ad) + (_e490 * across_1)));
             at_2 = (_e480 + (_e483 * _e493));
             let _e496 = at_2;
             let _e499 = rows[13].x;
             let _e502 = rows[13].y;
             let _e506 = rows[13].z;
-            let _e509 = airlight_area_phase(s_46, ((_e502 * ad) + (_e506 * across_1)));
+            let _e509 = airlight_area_phase(s_47, ((_e502 * ad) + (_e506 * across_1)));
             at_2 = (_e496 + (_e499 * _e509));
             let _e512 = at_2;
             let _e515 = rows[14].x;
             let _e518 = rows[14].y;
             let _e522 = rows[14].z;
-            let _e525 = airlight_area_phase(s_46, ((_e518 * ad) + (_e522 * across_1)));
+            let _e525 = airlight_area_phase(s_47, ((_e518 * ad) + (_e522 * across_1)));
             at_2 = (_e512 + (_e515 * _e525));
             let _e528 = at_2;
             let _e531 = rows[15].x;
             let _e534 = rows[15].y;
             let _e538 = rows[15].z;
-            let _e541 = airlight_area_phase(s_46, ((_e534 * ad) + (_e538 * across_1)));
+            let _e541 = airlight_area_phase(s_47, ((_e534 * ad) + (_e538 * across_1)));
             at_2 = (_e528 + (_e531 * _e541));
             let _e544 = sum_13;
             let _e546 = at_2;
@@ -8231,17 +8252,17 @@ fn airlight_sphere_cap(s_46: AirlightScene, a_28: AirlightArea, cap_1: AirlightC
     return _e552;
 }
 
-fn airlight_sphere_lobe_node(s_47: AirlightScene, cap_2: AirlightCap, sign_1: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
+fn airlight_sphere_lobe_node(s_48: AirlightScene, cap_2: AirlightCap, sign_2: f32, cos_p: f32, big_b: f32, start_4: f32, graded_5: f32, g_28: f32) -> f32 {
     let _e8 = airlight_graded_from_node(start_4, graded_5, g_28);
     let toward_a = ((_e8.x * cos_p) + (_e8.y * big_b));
     let root_5 = sqrt(max(((cap_2.radius * cap_2.radius) - (((cap_2.dc * cap_2.dc) * (1f - toward_a)) * (1f + toward_a))), 0f));
     let dist_2 = max(((cap_2.dc * toward_a) - root_5), 0f);
-    let _e37 = airlight_emitted(s_47, (root_5 / cap_2.radius));
-    let _e47 = airlight_area_phase(s_47, (sign_1 * _e8.x));
-    return ((((_e37 * exp(min((-(s_47.sigma_t) * dist_2), 0f))) * _e47) * _e8.y) * _e8.z);
+    let _e37 = airlight_emitted(s_48, (root_5 / cap_2.radius));
+    let _e46 = airlight_area_phase_about(s_48, sign_2, _e8.xy);
+    return ((((_e37 * exp(min((-(s_48.sigma_t) * dist_2), 0f))) * _e46) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_2: f32, cos_p_1: f32, scale_3: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_3: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var count_3: u32;
@@ -8260,7 +8281,7 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
     var k_9: u32;
     var local_195: bool;
 
-    let p_6 = (sign_2 * a_29.d);
+    let p_6 = (sign_3 * a_29.d);
     let _e8 = airlight_basis_e1_(p_6);
     let v_11 = cross(p_6, _e8);
     let au = dot(cap_3.a, _e8);
@@ -8418,67 +8439,67 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
                     let hw_8 = (0.5f * _e243.y);
                     let _e251 = around;
                     let _e254 = big_b_1;
-                    let _e258 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
+                    let _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
                     around = (_e251 + ((0.1894506f * hw_8) * _e258));
                     let _e261 = around;
                     let _e264 = big_b_1;
-                    let _e268 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
+                    let _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
                     around = (_e261 + ((0.1894506f * hw_8) * _e268));
                     let _e271 = around;
                     let _e274 = big_b_1;
-                    let _e278 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
+                    let _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
                     around = (_e271 + ((0.18260342f * hw_8) * _e278));
                     let _e281 = around;
                     let _e284 = big_b_1;
-                    let _e288 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
+                    let _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
                     around = (_e281 + ((0.18260342f * hw_8) * _e288));
                     let _e291 = around;
                     let _e294 = big_b_1;
-                    let _e298 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
+                    let _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
                     around = (_e291 + ((0.16915652f * hw_8) * _e298));
                     let _e301 = around;
                     let _e304 = big_b_1;
-                    let _e308 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
+                    let _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
                     around = (_e301 + ((0.16915652f * hw_8) * _e308));
                     let _e311 = around;
                     let _e314 = big_b_1;
-                    let _e318 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
+                    let _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
                     around = (_e311 + ((0.14959599f * hw_8) * _e318));
                     let _e321 = around;
                     let _e324 = big_b_1;
-                    let _e328 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
+                    let _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
                     around = (_e321 + ((0.14959599f * hw_8) * _e328));
                     let _e331 = around;
                     let _e334 = big_b_1;
-                    let _e338 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
+                    let _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
                     around = (_e331 + ((0.12462897f * hw_8) * _e338));
                     let _e341 = around;
                     let _e344 = big_b_1;
-                    let _e348 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
+                    let _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
                     around = (_e341 + ((0.12462897f * hw_8) * _e348));
                     let _e351 = around;
                     let _e354 = big_b_1;
-                    let _e358 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
+                    let _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
                     around = (_e351 + ((0.09515851f * hw_8) * _e358));
                     let _e361 = around;
                     let _e364 = big_b_1;
-                    let _e368 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
+                    let _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
                     around = (_e361 + ((0.09515851f * hw_8) * _e368));
                     let _e371 = around;
                     let _e374 = big_b_1;
-                    let _e378 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
+                    let _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
                     around = (_e371 + ((0.062253524f * hw_8) * _e378));
                     let _e381 = around;
                     let _e384 = big_b_1;
-                    let _e388 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
+                    let _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
                     around = (_e381 + ((0.062253524f * hw_8) * _e388));
                     let _e391 = around;
                     let _e394 = big_b_1;
-                    let _e398 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
+                    let _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
                     around = (_e391 + ((0.02715246f * hw_8) * _e398));
                     let _e401 = around;
                     let _e404 = big_b_1;
-                    let _e408 = airlight_sphere_lobe_node(s_48, cap_3, sign_2, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
+                    let _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
                     around = (_e401 + ((0.02715246f * hw_8) * _e408));
                 }
                 continuing {
@@ -8500,9 +8521,9 @@ fn airlight_sphere_about_lobe(s_48: AirlightScene, a_29: AirlightArea, cap_3: Ai
     return _e422;
 }
 
-fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_sphere(s_50: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
     var chosen: f32 = 0f;
-    var sign_3: f32 = 1f;
+    var sign_4: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
     var local_196: bool;
@@ -8571,7 +8592,7 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> 
             let _e97 = local_200;
             if _e97 {
                 chosen = lobe_6.y;
-                sign_3 = lobe_6.x;
+                sign_4 = lobe_6.x;
                 cos_p_2 = c_25;
             }
         }
@@ -8582,43 +8603,43 @@ fn airlight_sphere(s_49: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> 
     }
     let _e103 = chosen;
     if (_e103 > 0f) {
-        let _e106 = sign_3;
+        let _e106 = sign_4;
         let _e107 = cos_p_2;
         let _e108 = chosen;
-        let _e109 = airlight_sphere_about_lobe(s_49, a_30, cap_4, _e106, _e107, _e108);
+        let _e109 = airlight_sphere_about_lobe(s_50, a_30, cap_4, _e106, _e107, _e108);
         return _e109;
     }
-    let _e110 = airlight_sphere_cap(s_49, a_30, cap_4);
+    let _e110 = airlight_sphere_cap(s_50, a_30, cap_4);
     return _e110;
 }
 
-fn airlight_emitter_radiance(s_50: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
-    switch s_50.light_shape {
+fn airlight_emitter_radiance(s_51: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
+    switch s_51.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_50, a_31, x_29);
+            let _e4 = airlight_disc(s_51, a_31, x_29);
             return _e4;
         }
         case 3u: {
-            let _e5 = airlight_parallelogram(s_50, a_31, x_29);
+            let _e5 = airlight_parallelogram(s_51, a_31, x_29);
             return _e5;
         }
         default: {
-            let _e6 = airlight_sphere(s_50, a_31, x_29);
+            let _e6 = airlight_sphere(s_51, a_31, x_29);
             return _e6;
         }
     }
 }
 
-fn airlight_area_node(s_51: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_52: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
     let along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
     let t_14 = (a_32.x_h + along_1);
-    let fade = exp(min((-(s_51.sigma_t) * max(((a_32.x_h - s_51.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_51, a_32, (s_51.origin + (t_14 * a_32.d)));
+    let fade = exp(min((-(s_52.sigma_t) * max(((a_32.x_h - s_52.t_min) + along_1), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_52, a_32, (s_52.origin + (t_14 * a_32.d)));
     return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
-fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
+fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
     var st_1: AirlightAdaptive;
     var step_2: u32 = 0u;
     var k_10: f32;
@@ -8626,7 +8647,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     var j_14: u32;
     var local_202: bool;
 
-    let _e1 = airlight_area(s_52);
+    let _e1 = airlight_area(s_53);
     if (_e1.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8669,7 +8690,7 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
                     }
                     let _e70 = local_202;
                     let x_39 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_52, _e1, x_39);
+                    let _e72 = airlight_area_node(s_53, _e1, x_39);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8703,22 +8724,22 @@ fn airlight_area_light(s_52: AirlightScene) -> AirlightResult {
     if !(_e105) {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
-    return AirlightResult((s_52.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
+    return AirlightResult((s_53.sigma_s * max(total_4, 0f)), AIRLIGHT_STATUS_OK);
 }
 
-fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_area(s_54: AirlightScene) -> AirlightResult {
     var local_203: bool;
     var local_204: bool;
 
-    let _e1 = airlight_valid(s_53);
+    let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_203 = (s_53.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_203 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
         local_203 = true;
     }
     let _e10 = local_203;
     if !(_e10) {
-        local_204 = (s_53.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_204 = true;
     }
@@ -8726,7 +8747,7 @@ fn airlight_in_scatter_area(s_53: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_area_light(s_53);
+    let _e22 = airlight_area_light(s_54);
     return _e22;
 }
 
@@ -8782,19 +8803,19 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
     return _e5;
 }
 
-fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_point(s_55: AirlightScene) -> AirlightResult {
     var local_207: bool;
     var local_208: bool;
 
-    let _e1 = airlight_valid(s_54);
+    let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_207 = (s_54.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_207 = true;
     }
     let _e10 = local_207;
     if !(_e10) {
-        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_208 = true;
     }
@@ -8802,23 +8823,23 @@ fn airlight_in_scatter_point(s_54: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_point_integral(s_54);
+    let _e22 = airlight_point_integral(s_55);
     return _e22;
 }
 
-fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter_route(s_56: AirlightScene) -> AirlightResult {
     var local_209: bool;
     var local_210: bool;
 
-    let _e1 = airlight_valid(s_55);
+    let _e1 = airlight_valid(s_56);
     if !(!(_e1)) {
-        local_209 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_209 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
         local_209 = true;
     }
     let _e10 = local_209;
     if !(_e10) {
-        local_210 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_210 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_210 = true;
     }
@@ -8826,16 +8847,16 @@ fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
     if _e18 {
         return AirlightResult(0f, 1u);
     }
-    let _e22 = airlight_canonical(s_55);
-    let _e23 = airlight_refined(s_55, _e22);
-    let _e24 = airlight_limits(s_55, _e23);
+    let _e22 = airlight_canonical(s_56);
+    let _e23 = airlight_refined(s_56, _e22);
+    let _e24 = airlight_limits(s_56, _e23);
     if (_e24.status != AIRLIGHT_STATUS_DEFERRED) {
         let _e28 = airlight_overflowed(_e24);
         return _e28;
     }
-    let _e29 = airlight_isotropic_scene(s_55);
+    let _e29 = airlight_isotropic_scene(s_56);
     if !(_e29) {
-        let _e31 = airlight_angle_route(s_55, _e23);
+        let _e31 = airlight_angle_route(s_56, _e23);
         if (_e31.x > 0.5f) {
             let _e40 = airlight_overflowed(AirlightResult(max(_e31.y, 0f), AIRLIGHT_STATUS_OK));
             return _e40;
@@ -8844,7 +8865,7 @@ fn airlight_in_scatter_route(s_55: AirlightScene) -> AirlightResult {
     return AirlightResult(0f, 3u);
 }
 
-fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
+fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
     var st_2: AirlightAdaptive;
     var step_3: u32 = 0u;
     var k_11: f32;
@@ -8854,14 +8875,14 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
     var f: f32;
     var local_212: bool;
 
-    let _e1 = airlight_valid(s_56);
+    let _e1 = airlight_valid(s_57);
     if !(_e1) {
         return AirlightResult(0f, 1u);
     }
-    if (s_56.light_shape >= AIRLIGHT_SHAPE_DISC) {
+    if (s_57.light_shape >= AIRLIGHT_SHAPE_DISC) {
         return AirlightResult(0f, 1u);
     }
-    let _e12 = airlight_outer(s_56);
+    let _e12 = airlight_outer(s_57);
     if (_e12.outcome == 1u) {
         return AirlightResult(0f, 0u);
     }
@@ -8906,15 +8927,15 @@ fn airlight_in_scatter(s_56: AirlightScene) -> AirlightResult {
                     }
                     let _e85 = local_211;
                     let w_11 = select((c_27 + (hw_10 * node_5.x)), (c_27 - (hw_10 * node_5.x)), _e85);
-                    let _e87 = airlight_outer_node(s_56, _e12, w_11);
+                    let _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
                         let _e93 = airlight_node_integral(_e87);
                         if (_e93.status == AIRLIGHT_STATUS_INFINITE) {
                             return _e93;
                         }
-                        if (s_56.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_212 = (s_56.surface_kind == AIRLIGHT_SURFACE_NONE);
+                        if (s_57.light_shape == AIRLIGHT_SHAPE_POINT) {
+                            local_212 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
                             local_212 = false;
                         }

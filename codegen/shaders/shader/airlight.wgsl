@@ -2675,6 +2675,21 @@ fn airlight_area_phase(s: AirlightScene, mu: f32) -> f32 {
     return airlight_phase_mu(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, mu);
 }
 
+/// P(sign·cos θ) at the angle θ from a lobe's direction sign·d, given (cos θ, sin θ), with
+/// 1 ∓ cos θ to their relative precision as sin²θ/(1 ± cos θ) (outer.rs `Light::phase_about`).
+fn airlight_area_phase_about(s: AirlightScene, sign: f32, cs: vec2<f32>) -> f32 {
+    let ss = cs.y * cs.y;
+    var near = ss / (1.0 + cs.x);
+    var far = 1.0 + cs.x;
+    if (cs.x < 0.0) {
+        near = 1.0 - cs.x;
+        far = ss / (1.0 - cs.x);
+    }
+    let om = select(far, near, sign > 0.0);
+    let op = select(near, far, sign > 0.0);
+    return airlight_phase(s.phase_kind, s.phase_param_a, s.phase_param_b, s.phase_param_c, sign * cs.x, om, op);
+}
+
 /// L_e c^{p−1} (outer.rs `emitted`): the power p in `light_param_b`, c^{p−1} by repeated squaring
 /// in the order of Rust's `powi` (compiler-rt `__powisf2`), written out: no loop iterations.
 fn airlight_emitted(s: AirlightScene, c: f32) -> f32 {
@@ -3244,7 +3259,7 @@ fn airlight_flat_lobe_node(s: AirlightScene, z: f32, lobe: AirlightFlatLobe, k: 
     let at = airlight_graded_from_node(start, graded, g);
     let c = -lobe.p.z * (at.x - k * at.y);
     if (!(c > 0.0)) { return 0.0; }
-    return airlight_emitted(s, c) * exp(min(-s.sigma_t * z / c, 0.0)) * airlight_area_phase(s, lobe.sign * at.x) * at.y * at.z;
+    return airlight_emitted(s, c) * exp(min(-s.sigma_t * z / c, 0.0)) * airlight_area_phase_about(s, lobe.sign, at.xy) * at.y * at.z;
 }
 
 /// The θ integral of `airlight_flat_about_lobe` in the half-plane of azimuth ψ (`cs` = (cos ψ,
@@ -3569,7 +3584,7 @@ fn airlight_sphere_lobe_node(s: AirlightScene, cap: AirlightCap, sign: f32, cos_
     let toward_a = at.x * cos_p + at.y * big_b;
     let root = sqrt(max(cap.radius * cap.radius - cap.dc * cap.dc * (1.0 - toward_a) * (1.0 + toward_a), 0.0));
     let dist = max(cap.dc * toward_a - root, 0.0);
-    return airlight_emitted(s, root / cap.radius) * exp(min(-s.sigma_t * dist, 0.0)) * airlight_area_phase(s, sign * at.x) * at.y * at.z;
+    return airlight_emitted(s, root / cap.radius) * exp(min(-s.sigma_t * dist, 0.0)) * airlight_area_phase_about(s, sign, at.xy) * at.y * at.z;
 }
 
 /// S(x) of a sphere whose cap holds (or nearly) the direction p = sign·d of a phase lobe of

@@ -315,6 +315,19 @@ impl<T: Real, P: PhaseFunction<T>> Light<'_, T, P> {
         self.constant_phase.unwrap_or_else(|| self.phase.eval(mu))
     }
 
+    /// `P(sign·cos θ)` at the angle `θ` from a lobe's direction `sign·d`, given `sin θ` and
+    /// `cos θ`, with `1 ∓ cos θ` to their relative precision as `sin²θ/(1 ± cos θ)`
+    /// ([`PhaseFunction::eval_sides`]): formed from the rounded cosine, `1 − cos θ` loses
+    /// `ε/(1 − cos θ)` of itself, which a lobe's peak amplifies.
+    #[inline]
+    fn phase_about(&self, sign: T, (st, ct): (T, T)) -> T {
+        self.constant_phase.unwrap_or_else(|| {
+            let (near, far) = if ct >= T::zero() { (st * st / (T::one() + ct), T::one() + ct) } else { (T::one() - ct, st * st / (T::one() - ct)) };
+            let (om, op) = if sign > T::zero() { (near, far) } else { (far, near) };
+            self.phase.eval_sides(sign * ct, om, op)
+        })
+    }
+
     /// `L_e c^{p−1}`.
     #[inline]
     fn emitted(&self, c: T) -> T {
@@ -633,7 +646,7 @@ fn flat_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, z: T, 
         graded_from(scale, ra.atan2(l + k * ra), rb.atan2(l + k * rb), |st, ct, w| {
             let c = pn * (ct - k * st);
             if c > T::zero() {
-                sum = sum + w * light.emitted(c) * exp_nonpositive(-light.sigma_t * z / c) * light.phase(sign * ct) * st;
+                sum = sum + w * light.emitted(c) * exp_nonpositive(-light.sigma_t * z / c) * light.phase_about(sign, (st, ct)) * st;
             }
         });
         sum
@@ -871,7 +884,7 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
             let toward_a = ct * cos_p + st * big_b;
             let root = (radius * radius - dc * dc * (T::one() - toward_a) * (T::one() + toward_a)).max(T::zero()).sqrt();
             let dist = (dc * toward_a - root).max(T::zero());
-            around = around + w * light.emitted(root / radius) * exp_nonpositive(-light.sigma_t * dist) * light.phase(sign * ct) * st;
+            around = around + w * light.emitted(root / radius) * exp_nonpositive(-light.sigma_t * dist) * light.phase_about(sign, (st, ct)) * st;
         };
         // a range longer than LOBE_REACH of its grading scales: the lobe's tail past LOBE_TAIL
         // graded from there by its own distance
