@@ -111,6 +111,12 @@ struct airlight_type_11 {
 struct airlight_type_12 {
     float inner[4];
 };
+struct AirlightSphereFoot {
+    metal::packed_float3 to_centre;
+    float h;
+    float miss;
+    char _pad3[12];
+};
 struct airlight_type_13 {
     metal::float3 inner[4];
 };
@@ -244,6 +250,7 @@ struct AirlightArea {
     metal::float4 lobes;
     bool isotropic;
     char _pad16[15];
+    AirlightSphereFoot foot;
 };
 struct AirlightOutline {
     airlight_type_8 corners;
@@ -610,9 +617,9 @@ metal::float2 airlight_cos_sin(
     float x
 ) {
     float z_16 = x * x;
-    float c_8 = 1.0 + (z_16 * (-0.5 + (z_16 * (0.041666668 + (z_16 * (-0.0013888889 + (z_16 * (0.000024801588 + (z_16 * (-0.0000002755732 + (z_16 * (0.0000000020876756 + (z_16 * (-0.000000000011470745 + (z_16 * 0.000000000000047794773)))))))))))))));
+    float c_9 = 1.0 + (z_16 * (-0.5 + (z_16 * (0.041666668 + (z_16 * (-0.0013888889 + (z_16 * (0.000024801588 + (z_16 * (-0.0000002755732 + (z_16 * (0.0000000020876756 + (z_16 * (-0.000000000011470745 + (z_16 * 0.000000000000047794773)))))))))))))));
     float s_58 = 1.0 + (z_16 * (-0.16666667 + (z_16 * (0.008333334 + (z_16 * (-0.0001984127 + (z_16 * (0.0000027557319 + (z_16 * (-0.000000025052108 + (z_16 * (0.00000000016059044 + (z_16 * (-0.00000000000076471636 + (z_16 * 0.0000000000000028114574)))))))))))))));
-    return metal::float2(c_8, s_58 * x);
+    return metal::float2(c_9, s_58 * x);
 }
 
 metal::float2 airlight_cexp(
@@ -764,9 +771,9 @@ metal::float2 airlight_ein_divided_difference(
 bool airlight_in_series_region(
     metal::float2 z_5
 ) {
-    float x_30 = z_5.x * AIRLIGHT_E1_INV_RE;
+    float x_29 = z_5.x * AIRLIGHT_E1_INV_RE;
     float y_7 = z_5.y * AIRLIGHT_E1_INV_IM;
-    return ((x_30 * x_30) + (y_7 * y_7)) < 1.0;
+    return ((x_29 * x_29) + (y_7 * y_7)) < 1.0;
 }
 
 uint airlight_cf_depth_squared(
@@ -845,8 +852,8 @@ metal::float2 airlight_e1_scaled_cf(
     float _e13 = r2_1;
     uint _e14 = airlight_cf_depth_squared(_e13);
     float nf = static_cast<float>(_e14);
-    metal::float2 b_16 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
-    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_16);
+    metal::float2 b_18 = z_6 + metal::float2((2.0 * nf) + 1.0, 0.0);
+    metal::float2 _e29 = airlight_cdiv(metal::float2(2.0 * (nf + 1.0), 0.0), b_18);
     metal::float2 _e33 = airlight_cmul(_e29, _e29);
     metal::float2 _e35 = airlight_csqrt(metal::float2(1.0, 0.0) - _e33);
     root = _e35;
@@ -856,7 +863,7 @@ metal::float2 airlight_e1_scaled_cf(
         root = -(_e41);
     }
     metal::float2 _e46 = root;
-    metal::float2 _e48 = airlight_cmul(b_16, metal::float2(1.0, 0.0) + _e46);
+    metal::float2 _e48 = airlight_cmul(b_18, metal::float2(1.0, 0.0) + _e46);
     t_1 = _e48 * 0.5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -934,12 +941,12 @@ float airlight_en_scaled_cf(
     uint _e2 = airlight_en_cf_depth(x_4);
     float nf_1 = static_cast<float>(n);
     float m_7 = static_cast<float>(_e2);
-    float b_17 = (x_4 + nf_1) + (2.0 * (m_7 + 1.0));
-    float a_33 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
-    float disc = 1.0 - ((4.0 * a_33) / (b_17 * b_17));
-    t_2 = b_17;
+    float b_19 = (x_4 + nf_1) + (2.0 * (m_7 + 1.0));
+    float a_35 = (m_7 + 2.0) * ((nf_1 + m_7) + 1.0);
+    float disc = 1.0 - ((4.0 * a_35) / (b_19 * b_19));
+    t_2 = b_19;
     if (disc > 0.0) {
-        t_2 = (b_17 * (1.0 + metal::sqrt(disc))) * 0.5;
+        t_2 = (b_19 * (1.0 + metal::sqrt(disc))) * 0.5;
     }
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1091,11 +1098,11 @@ float airlight_hg_base(
     float op
 ) {
     if (g_2 >= 0.0) {
-        float a_34 = 1.0 - g_2;
-        return (om * (g_2 + g_2)) + (a_34 * a_34);
+        float a_36 = 1.0 - g_2;
+        return (om * (g_2 + g_2)) + (a_36 * a_36);
     }
-    float b_18 = 1.0 + g_2;
-    return (op * -((g_2 + g_2))) + (b_18 * b_18);
+    float b_20 = 1.0 + g_2;
+    return (op * -((g_2 + g_2))) + (b_20 * b_20);
 }
 
 float airlight_hg(
@@ -1215,8 +1222,8 @@ float airlight_light(
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return (c >= (p1_2 + (width_2 * 0.5))) ? 1.0 : 0.0;
             }
-            float x_31 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
-            return (x_31 * x_31) * (3.0 - (2.0 * x_31));
+            float x_30 = metal::clamp((c - p1_2) / width_2, 0.0, 1.0);
+            return (x_30 * x_30) * (3.0 - (2.0 * x_30));
         }
         default: {
             return 1.0;
@@ -1241,11 +1248,11 @@ float airlight_singular_height(
 float airlight_hg_gap(
     float g_4
 ) {
-    float a_35 = metal::abs(g_4);
-    if (!((a_35 > 0.0))) {
+    float a_37 = metal::abs(g_4);
+    if (!((a_37 > 0.0))) {
         return AIRLIGHT_FLT_MAX;
     }
-    return ((1.0 - a_35) * (1.0 - a_35)) / (a_35 + a_35);
+    return ((1.0 - a_37) * (1.0 - a_37)) / (a_37 + a_37);
 }
 
 metal::float3 airlight_singular_heights(
@@ -1263,8 +1270,8 @@ metal::float3 airlight_singular_heights(
             break;
         }
         case 3u: {
-            float a_36 = metal::abs(p0_3);
-            float _e19 = airlight_singular_height(p0_3, (a_36 > 0.0) ? ((1.0 - a_36) / a_36) : AIRLIGHT_FLT_MAX, sigma_1);
+            float a_38 = metal::abs(p0_3);
+            float _e19 = airlight_singular_height(p0_3, (a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX, sigma_1);
             h_1.y = _e19;
             break;
         }
@@ -1351,7 +1358,7 @@ metal::float2 airlight_integrand_over(
     float inv_2 = 1.0 / (1.0 + y2_);
     float om_3 = 1.0 - y2_;
     float mu_3 = -(sigma_2) * (om_3 * inv_2);
-    float c_9 = (((sigma_2 * g_5.d_el) * om_3) + ((2.0 * g_5.d_c) * y_1)) * inv_2;
+    float c_10 = (((sigma_2 * g_5.d_el) * om_3) + ((2.0 * g_5.d_c) * y_1)) * inv_2;
     float far_1 = (y2_ * inv_2) * 2.0;
     float near_1 = inv_2 * 2.0;
     minus = near_1;
@@ -1360,7 +1367,7 @@ metal::float2 airlight_integrand_over(
         minus = far_1;
         plus = near_1;
     }
-    float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
+    float _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_10);
     float _e40 = minus;
     float _e41 = plus;
     float _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_3, _e40, _e41);
@@ -1515,10 +1522,10 @@ float airlight_q_zero(
             float _e33 = airlight_atan(half_2.dv / (1.0 + (v_s_1 * _e28)));
             d_im = _e33;
             float _e35 = v_e_1;
-            float x_32 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
-            bool _e42 = airlight_is_finite(x_32);
+            float x_31 = (half_2.dv * (v_s_1 + _e35)) / (1.0 + (v_s_1 * v_s_1));
+            bool _e42 = airlight_is_finite(x_31);
             if (_e42) {
-                float _e43 = airlight_log1p(x_32);
+                float _e43 = airlight_log1p(x_31);
                 d_re = 0.5 * _e43;
             } else {
                 float _e48 = v_e_1;
@@ -1667,8 +1674,8 @@ float airlight_node(
     airlight_type_8 rule,
     uint i_3
 ) {
-    float x_33 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
-    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_33) : x_33;
+    float x_32 = rule.inner[metal::min(unsigned(airlight_naga_div(i_3, 2u)), 3u)].x;
+    return (airlight_naga_mod(i_3, 2u) == 0u) ? -(x_32) : x_32;
 }
 
 airlight_type_2 airlight_legendre(
@@ -1749,8 +1756,8 @@ airlight_type_2 airlight_exp_legendre_moments(
         if (lambda < static_cast<float>(2u * AIRLIGHT_TERMS)) {
             float inv_3 = 1.0 / lambda;
             uint k0_ = metal::max(AIRLIGHT_TERMS, airlight_naga_f2u32(lambda) + 1u);
-            float x_34 = lambda / static_cast<float>(2u * k0_);
-            float per_step = x_34 * x_34;
+            float x_33 = lambda / static_cast<float>(2u * k0_);
+            float per_step = x_33 * x_33;
             share = per_step;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -2179,8 +2186,8 @@ float airlight_bernstein_rho(
     float im
 ) {
     float im2_ = im * im;
-    float a_37 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
-    return a_37 + metal::sqrt(metal::max((a_37 * a_37) - 1.0, 0.0));
+    float a_39 = (metal::sqrt(((re - 1.0) * (re - 1.0)) + im2_) + metal::sqrt(((re + 1.0) * (re + 1.0)) + im2_)) * 0.5;
+    return a_39 + metal::sqrt(metal::max((a_39 * a_39) - 1.0, 0.0));
 }
 
 float airlight_transform_noise(
@@ -2201,8 +2208,8 @@ float airlight_factor(
         offset = (half_5.y_hi - b_3) / (b_3 * half_5.y_hi);
     }
     float _e13 = offset;
-    float x_35 = half_5.big_h * _e13;
-    return (x_35 > 0.0) ? metal::exp(-(x_35)) : 1.0;
+    float x_34 = half_5.big_h * _e13;
+    return (x_34 > 0.0) ? metal::exp(-(x_34)) : 1.0;
 }
 
 AirlightPanel airlight_panel_result(
@@ -2713,13 +2720,13 @@ AirlightPanel airlight_tail_panel(
     float _e528 = airlight_factor(half_8, a_7, b_6);
     float _e529 = mass_2;
     mass_2 = _e529 * _e528;
-    float x_36 = metal::abs(alpha) + metal::abs(beta_1);
+    float x_35 = metal::abs(alpha) + metal::abs(beta_1);
     float _e542 = spread;
     float _e543 = l_cur;
     spread = _e542 + (_e543 * metal::abs(_e54.inner[0]));
     float _e550 = l_cur;
     float _e552 = l_prev;
-    next = (((1.0 * x_36) * _e550) + (0.0 * _e552)) / 1.0;
+    next = (((1.0 * x_35) * _e550) + (0.0 * _e552)) / 1.0;
     float _e558 = l_cur;
     l_prev = _e558;
     float _e559 = next;
@@ -2729,7 +2736,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e560 + (_e561 * metal::abs(_e54.inner[1]));
     float _e568 = l_cur;
     float _e570 = l_prev;
-    next = (((3.0 * x_36) * _e568) + (1.0 * _e570)) / 2.0;
+    next = (((3.0 * x_35) * _e568) + (1.0 * _e570)) / 2.0;
     float _e576 = l_cur;
     l_prev = _e576;
     float _e577 = next;
@@ -2739,7 +2746,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e578 + (_e579 * metal::abs(_e54.inner[2]));
     float _e586 = l_cur;
     float _e588 = l_prev;
-    next = (((5.0 * x_36) * _e586) + (2.0 * _e588)) / 3.0;
+    next = (((5.0 * x_35) * _e586) + (2.0 * _e588)) / 3.0;
     float _e594 = l_cur;
     l_prev = _e594;
     float _e595 = next;
@@ -2749,7 +2756,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e596 + (_e597 * metal::abs(_e54.inner[3]));
     float _e604 = l_cur;
     float _e606 = l_prev;
-    next = (((7.0 * x_36) * _e604) + (3.0 * _e606)) / 4.0;
+    next = (((7.0 * x_35) * _e604) + (3.0 * _e606)) / 4.0;
     float _e612 = l_cur;
     l_prev = _e612;
     float _e613 = next;
@@ -2759,7 +2766,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e614 + (_e615 * metal::abs(_e54.inner[4]));
     float _e622 = l_cur;
     float _e624 = l_prev;
-    next = (((9.0 * x_36) * _e622) + (4.0 * _e624)) / 5.0;
+    next = (((9.0 * x_35) * _e622) + (4.0 * _e624)) / 5.0;
     float _e630 = l_cur;
     l_prev = _e630;
     float _e631 = next;
@@ -2769,7 +2776,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e632 + (_e633 * metal::abs(_e54.inner[5]));
     float _e640 = l_cur;
     float _e642 = l_prev;
-    next = (((11.0 * x_36) * _e640) + (5.0 * _e642)) / 6.0;
+    next = (((11.0 * x_35) * _e640) + (5.0 * _e642)) / 6.0;
     float _e648 = l_cur;
     l_prev = _e648;
     float _e649 = next;
@@ -2779,7 +2786,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e650 + (_e651 * metal::abs(_e54.inner[6]));
     float _e658 = l_cur;
     float _e660 = l_prev;
-    next = (((13.0 * x_36) * _e658) + (6.0 * _e660)) / 7.0;
+    next = (((13.0 * x_35) * _e658) + (6.0 * _e660)) / 7.0;
     float _e666 = l_cur;
     l_prev = _e666;
     float _e667 = next;
@@ -2789,7 +2796,7 @@ AirlightPanel airlight_tail_panel(
     spread = _e668 + (_e669 * metal::abs(_e54.inner[7]));
     float _e676 = l_cur;
     float _e678 = l_prev;
-    next = (((15.0 * x_36) * _e676) + (7.0 * _e678)) / 8.0;
+    next = (((15.0 * x_35) * _e676) + (7.0 * _e678)) / 8.0;
     float _e684 = l_cur;
     l_prev = _e684;
     float _e685 = next;
@@ -3326,9 +3333,9 @@ metal::float2 airlight_angle_route(
             break;
         }
         case 3u: {
-            float a_38 = metal::abs(p0_4);
+            float a_40 = metal::abs(p0_4);
             float _e145 = psi1_1;
-            float _e146 = airlight_angle_floor(p0_4, (a_38 > 0.0) ? ((1.0 - a_38) / a_38) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
+            float _e146 = airlight_angle_floor(p0_4, (a_40 > 0.0) ? ((1.0 - a_40) / a_40) : AIRLIGHT_FLT_MAX, _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
             break;
         }
@@ -3487,23 +3494,23 @@ metal::float2 airlight_crossings(
     if (_e24) {
         return metal::float2(-1.0, -1.0);
     }
-    float a_39 = a0_ / scale_4;
-    float b_19 = b0_ / scale_4;
-    float c_10 = c0_ / scale_4;
-    float disc_1 = (b_19 * b_19) - ((4.0 * a_39) * c_10);
+    float a_41 = a0_ / scale_4;
+    float b_21 = b0_ / scale_4;
+    float c_11 = c0_ / scale_4;
+    float disc_1 = (b_21 * b_21) - ((4.0 * a_41) * c_11);
     if (!((disc_1 >= 0.0))) {
         return metal::float2(-1.0, -1.0);
     }
-    if (b_19 < 0.0) {
+    if (b_21 < 0.0) {
         sb = -1.0;
     }
     float _e47 = sb;
-    float q_11 = -0.5 * (b_19 + (_e47 * metal::sqrt(disc_1)));
+    float q_11 = -0.5 * (b_21 + (_e47 * metal::sqrt(disc_1)));
     if (q_11 != 0.0) {
-        r1_ = c_10 / q_11;
+        r1_ = c_11 / q_11;
     }
-    if (a_39 != 0.0) {
-        r2_2 = q_11 / a_39;
+    if (a_41 != 0.0) {
+        r2_2 = q_11 / a_41;
     }
     float _e63 = r1_;
     float _e64 = r2_2;
@@ -3558,15 +3565,15 @@ bool airlight_dark(
     if (_e31) {
         return false;
     }
-    float a_40 = sigma_11 * g_15.d_el;
+    float a_42 = sigma_11 * g_15.d_el;
     float d_3 = g_15.d_c;
     if (d_3 == 0.0) {
         return true;
     }
-    float root_1 = metal::sqrt((a_40 * a_40) + (d_3 * d_3));
-    y1_1 = (root_1 - a_40) / d_3;
-    if (a_40 > 0.0) {
-        y1_1 = d_3 / (a_40 + root_1);
+    float root_1 = metal::sqrt((a_42 * a_42) + (d_3 * d_3));
+    y1_1 = (root_1 - a_42) / d_3;
+    if (a_42 > 0.0) {
+        y1_1 = d_3 / (a_42 + root_1);
     }
     float _e50 = y1_1;
     float y2_2 = -1.0 / _e50;
@@ -4961,6 +4968,42 @@ float airlight_diff_of_products(
     return _e10 + _e14;
 }
 
+metal::float2 airlight_pair_add(
+    metal::float2 a_16,
+    metal::float2 b_13,
+    uint key_4
+) {
+    metal::float2 _e5 = airlight_two_sum(a_16.x, b_13.x, key_4);
+    metal::float2 _e12 = airlight_two_sum(_e5.x, _e5.y + (a_16.y + b_13.y), key_4);
+    return _e12;
+}
+
+metal::float2 airlight_pair_mul(
+    metal::float2 a_17,
+    metal::float2 b_14,
+    uint key_5
+) {
+    metal::float2 _e5 = airlight_two_product(a_17.x, b_14.x, key_5);
+    metal::float2 _e16 = airlight_two_sum(_e5.x, _e5.y + ((a_17.x * b_14.y) + (a_17.y * b_14.x)), key_5);
+    return _e16;
+}
+
+metal::float2 airlight_cross_pair(
+    float hi_i,
+    float hi_j,
+    float lo_i,
+    float lo_j,
+    float dir_i,
+    float dir_j,
+    uint key_6
+) {
+    metal::float2 _e7 = airlight_two_product(hi_i, dir_j, key_6);
+    metal::float2 _e8 = airlight_two_product(hi_j, dir_i, key_6);
+    metal::float2 _e12 = airlight_two_sum(_e7.x, -(_e8.x), key_6);
+    metal::float2 _e23 = airlight_two_sum(_e12.x, (_e12.y + (_e7.y - _e8.y)) + ((lo_i * dir_j) - (lo_j * dir_i)), key_6);
+    return _e23;
+}
+
 bool airlight_in_exact_range(
     metal::float3 v_4
 ) {
@@ -4989,17 +5032,17 @@ AirlightCanonical airlight_refined(
     bool local_128 = {};
     AirlightCanonical out_2 = {};
     bool local_129 = {};
-    metal::float3 a_16 = metal::float3(0.0, 0.0, 1.0);
-    uint key_4 = static_cast<uint>(s_21.flags > 1u);
-    metal::float2 _e11 = airlight_two_sum(s_21.light_position[0], -(s_21.origin[0]), key_4);
-    metal::float2 _e17 = airlight_two_sum(s_21.light_position[1], -(s_21.origin[1]), key_4);
-    metal::float2 _e23 = airlight_two_sum(s_21.light_position[2], -(s_21.origin[2]), key_4);
+    metal::float3 a_18 = metal::float3(0.0, 0.0, 1.0);
+    uint key_8 = static_cast<uint>(s_21.flags > 1u);
+    metal::float2 _e11 = airlight_two_sum(s_21.light_position[0], -(s_21.origin[0]), key_8);
+    metal::float2 _e17 = airlight_two_sum(s_21.light_position[1], -(s_21.origin[1]), key_8);
+    metal::float2 _e23 = airlight_two_sum(s_21.light_position[2], -(s_21.origin[2]), key_8);
     metal::float3 hi_7 = metal::float3(_e11.x, _e17.x, _e23.x);
     metal::float3 lo_8 = metal::float3(_e11.y, _e17.y, _e23.y);
-    metal::float3 dir_2 = s_21.dir;
+    metal::float3 dir_3 = s_21.dir;
     bool _e33 = airlight_in_exact_range(hi_7);
     if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir_2);
+        bool _e38 = airlight_in_exact_range(dir_3);
         local_128 = !(_e38);
     } else {
         local_128 = true;
@@ -5008,9 +5051,9 @@ AirlightCanonical airlight_refined(
     if (_e41) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_7.y, s_21.dir[2], hi_7.z, s_21.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_7.z, s_21.dir[0], hi_7.x, s_21.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_7.x, s_21.dir[1], hi_7.y, s_21.dir[0], key_4);
+    float _e46 = airlight_diff_of_products(hi_7.y, s_21.dir[2], hi_7.z, s_21.dir[1], key_8);
+    float _e59 = airlight_diff_of_products(hi_7.z, s_21.dir[0], hi_7.x, s_21.dir[2], key_8);
+    float _e72 = airlight_diff_of_products(hi_7.x, s_21.dir[1], hi_7.y, s_21.dir[0], key_8);
     metal::float3 w_6 = metal::float3(_e46 + ((lo_8.y * s_21.dir[2]) - (lo_8.z * s_21.dir[1])), _e59 + ((lo_8.z * s_21.dir[0]) - (lo_8.x * s_21.dir[2])), _e72 + ((lo_8.x * s_21.dir[1]) - (lo_8.y * s_21.dir[0])));
     bool _e82 = airlight_vec_finite(w_6);
     if (!(_e82)) {
@@ -5024,7 +5067,7 @@ AirlightCanonical airlight_refined(
         AirlightCanonical _e92 = out_2;
         return _e92;
     }
-    float _e93 = airlight_safe_length(dir_2);
+    float _e93 = airlight_safe_length(dir_3);
     float h_7 = _e85 / _e93;
     bool _e95 = airlight_is_finite(h_7);
     if (_e95) {
@@ -5038,16 +5081,92 @@ AirlightCanonical airlight_refined(
     }
     if (s_21.light_kind != AIRLIGHT_LIGHT_OMNI) {
         metal::float3 _e112 = airlight_normalize(s_21.light_axis);
-        a_16 = _e112;
+        a_18 = _e112;
     }
-    metal::float3 _e113 = airlight_normalize(dir_2);
+    metal::float3 _e113 = airlight_normalize(dir_3);
     metal::float3 _e114 = airlight_normalize(w_6);
     metal::float3 n_6 = -(metal::cross(_e113, _e114));
     out_2.h = h_7;
-    metal::float3 _e119 = a_16;
+    metal::float3 _e119 = a_18;
     out_2.d_c = metal::dot(n_6, _e119);
     AirlightCanonical _e121 = out_2;
     return _e121;
+}
+
+AirlightSphereFoot airlight_sphere_foot(
+    metal::float3 o,
+    metal::float3 dir_2,
+    metal::float3 c_6,
+    float radius_2,
+    uint key_7
+) {
+    bool local_130 = {};
+    bool local_131 = {};
+    bool local_132 = {};
+    metal::float3 _e5 = airlight_normalize(dir_2);
+    metal::float3 oc = o - c_6;
+    metal::float3 to_centre = -((oc - (metal::dot(oc, _e5) * _e5)));
+    float _e11 = airlight_safe_length(to_centre);
+    AirlightSphereFoot plain_2 = AirlightSphereFoot {to_centre, _e11, _e11 - radius_2};
+    metal::float2 _e17 = airlight_two_sum(c_6.x, -(o.x), key_7);
+    metal::float2 _e21 = airlight_two_sum(c_6.y, -(o.y), key_7);
+    metal::float2 _e25 = airlight_two_sum(c_6.z, -(o.z), key_7);
+    metal::float3 hi_8 = metal::float3(_e17.x, _e21.x, _e25.x);
+    metal::float3 lo_9 = metal::float3(_e17.y, _e21.y, _e25.y);
+    bool _e34 = airlight_in_exact_range(hi_8);
+    if (!(!(_e34))) {
+        bool _e39 = airlight_in_exact_range(dir_2);
+        local_130 = !(_e39);
+    } else {
+        local_130 = true;
+    }
+    bool _e42 = local_130;
+    if (_e42) {
+        return plain_2;
+    }
+    metal::float2 _e49 = airlight_cross_pair(hi_8.y, hi_8.z, lo_9.y, lo_9.z, dir_2.y, dir_2.z, key_7);
+    metal::float2 _e56 = airlight_cross_pair(hi_8.z, hi_8.x, lo_9.z, lo_9.x, dir_2.z, dir_2.x, key_7);
+    metal::float2 _e63 = airlight_cross_pair(hi_8.x, hi_8.y, lo_9.x, lo_9.y, dir_2.x, dir_2.y, key_7);
+    metal::float2 _e64 = airlight_pair_mul(_e49, _e49, key_7);
+    metal::float2 _e65 = airlight_pair_mul(_e56, _e56, key_7);
+    metal::float2 _e66 = airlight_pair_add(_e64, _e65, key_7);
+    metal::float2 _e67 = airlight_pair_mul(_e63, _e63, key_7);
+    metal::float2 _e68 = airlight_pair_add(_e66, _e67, key_7);
+    metal::float2 dx = metal::float2(dir_2.x, 0.0);
+    metal::float2 dy_2 = metal::float2(dir_2.y, 0.0);
+    metal::float2 dz = metal::float2(dir_2.z, 0.0);
+    metal::float2 _e78 = airlight_pair_mul(dx, dx, key_7);
+    metal::float2 _e79 = airlight_pair_mul(dy_2, dy_2, key_7);
+    metal::float2 _e80 = airlight_pair_add(_e78, _e79, key_7);
+    metal::float2 _e81 = airlight_pair_mul(dz, dz, key_7);
+    metal::float2 _e82 = airlight_pair_add(_e80, _e81, key_7);
+    float w_len = metal::sqrt(_e68.x);
+    float scale_5 = metal::sqrt(_e82.x);
+    float h_8 = w_len / scale_5;
+    metal::float2 _e88 = airlight_two_product(radius_2, radius_2, key_7);
+    metal::float2 _e89 = airlight_pair_mul(_e88, _e82, key_7);
+    metal::float2 _e91 = airlight_pair_add(_e68, -(_e89), key_7);
+    float miss = _e91.x / ((w_len + (radius_2 * scale_5)) * scale_5);
+    if (h_8 > 0.0) {
+        bool _e101 = airlight_is_finite(h_8);
+        local_131 = _e101;
+    } else {
+        local_131 = false;
+    }
+    bool _e103 = local_131;
+    if (_e103) {
+        bool _e106 = airlight_is_finite(miss);
+        local_132 = _e106;
+    } else {
+        local_132 = false;
+    }
+    bool _e108 = local_132;
+    if (!(_e108)) {
+        return plain_2;
+    }
+    metal::float3 _e114 = airlight_normalize(metal::float3(_e49.x, _e56.x, _e63.x));
+    metal::float3 m_11 = metal::cross(_e5, _e114);
+    return AirlightSphereFoot {h_8 * m_11, h_8, miss};
 }
 
 airlight_type_13 airlight_kronrod_rule(
@@ -5382,47 +5501,47 @@ AirlightEdges airlight_edges_between(
     AirlightEdges e_1 = {};
     uint n_1 = 0u;
     uint i_18 = 0u;
-    bool local_130 = {};
+    bool local_133 = {};
     cuts_1 = unsorted;
     float _e5 = cuts_1.inner[1];
     float _e7 = cuts_1.inner[0];
     if (_e5 < _e7) {
-        float c_11 = cuts_1.inner[0];
+        float c_12 = cuts_1.inner[0];
         float _e13 = cuts_1.inner[1];
         cuts_1.inner[0] = _e13;
-        cuts_1.inner[1] = c_11;
+        cuts_1.inner[1] = c_12;
     }
     float _e16 = cuts_1.inner[3];
     float _e18 = cuts_1.inner[2];
     if (_e16 < _e18) {
-        float c_12 = cuts_1.inner[2];
+        float c_13 = cuts_1.inner[2];
         float _e24 = cuts_1.inner[3];
         cuts_1.inner[2] = _e24;
-        cuts_1.inner[3] = c_12;
+        cuts_1.inner[3] = c_13;
     }
     float _e27 = cuts_1.inner[2];
     float _e29 = cuts_1.inner[0];
     if (_e27 < _e29) {
-        float c_13 = cuts_1.inner[0];
+        float c_14 = cuts_1.inner[0];
         float _e35 = cuts_1.inner[2];
         cuts_1.inner[0] = _e35;
-        cuts_1.inner[2] = c_13;
+        cuts_1.inner[2] = c_14;
     }
     float _e38 = cuts_1.inner[3];
     float _e40 = cuts_1.inner[1];
     if (_e38 < _e40) {
-        float c_14 = cuts_1.inner[1];
+        float c_15 = cuts_1.inner[1];
         float _e46 = cuts_1.inner[3];
         cuts_1.inner[1] = _e46;
-        cuts_1.inner[3] = c_14;
+        cuts_1.inner[3] = c_15;
     }
     float _e49 = cuts_1.inner[2];
     float _e51 = cuts_1.inner[1];
     if (_e49 < _e51) {
-        float c_15 = cuts_1.inner[1];
+        float c_16 = cuts_1.inner[1];
         float _e57 = cuts_1.inner[2];
         cuts_1.inner[1] = _e57;
-        cuts_1.inner[2] = c_15;
+        cuts_1.inner[2] = c_16;
     }
     e_1 = AirlightEdges {airlight_type_3 {{lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3}}, 0u};
     uint2 loop_bound_22 = uint2(4294967295u);
@@ -5448,11 +5567,11 @@ AirlightEdges airlight_edges_between(
             if (_e72 > _e76) {
                 uint _e80 = i_18;
                 float _e82 = cuts_1.inner[metal::min(unsigned(_e80), 3u)];
-                local_130 = _e82 < hi_3;
+                local_133 = _e82 < hi_3;
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            bool _e85 = local_130;
+            bool _e85 = local_133;
             if (_e85) {
                 uint _e86 = n_1;
                 n_1 = _e86 + 1u;
@@ -5478,9 +5597,9 @@ AirlightSplit airlight_split_worst(
     float tolerance
 ) {
     uint tries = 0u;
-    bool local_131 = {};
-    bool local_132 = {};
-    bool local_133 = {};
+    bool local_134 = {};
+    bool local_135 = {};
+    bool local_136 = {};
     uint2 loop_bound_23 = uint2(4294967295u);
     bool loop_init_23 = true;
     while(true) {
@@ -5500,18 +5619,18 @@ AirlightSplit airlight_split_worst(
             AirlightPanelList _e8 = list_1;
             AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * metal::abs(_e9.total)))))) {
-                local_131 = count_2 == max_panels;
+                local_134 = count_2 == max_panels;
             } else {
-                local_131 = true;
+                local_134 = true;
             }
-            bool _e21 = local_131;
+            bool _e21 = local_134;
             if (!(_e21)) {
                 bool _e26 = airlight_is_finite(_e9.total);
-                local_132 = !(_e26);
+                local_135 = !(_e26);
             } else {
-                local_132 = true;
+                local_135 = true;
             }
-            bool _e29 = local_132;
+            bool _e29 = local_135;
             if (_e29) {
                 break;
             }
@@ -5519,11 +5638,11 @@ AirlightSplit airlight_split_worst(
             metal::float4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_2 = 0.5 * (_e32.x + _e32.y);
             if (mid_2 > _e32.x) {
-                local_133 = mid_2 < _e32.y;
+                local_136 = mid_2 < _e32.y;
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            bool _e45 = local_133;
+            bool _e45 = local_136;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, metal::float4(_e32.xyz, 0.0));
                 continue;
@@ -5600,10 +5719,10 @@ float airlight_asinh(
     float x_16
 ) {
     float r_4 = {};
-    float a_41 = metal::abs(x_16);
-    r_4 = AIRLIGHT_LN_2_ + metal::log(a_41);
-    if (a_41 <= 4096.0) {
-        float _e17 = airlight_log1p(a_41 + ((a_41 * a_41) / (1.0 + metal::sqrt(1.0 + (a_41 * a_41)))));
+    float a_43 = metal::abs(x_16);
+    r_4 = AIRLIGHT_LN_2_ + metal::log(a_43);
+    if (a_43 <= 4096.0) {
+        float _e17 = airlight_log1p(a_43 + ((a_43 * a_43) / (1.0 + metal::sqrt(1.0 + (a_43 * a_43)))));
         r_4 = _e17;
     }
     float _e18 = r_4;
@@ -5636,16 +5755,16 @@ metal::float2 airlight_cos_sin_half_turn(
 float airlight_acos(
     float x_18
 ) {
-    float a_42 = metal::abs(x_18);
-    float _e8 = airlight_atan(metal::sqrt((1.0 - a_42) / (1.0 + a_42)));
+    float a_44 = metal::abs(x_18);
+    float _e8 = airlight_atan(metal::sqrt((1.0 - a_44) / (1.0 + a_44)));
     return (x_18 < 0.0) ? ((AIRLIGHT_PI - _e8) - _e8) : (_e8 + _e8);
 }
 
 float airlight_angle(
-    float c_6,
+    float c_7,
     float s_23
 ) {
-    float _e2 = airlight_atan2_upper(s_23, c_6);
+    float _e2 = airlight_atan2_upper(s_23, c_7);
     return _e2;
 }
 
@@ -5655,12 +5774,12 @@ float airlight_half_arc(
     float cos_g,
     float sin_g
 ) {
-    float a_43 = cos_a * cos_g;
-    float b_20 = sin_a * sin_g;
-    if (b_20 <= metal::abs(a_43)) {
-        return (a_43 > 0.0) ? AIRLIGHT_PI : 0.0;
+    float a_45 = cos_a * cos_g;
+    float b_22 = sin_a * sin_g;
+    if (b_22 <= metal::abs(a_45)) {
+        return (a_45 > 0.0) ? AIRLIGHT_PI : 0.0;
     }
-    float _e18 = airlight_acos(metal::clamp(-(a_43) / b_20, -1.0, 1.0));
+    float _e18 = airlight_acos(metal::clamp(-(a_45) / b_22, -1.0, 1.0));
     return _e18;
 }
 
@@ -5676,32 +5795,32 @@ AirlightOuter airlight_surface(
     AirlightScene s_25
 ) {
     AirlightOuter g_22 = {};
-    bool local_134 = {};
+    bool local_137 = {};
     metal::float3 u_1 = {};
     airlight_type_15 cuts_2 = airlight_type_15 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
     uint i_19 = 1u;
     uint j_4 = {};
-    bool local_135 = {};
+    bool local_138 = {};
     uint k_5 = 0u;
     uint i_20 = 0u;
-    bool local_136 = {};
+    bool local_139 = {};
     uint i_21 = 0u;
     uint i_22 = 1u;
-    bool local_137 = {};
-    bool local_138 = {};
-    bool local_139 = {};
     bool local_140 = {};
     bool local_141 = {};
+    bool local_142 = {};
+    bool local_143 = {};
+    bool local_144 = {};
     AirlightOuter _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     metal::float3 to_light_1 = s_25.light_position - s_25.origin;
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_25.intensity == 0.0))) {
-        local_134 = s_25.sigma_s == 0.0;
+        local_137 = s_25.sigma_s == 0.0;
     } else {
-        local_134 = true;
+        local_137 = true;
     }
-    bool _e18 = local_134;
+    bool _e18 = local_137;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5747,22 +5866,22 @@ AirlightOuter airlight_surface(
         metal::float3 _e105 = airlight_normalize(s_25.brdf_view);
         metal::float3 _e111 = airlight_normalize(((2.0 * metal::dot(_e37, _e105)) * _e37) - _e105);
         metal::float3 _e112 = u_1;
-        float x_37 = metal::dot(_e111, _e112);
+        float x_36 = metal::dot(_e111, _e112);
         metal::float3 _e114 = u_1;
         float y_12 = metal::dot(_e111, metal::cross(l_3, _e114));
         g_22.cos_r = metal::dot(_e111, l_3);
-        g_22.sin_r = metal::sqrt((x_37 * x_37) + (y_12 * y_12));
+        g_22.sin_r = metal::sqrt((x_36 * x_36) + (y_12 * y_12));
         float _e126 = g_22.cos_r;
         float _e128 = g_22.sin_r;
         float _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         float _e131 = g_22.sin_r;
         if (_e131 > 0.0) {
-            float _e140 = airlight_angle(x_37, metal::abs(y_12));
+            float _e140 = airlight_angle(x_36, metal::abs(y_12));
             float phi_r = ((y_12 < 0.0) ? -1.0 : 1.0) * _e140;
             float _e145 = g_22.sin_r;
             float _e149 = g_22.sin_r;
-            g_22.delta = metal::float3(-(phi_r), x_37 / _e145, -(y_12) / _e149);
+            g_22.delta = metal::float3(-(phi_r), x_36 / _e145, -(y_12) / _e149);
         }
         float _e154 = g_22.alpha_r;
         float first_r = metal::abs(1.5707964 - _e154);
@@ -5813,7 +5932,7 @@ AirlightOuter airlight_surface(
         }
         {
             uint _e227 = i_19;
-            float c_16 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
+            float c_17 = cuts_2.inner[metal::min(unsigned(_e227), 10u)];
             uint _e230 = i_19;
             j_4 = _e230;
             uint2 loop_bound_25 = uint2(4294967295u);
@@ -5824,11 +5943,11 @@ AirlightOuter airlight_surface(
                 if (_e232 > 0u) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2.inner[metal::min(unsigned(_e237 - 1u), 10u)];
-                    local_135 = _e241 > c_16;
+                    local_138 = _e241 > c_17;
                 } else {
-                    local_135 = false;
+                    local_138 = false;
                 }
-                bool _e244 = local_135;
+                bool _e244 = local_138;
                 if (_e244) {
                 } else {
                     break;
@@ -5843,10 +5962,10 @@ AirlightOuter airlight_surface(
                 }
             }
             uint _e255 = j_4;
-            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_16;
+            cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_17;
         }
     }
-    float hi_8 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2);
+    float hi_9 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2);
     g_22.gamma.inner[0] = (cos_a_1 < 0.0) ? first_2 : 0.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
@@ -5871,11 +5990,11 @@ AirlightOuter airlight_surface(
             if (_e281 > _e285) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2.inner[metal::min(unsigned(_e289), 10u)];
-                local_136 = _e291 < hi_8;
+                local_139 = _e291 < hi_9;
             } else {
-                local_136 = false;
+                local_139 = false;
             }
-            bool _e294 = local_136;
+            bool _e294 = local_139;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = _e295 + 1u;
@@ -5887,7 +6006,7 @@ AirlightOuter airlight_surface(
         }
     }
     uint _e308 = k_5;
-    g_22.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_8;
+    g_22.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_9;
     uint _e313 = k_5;
     g_22.panels = _e313 + 1u;
     uint2 loop_bound_27 = uint2(4294967295u);
@@ -5933,35 +6052,35 @@ AirlightOuter airlight_surface(
                 uint _e339 = i_22;
                 float e_13 = g_22.gamma.inner[metal::min(unsigned(_e339), 12u)];
                 if (!((e_13 == kinks.inner[0]))) {
-                    local_137 = e_13 == kinks.inner[1];
-                } else {
-                    local_137 = true;
-                }
-                bool _e350 = local_137;
-                if (!(_e350)) {
-                    local_138 = e_13 == kinks.inner[2];
-                } else {
-                    local_138 = true;
-                }
-                bool _e357 = local_138;
-                if (!(_e357)) {
-                    local_139 = e_13 == kinks.inner[3];
-                } else {
-                    local_139 = true;
-                }
-                bool _e364 = local_139;
-                if (!(_e364)) {
-                    local_140 = e_13 == kinks.inner[4];
+                    local_140 = e_13 == kinks.inner[1];
                 } else {
                     local_140 = true;
                 }
-                bool _e371 = local_140;
-                if (!(_e371)) {
-                    local_141 = e_13 == kinks.inner[5];
+                bool _e350 = local_140;
+                if (!(_e350)) {
+                    local_141 = e_13 == kinks.inner[2];
                 } else {
                     local_141 = true;
                 }
-                bool kink = local_141;
+                bool _e357 = local_141;
+                if (!(_e357)) {
+                    local_142 = e_13 == kinks.inner[3];
+                } else {
+                    local_142 = true;
+                }
+                bool _e364 = local_142;
+                if (!(_e364)) {
+                    local_143 = e_13 == kinks.inner[4];
+                } else {
+                    local_143 = true;
+                }
+                bool _e371 = local_143;
+                if (!(_e371)) {
+                    local_144 = e_13 == kinks.inner[5];
+                } else {
+                    local_144 = true;
+                }
+                bool kink = local_144;
                 uint _e380 = g_22.smooth_edges;
                 uint _e382 = i_22;
                 g_22.smooth_edges = _e380 | (kink ? 0u : (1u << _e382));
@@ -5976,7 +6095,7 @@ float airlight_lobe_at(
     AirlightLobe q_1,
     float x_19
 ) {
-    bool local_142 = {};
+    bool local_145 = {};
     metal::float2 _e4 = airlight_cos_sin(0.5 * x_19);
     float s2_ = _e4.y * _e4.y;
     float cos_x = 1.0 - (2.0 * s2_);
@@ -5986,11 +6105,11 @@ float airlight_lobe_at(
     float clip = metal::max(even + odd_1, 0.0) + metal::max(even - odd_1, 0.0);
     float fall = q_1.k * s2_;
     if (fall < 1.0) {
-        local_142 = clip > 0.0;
+        local_145 = clip > 0.0;
     } else {
-        local_142 = false;
+        local_145 = false;
     }
-    bool _e43 = local_142;
+    bool _e43 = local_145;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return clip * metal::exp(q_1.exponent * (q_1.log_peak + _e47));
@@ -6018,7 +6137,7 @@ float airlight_arc_end(
     float cut
 ) {
     float end_1 = {};
-    bool local_143 = {};
+    bool local_146 = {};
     end_1 = x_20;
     float _e3 = end_1;
     if (_e3 > AIRLIGHT_PI) {
@@ -6034,11 +6153,11 @@ float airlight_arc_end(
     float _e16 = end_1;
     if (_e16 > -(cut)) {
         float _e21 = end_1;
-        local_143 = _e21 < cut;
+        local_146 = _e21 < cut;
     } else {
-        local_143 = false;
+        local_146 = false;
     }
-    bool _e24 = local_143;
+    bool _e24 = local_146;
     return _e24 ? _e15 : 0.0;
 }
 
@@ -6053,17 +6172,17 @@ float airlight_lobe_piece(
     float hi_5,
     bool smoothstep_1
 ) {
-    bool local_144 = {};
+    bool local_147 = {};
     float sum_5 = 0.0;
     uint k_6 = 0u;
     float w_7 = hi_5 - lo_6;
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, lo_6 + (0.5 * w_7));
-        local_144 = !((_e14 > 0.0));
+        local_147 = !((_e14 > 0.0));
     } else {
-        local_144 = true;
+        local_147 = true;
     }
-    bool _e19 = local_144;
+    bool _e19 = local_147;
     if (_e19) {
         return 0.0;
     }
@@ -6107,9 +6226,9 @@ float airlight_lobe_arcs(
     metal::float2 inner = metal::float2(0.0);
     float sum_6 = 0.0;
     uint i_23 = 0u;
-    float c_17 = g_23.cos_r * cs.x;
+    float c_18 = g_23.cos_r * cs.x;
     float d_4 = g_23.sin_r * cs.y;
-    float peak = c_17 + d_4;
+    float peak = c_18 + d_4;
     if (!((peak > 0.0))) {
         return 0.0;
     }
@@ -6173,30 +6292,30 @@ AirlightOuter airlight_outer(
     AirlightScene s_26
 ) {
     AirlightOuter g_24 = {};
-    bool local_145 = {};
-    bool local_146 = {};
-    float s_star = 0.0;
-    float t_star = {};
-    bool local_147 = {};
     bool local_148 = {};
     bool local_149 = {};
+    float s_star = 0.0;
+    float t_star = {};
     bool local_150 = {};
     bool local_151 = {};
     bool local_152 = {};
-    float scale = 0.0;
     bool local_153 = {};
     bool local_154 = {};
     bool local_155 = {};
+    float scale = 0.0;
     bool local_156 = {};
     bool local_157 = {};
-    airlight_type_12 cuts_3 = airlight_type_12 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
-    airlight_type_18 at = {};
     bool local_158 = {};
-    uint i_24 = 0u;
     bool local_159 = {};
     bool local_160 = {};
+    airlight_type_12 cuts_3 = airlight_type_12 {{340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0, 340282350000000000000000000000000000000.0}};
+    airlight_type_18 at = {};
     bool local_161 = {};
+    uint i_24 = 0u;
     bool local_162 = {};
+    bool local_163 = {};
+    bool local_164 = {};
+    bool local_165 = {};
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
         AirlightOuter _e4 = airlight_surface(s_26);
         return _e4;
@@ -6210,17 +6329,17 @@ AirlightOuter airlight_outer(
     metal::float3 ab_1 = s_26.light_end - s_26.light_position;
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_145 = s_26.intensity == 0.0;
+        local_148 = s_26.intensity == 0.0;
     } else {
-        local_145 = true;
+        local_148 = true;
     }
-    bool _e26 = local_145;
+    bool _e26 = local_148;
     if (!(_e26)) {
-        local_146 = s_26.sigma_s == 0.0;
+        local_149 = s_26.sigma_s == 0.0;
     } else {
-        local_146 = true;
+        local_149 = true;
     }
-    bool _e34 = local_146;
+    bool _e34 = local_149;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -6244,94 +6363,94 @@ AirlightOuter airlight_outer(
     float _e73 = airlight_safe_length((w0_ - (_e41 * _e67)) + (e_14 * _e70));
     float sin_a_1 = metal::sqrt(metal::max(sin2_, 0.0));
     if (_e73 == 0.0) {
-        local_147 = sin_a_1 > 0.0;
-    } else {
-        local_147 = false;
-    }
-    bool _e84 = local_147;
-    if (_e84) {
-        float _e87 = s_star;
-        local_148 = _e87 >= 0.0;
-    } else {
-        local_148 = false;
-    }
-    bool _e91 = local_148;
-    if (_e91) {
-        float _e94 = s_star;
-        local_149 = _e94 <= _e15;
-    } else {
-        local_149 = false;
-    }
-    bool _e97 = local_149;
-    if (_e97) {
-        float _e101 = t_star;
-        local_150 = s_26.t_min <= _e101;
+        local_150 = sin_a_1 > 0.0;
     } else {
         local_150 = false;
     }
-    bool _e104 = local_150;
-    if (_e104) {
-        if (!(infinite_5)) {
-            float _e110 = t_star;
-            local_152 = _e110 <= s_26.t_max;
-        } else {
-            local_152 = true;
-        }
-        bool _e114 = local_152;
-        local_151 = _e114;
+    bool _e84 = local_150;
+    if (_e84) {
+        float _e87 = s_star;
+        local_151 = _e87 >= 0.0;
     } else {
         local_151 = false;
     }
-    bool _e116 = local_151;
+    bool _e91 = local_151;
+    if (_e91) {
+        float _e94 = s_star;
+        local_152 = _e94 <= _e15;
+    } else {
+        local_152 = false;
+    }
+    bool _e97 = local_152;
+    if (_e97) {
+        float _e101 = t_star;
+        local_153 = s_26.t_min <= _e101;
+    } else {
+        local_153 = false;
+    }
+    bool _e104 = local_153;
+    if (_e104) {
+        if (!(infinite_5)) {
+            float _e110 = t_star;
+            local_155 = _e110 <= s_26.t_max;
+        } else {
+            local_155 = true;
+        }
+        bool _e114 = local_155;
+        local_154 = _e114;
+    } else {
+        local_154 = false;
+    }
+    bool _e116 = local_154;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0.0) {
-        local_153 = _e73 > 0.0;
+        local_156 = _e73 > 0.0;
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    bool _e129 = local_153;
+    bool _e129 = local_156;
     if (_e129) {
         scale = _e73 / sin_a_1;
     }
     float _e131 = s_star;
     if (_e131 > -(_e15)) {
         float _e136 = s_star;
-        local_154 = _e136 < (_e15 + _e15);
+        local_157 = _e136 < (_e15 + _e15);
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    bool _e140 = local_154;
+    bool _e140 = local_157;
     if (_e140) {
         float _e143 = scale;
-        local_155 = _e143 < _e15;
+        local_158 = _e143 < _e15;
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    bool near_2 = local_155;
+    bool near_2 = local_158;
     if (near_2) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh((_e15 - _e149) / _e151);
         bool _e154 = airlight_is_finite(_e153);
-        local_156 = _e154;
+        local_159 = _e154;
     } else {
-        local_156 = false;
+        local_159 = false;
     }
-    bool _e156 = local_156;
+    bool _e156 = local_159;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh(_e159 / _e160);
         bool _e163 = airlight_is_finite(_e162);
-        local_157 = _e163;
+        local_160 = _e163;
     } else {
-        local_157 = false;
+        local_160 = false;
     }
-    bool _e165 = local_157;
+    bool _e165 = local_160;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -6348,11 +6467,11 @@ AirlightOuter airlight_outer(
         float _e195 = airlight_to_w(_e193, 0.0);
         AirlightOuter _e197 = g_24;
         float _e198 = airlight_to_w(_e197, _e15);
-        local_158 = metal::min(-(_e195), _e198) < 0.5;
+        local_161 = metal::min(-(_e195), _e198) < 0.5;
     } else {
-        local_158 = false;
+        local_161 = false;
     }
-    bool sliver = local_158;
+    bool sliver = local_161;
     uint2 loop_bound_31 = uint2(4294967295u);
     bool loop_init_30 = true;
     while(true) {
@@ -6371,31 +6490,31 @@ AirlightOuter airlight_outer(
         {
             uint _e209 = i_24;
             if (_e209 == 0u) {
-                local_159 = sliver;
+                local_162 = sliver;
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            bool _e215 = local_159;
+            bool _e215 = local_162;
             if (_e215) {
                 continue;
             }
             if (cos_a_2 == 0.0) {
                 uint _e220 = i_24;
-                local_160 = _e220 > 0u;
+                local_163 = _e220 > 0u;
             } else {
-                local_160 = false;
+                local_163 = false;
             }
-            bool _e224 = local_160;
+            bool _e224 = local_163;
             if (_e224) {
                 continue;
             }
             uint _e225 = i_24;
             if (_e225 == 2u) {
-                local_161 = infinite_5;
+                local_164 = infinite_5;
             } else {
-                local_161 = false;
+                local_164 = false;
             }
-            bool _e231 = local_161;
+            bool _e231 = local_164;
             if (_e231) {
                 continue;
             }
@@ -6404,11 +6523,11 @@ AirlightOuter airlight_outer(
             if (_e234 > 0.0) {
                 uint _e239 = i_24;
                 float _e241 = at.inner[metal::min(unsigned(_e239), 2u)];
-                local_162 = _e241 < _e15;
+                local_165 = _e241 < _e15;
             } else {
-                local_162 = false;
+                local_165 = false;
             }
-            bool _e244 = local_162;
+            bool _e244 = local_165;
             if (_e244) {
                 uint _e245 = i_24;
                 AirlightOuter _e247 = g_24;
@@ -6444,12 +6563,12 @@ AirlightNode airlight_outer_node(
     AirlightScene p = {};
     float gamma_1 = {};
     float jacobian = {};
-    bool local_163 = {};
-    bool local_164 = {};
-    bool local_165 = {};
     bool local_166 = {};
     bool local_167 = {};
     bool local_168 = {};
+    bool local_169 = {};
+    bool local_170 = {};
+    bool local_171 = {};
     float weight = 0.0;
     float at_1 = {};
     float ds = 1.0;
@@ -6460,61 +6579,61 @@ AirlightNode airlight_outer_node(
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         uint i_44 = metal::min(airlight_naga_f2u32(metal::max(metal::floor(x_21), 0.0)), g_25.panels - 1u);
         float t_9 = x_21 - static_cast<float>(i_44);
-        float a_44 = g_25.gamma.inner[metal::min(unsigned(i_44), 12u)];
-        float b_21 = g_25.gamma.inner[metal::min(unsigned(i_44 + 1u), 12u)];
-        float w_8 = b_21 - a_44;
+        float a_46 = g_25.gamma.inner[metal::min(unsigned(i_44), 12u)];
+        float b_23 = g_25.gamma.inner[metal::min(unsigned(i_44 + 1u), 12u)];
+        float w_8 = b_23 - a_46;
         float u_9 = 1.0 - t_9;
         bool smooth_a = ((g_25.smooth_edges >> i_44) & 1u) != 0u;
         bool smooth_b = ((g_25.smooth_edges >> (i_44 + 1u)) & 1u) != 0u;
-        gamma_1 = a_44 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
+        gamma_1 = a_46 + (((w_8 * t_9) * t_9) * ((3.0 - t_9) - t_9));
         jacobian = ((w_8 * 6.0) * t_9) * u_9;
         float _e58 = gamma_1;
         if (smooth_b) {
-            local_163 = !(smooth_a);
-        } else {
-            local_163 = false;
-        }
-        bool _e66 = local_163;
-        gamma_1 = _e66 ? (a_44 + ((w_8 * t_9) * t_9)) : _e58;
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_164 = !(smooth_a);
-        } else {
-            local_164 = false;
-        }
-        bool _e75 = local_164;
-        jacobian = _e75 ? (w_8 * (t_9 + t_9)) : _e68;
-        float _e77 = gamma_1;
-        if (smooth_a) {
-            local_165 = !(smooth_b);
-        } else {
-            local_165 = false;
-        }
-        bool _e85 = local_165;
-        gamma_1 = _e85 ? (b_21 - ((w_8 * u_9) * u_9)) : _e77;
-        float _e87 = jacobian;
-        if (smooth_a) {
-            local_166 = !(smooth_b);
+            local_166 = !(smooth_a);
         } else {
             local_166 = false;
         }
-        bool _e94 = local_166;
-        jacobian = _e94 ? (w_8 * (u_9 + u_9)) : _e87;
-        float _e96 = gamma_1;
-        if (smooth_a) {
-            local_167 = smooth_b;
+        bool _e66 = local_166;
+        gamma_1 = _e66 ? (a_46 + ((w_8 * t_9) * t_9)) : _e58;
+        float _e68 = jacobian;
+        if (smooth_b) {
+            local_167 = !(smooth_a);
         } else {
             local_167 = false;
         }
-        bool _e102 = local_167;
-        gamma_1 = _e102 ? (a_44 + (w_8 * t_9)) : _e96;
-        float _e104 = jacobian;
+        bool _e75 = local_167;
+        jacobian = _e75 ? (w_8 * (t_9 + t_9)) : _e68;
+        float _e77 = gamma_1;
         if (smooth_a) {
-            local_168 = smooth_b;
+            local_168 = !(smooth_b);
         } else {
             local_168 = false;
         }
-        bool _e108 = local_168;
+        bool _e85 = local_168;
+        gamma_1 = _e85 ? (b_23 - ((w_8 * u_9) * u_9)) : _e77;
+        float _e87 = jacobian;
+        if (smooth_a) {
+            local_169 = !(smooth_b);
+        } else {
+            local_169 = false;
+        }
+        bool _e94 = local_169;
+        jacobian = _e94 ? (w_8 * (u_9 + u_9)) : _e87;
+        float _e96 = gamma_1;
+        if (smooth_a) {
+            local_170 = smooth_b;
+        } else {
+            local_170 = false;
+        }
+        bool _e102 = local_170;
+        gamma_1 = _e102 ? (a_46 + (w_8 * t_9)) : _e96;
+        float _e104 = jacobian;
+        if (smooth_a) {
+            local_171 = smooth_b;
+        } else {
+            local_171 = false;
+        }
+        bool _e108 = local_171;
         jacobian = _e108 ? w_8 : _e104;
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6543,9 +6662,9 @@ AirlightNode airlight_outer_node(
         p.t_max = 0.0;
         p.flags = 1u;
         float sin_g_1 = metal::max(_e119.y, 0.0);
-        float h_8 = g_25.d * sin_g_1;
-        float d_c_2 = (h_8 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0;
-        AirlightCanonical exact = AirlightCanonical {h_8, g_25.d * _e119.x, (_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u), d_c_2, 0.0, 0.0, true};
+        float h_9 = g_25.d * sin_g_1;
+        float d_c_2 = (h_9 > 0.0) ? ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)) : 0.0;
+        AirlightCanonical exact = AirlightCanonical {h_9, g_25.d * _e119.x, (_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u), d_c_2, 0.0, 0.0, true};
         AirlightScene _e206 = p;
         float _e207 = weight;
         float _e210 = jacobian;
@@ -6629,7 +6748,7 @@ float airlight_area_phase_about(
 
 float airlight_emitted(
     AirlightScene s_30,
-    float c_7
+    float c_8
 ) {
     uint e_2 = {};
     float base_1 = {};
@@ -6639,7 +6758,7 @@ float airlight_emitted(
         return s_30.intensity;
     }
     e_2 = p_2 - 1u;
-    base_1 = c_7;
+    base_1 = c_8;
     uint _e13 = e_2;
     if ((_e13 & 1u) != 0u) {
         float _e18 = acc_1;
@@ -6768,14 +6887,14 @@ metal::float2 airlight_graded_range(
     AirlightScene s_32,
     float top
 ) {
-    bool local_169 = {};
+    bool local_172 = {};
     float _e2 = airlight_emission_scale(s_32);
     if (_e2 > 0.0) {
-        local_169 = _e2 < top;
+        local_172 = _e2 < top;
     } else {
-        local_169 = false;
+        local_172 = false;
     }
-    bool _e9 = local_169;
+    bool _e9 = local_172;
     if (_e9) {
         float _e11 = airlight_atan(top / _e2);
         return metal::float2(_e11, _e2);
@@ -6815,13 +6934,13 @@ metal::float2 airlight_lobe(
     float sign_1,
     float gap_3
 ) {
-    bool local_170 = {};
+    bool local_173 = {};
     if (!(!((gap_3 > 0.0)))) {
-        local_170 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_173 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_170 = true;
+        local_173 = true;
     }
-    bool _e12 = local_170;
+    bool _e12 = local_173;
     if (_e12) {
         return metal::float2(1.0, 0.0);
     }
@@ -6843,8 +6962,8 @@ metal::float4 airlight_phase_lobes(
             break;
         }
         case 3u: {
-            float a_45 = metal::abs(p0_5);
-            metal::float2 _e21 = airlight_lobe(p0_5, (a_45 > 0.0) ? ((1.0 - a_45) / a_45) : AIRLIGHT_FLT_MAX);
+            float a_47 = metal::abs(p0_5);
+            metal::float2 _e21 = airlight_lobe(p0_5, (a_47 > 0.0) ? ((1.0 - a_47) / a_47) : AIRLIGHT_FLT_MAX);
             first = _e21;
             break;
         }
@@ -6870,18 +6989,18 @@ metal::float3 airlight_basis_e1_(
     metal::float3 n_2
 ) {
     metal::float3 u_3 = metal::float3(0.0, 0.0, 1.0);
-    bool local_171 = {};
-    metal::float3 m_11 = metal::abs(n_2);
-    if (m_11.x <= m_11.y) {
-        local_171 = m_11.x <= m_11.z;
+    bool local_174 = {};
+    metal::float3 m_12 = metal::abs(n_2);
+    if (m_12.x <= m_12.y) {
+        local_174 = m_12.x <= m_12.z;
     } else {
-        local_171 = false;
+        local_174 = false;
     }
-    bool _e16 = local_171;
+    bool _e16 = local_174;
     if (_e16) {
         u_3 = metal::float3(1.0, 0.0, 0.0);
     } else {
-        if (m_11.y <= m_11.z) {
+        if (m_12.y <= m_12.z) {
             u_3 = metal::float3(0.0, 1.0, 0.0);
         }
     }
@@ -6891,34 +7010,34 @@ metal::float3 airlight_basis_e1_(
 }
 
 float airlight_area_theta(
-    AirlightArea a_17,
+    AirlightArea a_19,
     float t_3,
     bool infinite_3
 ) {
     if (infinite_3) {
         return 1.5707964;
     }
-    float _e7 = airlight_atan2_(t_3 - a_17.x_h, a_17.h_eff);
+    float _e7 = airlight_atan2_(t_3 - a_19.x_h, a_19.h_eff);
     return _e7;
 }
 
 metal::float2 airlight_edge_nearest(
-    metal::float2 a_18,
-    metal::float2 b_13,
+    metal::float2 a_20,
+    metal::float2 b_15,
     metal::float2 q_4
 ) {
-    metal::float2 e_15 = b_13 - a_18;
-    return a_18 + (metal::clamp((((q_4.x - a_18.x) * e_15.x) + ((q_4.y - a_18.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0) * e_15);
+    metal::float2 e_15 = b_15 - a_20;
+    return a_20 + (metal::clamp((((q_4.x - a_20.x) * e_15.x) + ((q_4.y - a_20.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y)), 0.0, 1.0) * e_15);
 }
 
 metal::float2 airlight_outline_distances(
-    AirlightOutline o
+    AirlightOutline o_1
 ) {
     metal::float2 nearest = metal::float2(340282350000000000000000000000000000000.0);
     uint i_27 = 0u;
-    if (o.radius > 0.0) {
-        metal::float2 c_18 = o.corners.inner[0];
-        return metal::float2(metal::abs(metal::sqrt((o.corners.inner[0].x * o.corners.inner[0].x) + (o.corners.inner[0].y * o.corners.inner[0].y)) - o.radius), AIRLIGHT_FLT_MAX);
+    if (o_1.radius > 0.0) {
+        metal::float2 c_19 = o_1.corners.inner[0];
+        return metal::float2(metal::abs(metal::sqrt((o_1.corners.inner[0].x * o_1.corners.inner[0].x) + (o_1.corners.inner[0].y * o_1.corners.inner[0].y)) - o_1.radius), AIRLIGHT_FLT_MAX);
     }
     uint2 loop_bound_32 = uint2(4294967295u);
     bool loop_init_31 = true;
@@ -6938,7 +7057,7 @@ metal::float2 airlight_outline_distances(
         {
             uint _e28 = i_27;
             uint _e31 = i_27;
-            metal::float2 _e39 = airlight_edge_nearest(o.corners.inner[metal::min(unsigned(_e28), 3u)], o.corners.inner[metal::min(unsigned(airlight_naga_mod(_e31 + 1u, 4u)), 3u)], metal::float2(0.0));
+            metal::float2 _e39 = airlight_edge_nearest(o_1.corners.inner[metal::min(unsigned(_e28), 3u)], o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e31 + 1u, 4u)), 3u)], metal::float2(0.0));
             float distance = metal::sqrt((_e39.x * _e39.x) + (_e39.y * _e39.y));
             float _e49 = nearest.x;
             if (distance < _e49) {
@@ -6958,25 +7077,25 @@ metal::float2 airlight_outline_distances(
 
 AirlightOutline airlight_outline_at(
     AirlightScene s_36,
-    AirlightArea a_19,
+    AirlightArea a_21,
     metal::float3 x_22
 ) {
-    metal::float3 rel = x_22 - a_19.c;
-    metal::float2 foot = metal::float2(metal::dot(rel, a_19.a1_), metal::dot(rel, a_19.a2_));
+    metal::float3 rel = x_22 - a_21.c;
+    metal::float2 foot = metal::float2(metal::dot(rel, a_21.a1_), metal::dot(rel, a_21.a2_));
     metal::float2 zero = metal::float2(0.0);
     if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
-        return AirlightOutline {airlight_type_8 {{-(foot), zero, zero, zero}}, a_19.radius};
+        return AirlightOutline {airlight_type_8 {{-(foot), zero, zero, zero}}, a_21.radius};
     }
-    metal::float2 u2_ = metal::float2(metal::dot(a_19.eu, a_19.a1_), metal::dot(a_19.eu, a_19.a2_));
-    metal::float2 v2_ = metal::float2(metal::dot(a_19.ev, a_19.a1_), metal::dot(a_19.ev, a_19.a2_));
+    metal::float2 u2_ = metal::float2(metal::dot(a_21.eu, a_21.a1_), metal::dot(a_21.eu, a_21.a2_));
+    metal::float2 v2_ = metal::float2(metal::dot(a_21.ev, a_21.a1_), metal::dot(a_21.ev, a_21.a2_));
     return AirlightOutline {airlight_type_8 {{-(foot), u2_ - foot, (u2_ + v2_) - foot, v2_ - foot}}, 0.0};
 }
 
 AirlightArea airlight_area(
     AirlightScene s_37
 ) {
-    AirlightArea a_20 = {};
-    bool local_172 = {};
+    AirlightArea a_22 = {};
+    bool local_175 = {};
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
@@ -6986,224 +7105,229 @@ AirlightArea airlight_area(
     float size = {};
     float t_end_1 = {};
     bool end_infinite = {};
-    bool local_173 = {};
+    bool local_176 = {};
     airlight_type_12 cuts_4 = {};
     float scale_1 = 1.0;
-    bool local_174 = {};
-    bool local_175 = {};
-    bool local_176 = {};
     bool local_177 = {};
-    uint i_28 = 0u;
-    uint i_29 = 0u;
     bool local_178 = {};
     bool local_179 = {};
     bool local_180 = {};
+    uint i_28 = 0u;
+    uint i_29 = 0u;
+    bool local_181 = {};
+    bool local_182 = {};
+    bool local_183 = {};
     metal::float3 zero_1 = metal::float3(0.0);
     metal::float4 _e21 = airlight_phase_lobes(s_37);
-    a_20 = AirlightArea {zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false};
-    bool _e28 = airlight_isotropic_phase(s_37);
-    a_20.isotropic = _e28;
+    a_22 = AirlightArea {zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0.0, 0.0, airlight_type_3 {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, 0u, 0u, {}, _e21, false, {}, AirlightSphereFoot {zero_1, 0.0, 0.0}};
+    bool _e31 = airlight_isotropic_phase(s_37);
+    a_22.isotropic = _e31;
     if (!((s_37.intensity == 0.0))) {
-        local_172 = s_37.sigma_s == 0.0;
+        local_175 = s_37.sigma_s == 0.0;
     } else {
-        local_172 = true;
+        local_175 = true;
     }
-    bool _e39 = local_172;
-    if (_e39) {
-        a_20.outcome = 1u;
-        AirlightArea _e42 = a_20;
-        return _e42;
+    bool _e42 = local_175;
+    if (_e42) {
+        a_22.outcome = 1u;
+        AirlightArea _e45 = a_22;
+        return _e45;
     }
-    metal::float3 o_8 = s_37.origin;
-    metal::float3 _e45 = airlight_normalize(s_37.dir);
-    a_20.d = _e45;
+    metal::float3 o_9 = s_37.origin;
+    metal::float3 _e48 = airlight_normalize(s_37.dir);
+    a_22.d = _e48;
     bool infinite_6 = (s_37.flags & 1u) != 0u;
     float t0_2 = s_37.t_min;
     centre = s_37.light_position;
     size = s_37.light_param_a;
     if (s_37.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        metal::float3 _e72 = a_20.c;
-        metal::float3 oc = o_8 - _e72;
-        float b_22 = metal::dot(oc, _e45);
-        float _e77 = a_20.radius;
-        float _e79 = a_20.radius;
-        float k_12 = metal::dot(oc, oc) - (_e77 * _e79);
-        float _e84 = airlight_safe_length(oc - (b_22 * _e45));
-        float _e86 = a_20.radius;
-        float _e89 = a_20.radius;
-        float disc_2 = (_e86 - _e84) * (_e89 + _e84);
+        metal::float3 _e75 = a_22.c;
+        metal::float3 oc_1 = o_9 - _e75;
+        float b_24 = metal::dot(oc_1, _e48);
+        float _e80 = a_22.radius;
+        float _e82 = a_22.radius;
+        float k_12 = metal::dot(oc_1, oc_1) - (_e80 * _e82);
+        uint key_9 = static_cast<uint>(s_37.flags > 1u);
+        metal::float3 _e92 = a_22.c;
+        float _e94 = a_22.radius;
+        AirlightSphereFoot _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_9);
+        a_22.foot = _e95;
+        float _e98 = a_22.foot.miss;
+        float _e102 = a_22.foot.h;
+        float _e104 = a_22.radius;
+        float disc_2 = -(_e98) * (_e102 + _e104);
         if (disc_2 > 0.0) {
             float root_2 = metal::sqrt(disc_2);
-            float q_13 = -(b_22) - (((as_type<uint>(b_22) & 2147483648u) != 0u) ? -(root_2) : root_2);
+            float q_13 = -(b_24) - (((as_type<uint>(b_24) & 2147483648u) != 0u) ? -(root_2) : root_2);
             cut0_ = q_13;
             cut1_ = k_12 / q_13;
             cut_count = 2u;
         }
     } else {
         if (s_37.light_shape == AIRLIGHT_SHAPE_DISC) {
-            metal::float3 _e111 = airlight_normalize(s_37.light_axis);
-            a_20.n = _e111;
-            metal::float3 _e114 = a_20.n;
-            metal::float3 _e115 = airlight_basis_e1_(_e114);
-            a_20.a1_ = _e115;
+            metal::float3 _e126 = airlight_normalize(s_37.light_axis);
+            a_22.n = _e126;
+            metal::float3 _e129 = a_22.n;
+            metal::float3 _e130 = airlight_basis_e1_(_e129);
+            a_22.a1_ = _e130;
         } else {
-            a_20.eu = s_37.light_axis;
-            a_20.ev = s_37.light_end;
-            metal::float3 _e122 = a_20.eu;
-            metal::float3 _e124 = a_20.ev;
-            metal::float3 _e126 = airlight_normalize(metal::cross(_e122, _e124));
-            a_20.n = _e126;
-            metal::float3 _e129 = a_20.eu;
-            metal::float3 _e130 = airlight_normalize(_e129);
-            a_20.a1_ = _e130;
-            metal::float3 _e132 = a_20.eu;
-            metal::float3 _e134 = a_20.ev;
-            metal::float3 diagonal = _e132 + _e134;
-            metal::float3 _e137 = a_20.c;
-            centre = _e137 + (0.5 * diagonal);
-            float _e141 = airlight_safe_length(diagonal);
-            metal::float3 _e143 = a_20.eu;
-            metal::float3 _e145 = a_20.ev;
-            float _e147 = airlight_safe_length(_e143 - _e145);
-            size = 0.5 * metal::max(_e141, _e147);
+            a_22.eu = s_37.light_axis;
+            a_22.ev = s_37.light_end;
+            metal::float3 _e137 = a_22.eu;
+            metal::float3 _e139 = a_22.ev;
+            metal::float3 _e141 = airlight_normalize(metal::cross(_e137, _e139));
+            a_22.n = _e141;
+            metal::float3 _e144 = a_22.eu;
+            metal::float3 _e145 = airlight_normalize(_e144);
+            a_22.a1_ = _e145;
+            metal::float3 _e147 = a_22.eu;
+            metal::float3 _e149 = a_22.ev;
+            metal::float3 diagonal = _e147 + _e149;
+            metal::float3 _e152 = a_22.c;
+            centre = _e152 + (0.5 * diagonal);
+            float _e156 = airlight_safe_length(diagonal);
+            metal::float3 _e158 = a_22.eu;
+            metal::float3 _e160 = a_22.ev;
+            float _e162 = airlight_safe_length(_e158 - _e160);
+            size = 0.5 * metal::max(_e156, _e162);
         }
-        metal::float3 _e153 = a_20.n;
-        metal::float3 _e155 = a_20.a1_;
-        a_20.a2_ = metal::cross(_e153, _e155);
-        metal::float3 _e159 = a_20.a1_;
-        metal::float3 _e162 = a_20.a2_;
-        metal::float3 _e165 = a_20.n;
-        a_20.dirs = metal::float3(metal::dot(_e159, _e45), metal::dot(_e162, _e45), metal::dot(_e165, _e45));
-        metal::float3 _e169 = a_20.c;
-        metal::float3 _e172 = a_20.n;
-        metal::float3 _e175 = a_20.n;
-        cut0_ = metal::dot(_e169 - o_8, _e172) / metal::dot(_e45, _e175);
+        metal::float3 _e168 = a_22.n;
+        metal::float3 _e170 = a_22.a1_;
+        a_22.a2_ = metal::cross(_e168, _e170);
+        metal::float3 _e174 = a_22.a1_;
+        metal::float3 _e177 = a_22.a2_;
+        metal::float3 _e180 = a_22.n;
+        a_22.dirs = metal::float3(metal::dot(_e174, _e48), metal::dot(_e177, _e48), metal::dot(_e180, _e48));
+        metal::float3 _e184 = a_22.c;
+        metal::float3 _e187 = a_22.n;
+        metal::float3 _e190 = a_22.n;
+        cut0_ = metal::dot(_e184 - o_9, _e187) / metal::dot(_e48, _e190);
         cut_count = 1u;
-        AirlightArea _e179 = a_20;
-        float _e180 = cut0_;
-        AirlightOutline _e183 = airlight_outline_at(s_37, _e179, o_8 + (_e180 * _e45));
-        metal::float2 _e184 = airlight_outline_distances(_e183);
-        distances = _e184;
-        metal::float3 _e186 = a_20.n;
-        front = (metal::dot(_e45, _e186) < 0.0) ? -1.0 : 1.0;
+        AirlightArea _e194 = a_22;
+        float _e195 = cut0_;
+        AirlightOutline _e198 = airlight_outline_at(s_37, _e194, o_9 + (_e195 * _e48));
+        metal::float2 _e199 = airlight_outline_distances(_e198);
+        distances = _e199;
+        metal::float3 _e201 = a_22.n;
+        front = (metal::dot(_e48, _e201) < 0.0) ? -1.0 : 1.0;
     }
-    float _e193 = size;
-    if (!((_e193 > 0.0))) {
-        a_20.outcome = 1u;
-        AirlightArea _e199 = a_20;
-        return _e199;
+    float _e208 = size;
+    if (!((_e208 > 0.0))) {
+        a_22.outcome = 1u;
+        AirlightArea _e214 = a_22;
+        return _e214;
     }
-    metal::float3 _e200 = centre;
-    metal::float3 to_centre = _e200 - o_8;
-    a_20.x_h = metal::dot(to_centre, _e45);
-    float _e205 = a_20.x_h;
-    float _e208 = airlight_safe_length(to_centre - (_e205 * _e45));
-    float _e211 = size;
-    float _e212 = size;
-    a_20.h_eff = metal::sqrt((_e208 * _e208) + (_e211 * _e212));
+    metal::float3 _e215 = centre;
+    metal::float3 to_centre_1 = _e215 - o_9;
+    a_22.x_h = metal::dot(to_centre_1, _e48);
+    float _e220 = a_22.x_h;
+    float _e223 = airlight_safe_length(to_centre_1 - (_e220 * _e48));
+    float _e226 = size;
+    float _e227 = size;
+    a_22.h_eff = metal::sqrt((_e223 * _e223) + (_e226 * _e227));
     t_end_1 = s_37.t_max;
     end_infinite = infinite_6;
     if (s_37.sigma_t > 0.0) {
-        metal::float3 _e222 = centre;
-        float _e226 = airlight_safe_length(_e222 - (o_8 + (t0_2 * _e45)));
-        float _e228 = size;
-        float reach_1 = ((t0_2 + _e226) + _e228) - (-15.942385 / s_37.sigma_t);
+        metal::float3 _e237 = centre;
+        float _e241 = airlight_safe_length(_e237 - (o_9 + (t0_2 * _e48)));
+        float _e243 = size;
+        float reach_1 = ((t0_2 + _e241) + _e243) - (-15.942385 / s_37.sigma_t);
         if (!(infinite_6)) {
-            float _e237 = t_end_1;
-            local_173 = reach_1 < _e237;
+            float _e252 = t_end_1;
+            local_176 = reach_1 < _e252;
         } else {
-            local_173 = true;
+            local_176 = true;
         }
-        bool _e240 = local_173;
-        if (_e240) {
+        bool _e255 = local_176;
+        if (_e255) {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    AirlightArea _e242 = a_20;
-    float _e244 = airlight_area_theta(_e242, t0_2, false);
-    AirlightArea _e245 = a_20;
-    float _e246 = t_end_1;
-    bool _e247 = end_infinite;
-    float _e248 = airlight_area_theta(_e245, _e246, _e247);
-    float _e250 = a_20.x_h;
-    float _e252 = a_20.x_h;
-    float _e253 = cut0_;
-    uint _e254 = cut_count;
-    float _e259 = a_20.x_h;
-    float _e260 = cut1_;
-    uint _e261 = cut_count;
-    float _e266 = a_20.x_h;
-    cuts_4 = airlight_type_12 {{_e250, (_e254 > 0u) ? _e253 : _e252, (_e261 > 1u) ? _e260 : _e259, _e266}};
-    float _e273 = a_20.lobes.y;
-    if (_e273 > 0.0) {
-        float _e276 = scale_1;
-        float _e279 = a_20.lobes.y;
-        scale_1 = metal::min(_e276, _e279);
+    AirlightArea _e257 = a_22;
+    float _e259 = airlight_area_theta(_e257, t0_2, false);
+    AirlightArea _e260 = a_22;
+    float _e261 = t_end_1;
+    bool _e262 = end_infinite;
+    float _e263 = airlight_area_theta(_e260, _e261, _e262);
+    float _e265 = a_22.x_h;
+    float _e267 = a_22.x_h;
+    float _e268 = cut0_;
+    uint _e269 = cut_count;
+    float _e274 = a_22.x_h;
+    float _e275 = cut1_;
+    uint _e276 = cut_count;
+    float _e281 = a_22.x_h;
+    cuts_4 = airlight_type_12 {{_e265, (_e269 > 0u) ? _e268 : _e267, (_e276 > 1u) ? _e275 : _e274, _e281}};
+    float _e288 = a_22.lobes.y;
+    if (_e288 > 0.0) {
+        float _e291 = scale_1;
+        float _e294 = a_22.lobes.y;
+        scale_1 = metal::min(_e291, _e294);
     }
-    float _e283 = a_20.lobes.w;
-    if (_e283 > 0.0) {
-        float _e286 = scale_1;
-        float _e289 = a_20.lobes.w;
-        scale_1 = metal::min(_e286, _e289);
+    float _e298 = a_22.lobes.w;
+    if (_e298 > 0.0) {
+        float _e301 = scale_1;
+        float _e304 = a_22.lobes.w;
+        scale_1 = metal::min(_e301, _e304);
     }
-    uint _e291 = cut_count;
-    if (_e291 == 1u) {
-        float _e296 = scale_1;
-        local_174 = _e296 < 1.0;
+    uint _e306 = cut_count;
+    if (_e306 == 1u) {
+        float _e311 = scale_1;
+        local_177 = _e311 < 1.0;
     } else {
-        local_174 = false;
+        local_177 = false;
     }
-    bool _e300 = local_174;
-    if (_e300) {
-        float _e303 = cut0_;
-        local_175 = _e303 >= t0_2;
+    bool _e315 = local_177;
+    if (_e315) {
+        float _e318 = cut0_;
+        local_178 = _e318 >= t0_2;
     } else {
-        local_175 = false;
+        local_178 = false;
     }
-    bool _e306 = local_175;
-    if (_e306) {
-        bool _e309 = end_infinite;
-        if (!(_e309)) {
-            float _e313 = cut0_;
-            float _e314 = t_end_1;
-            local_177 = _e313 <= _e314;
+    bool _e321 = local_178;
+    if (_e321) {
+        bool _e324 = end_infinite;
+        if (!(_e324)) {
+            float _e328 = cut0_;
+            float _e329 = t_end_1;
+            local_180 = _e328 <= _e329;
         } else {
-            local_177 = true;
+            local_180 = true;
         }
-        bool _e317 = local_177;
-        local_176 = _e317;
+        bool _e332 = local_180;
+        local_179 = _e332;
     } else {
-        local_176 = false;
+        local_179 = false;
     }
-    bool _e319 = local_176;
-    if (_e319) {
+    bool _e334 = local_179;
+    if (_e334) {
         uint2 loop_bound_33 = uint2(4294967295u);
         bool loop_init_32 = true;
         while(true) {
             if (metal::all(loop_bound_33 == uint2(0u))) { break; }
             loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
             if (!loop_init_32) {
-                uint _e344 = i_28;
-                i_28 = _e344 + 1u;
+                uint _e359 = i_28;
+                i_28 = _e359 + 1u;
             }
             loop_init_32 = false;
-            uint _e322 = i_28;
-            if (_e322 < 2u) {
+            uint _e337 = i_28;
+            if (_e337 < 2u) {
             } else {
                 break;
             }
             {
-                uint _e326 = i_28;
-                float _e328 = distances[metal::min(unsigned(_e326), 1u)];
-                float _e330 = scale_1;
-                float reach_2 = (AIRLIGHT_CROSSING_REACH * _e328) / _e330;
-                float _e333 = a_20.h_eff;
-                if (reach_2 < _e333) {
-                    uint _e335 = i_28;
-                    float _e339 = cut0_;
-                    float _e340 = front;
-                    cuts_4.inner[metal::min(unsigned(_e335 + 2u), 3u)] = _e339 + (_e340 * reach_2);
+                uint _e341 = i_28;
+                float _e343 = distances[metal::min(unsigned(_e341), 1u)];
+                float _e345 = scale_1;
+                float reach_2 = (AIRLIGHT_CROSSING_REACH * _e343) / _e345;
+                float _e348 = a_22.h_eff;
+                if (reach_2 < _e348) {
+                    uint _e350 = i_28;
+                    float _e354 = cut0_;
+                    float _e355 = front;
+                    cuts_4.inner[metal::min(unsigned(_e350 + 2u), 3u)] = _e354 + (_e355 * reach_2);
                 }
             }
         }
@@ -7214,55 +7338,55 @@ AirlightArea airlight_area(
         if (metal::all(loop_bound_34 == uint2(0u))) { break; }
         loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_33) {
-            uint _e380 = i_29;
-            i_29 = _e380 + 1u;
+            uint _e395 = i_29;
+            i_29 = _e395 + 1u;
         }
         loop_init_33 = false;
-        uint _e348 = i_29;
-        if (_e348 < 4u) {
+        uint _e363 = i_29;
+        if (_e363 < 4u) {
         } else {
             break;
         }
         {
-            uint _e351 = i_29;
-            float t_10 = cuts_4.inner[metal::min(unsigned(_e351), 3u)];
-            uint _e354 = i_29;
-            cuts_4.inner[metal::min(unsigned(_e354), 3u)] = _e244;
-            bool _e356 = airlight_is_finite(t_10);
-            if (_e356) {
-                local_178 = t_10 >= t0_2;
+            uint _e366 = i_29;
+            float t_10 = cuts_4.inner[metal::min(unsigned(_e366), 3u)];
+            uint _e369 = i_29;
+            cuts_4.inner[metal::min(unsigned(_e369), 3u)] = _e259;
+            bool _e371 = airlight_is_finite(t_10);
+            if (_e371) {
+                local_181 = t_10 >= t0_2;
             } else {
-                local_178 = false;
+                local_181 = false;
             }
-            bool _e361 = local_178;
-            if (_e361) {
-                bool _e364 = end_infinite;
-                if (!(_e364)) {
-                    float _e368 = t_end_1;
-                    local_180 = t_10 <= _e368;
+            bool _e376 = local_181;
+            if (_e376) {
+                bool _e379 = end_infinite;
+                if (!(_e379)) {
+                    float _e383 = t_end_1;
+                    local_183 = t_10 <= _e383;
                 } else {
-                    local_180 = true;
+                    local_183 = true;
                 }
-                bool _e371 = local_180;
-                local_179 = _e371;
+                bool _e386 = local_183;
+                local_182 = _e386;
             } else {
-                local_179 = false;
+                local_182 = false;
             }
-            bool _e373 = local_179;
-            if (_e373) {
-                uint _e374 = i_29;
-                AirlightArea _e376 = a_20;
-                float _e378 = airlight_area_theta(_e376, t_10, false);
-                cuts_4.inner[metal::min(unsigned(_e374), 3u)] = _e378;
+            bool _e388 = local_182;
+            if (_e388) {
+                uint _e389 = i_29;
+                AirlightArea _e391 = a_22;
+                float _e393 = airlight_area_theta(_e391, t_10, false);
+                cuts_4.inner[metal::min(unsigned(_e389), 3u)] = _e393;
             }
         }
     }
-    airlight_type_12 _e382 = cuts_4;
-    AirlightEdges _e383 = airlight_edges_between(_e244, _e248, _e382);
-    a_20.edges = _e383.at;
-    a_20.panels = _e383.panels;
-    AirlightArea _e388 = a_20;
-    return _e388;
+    airlight_type_12 _e397 = cuts_4;
+    AirlightEdges _e398 = airlight_edges_between(_e259, _e263, _e397);
+    a_22.edges = _e398.at;
+    a_22.panels = _e398.panels;
+    AirlightArea _e403 = a_22;
+    return _e403;
 }
 
 AirlightAbove airlight_above(
@@ -7274,7 +7398,7 @@ AirlightAbove airlight_above(
 
 float airlight_flat_node(
     AirlightScene s_38,
-    AirlightArea a_21,
+    AirlightArea a_23,
     AirlightAbove above_1,
     metal::float2 e_3,
     float graded_1,
@@ -7289,14 +7413,14 @@ float airlight_flat_node(
     float dist = metal::sqrt(((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y));
     float inv_5 = 1.0 / dist;
     float cos = z_19 * inv_5;
-    float _e50 = airlight_area_phase(s_38, (((p_4.x * a_21.dirs[0]) + (p_4.y * a_21.dirs[1])) - (z_19 * a_21.dirs[2])) * inv_5);
+    float _e50 = airlight_area_phase(s_38, (((p_4.x * a_23.dirs[0]) + (p_4.y * a_23.dirs[1])) - (z_19 * a_23.dirs[2])) * inv_5);
     float _e52 = airlight_emitted(s_38, cos);
     return (((((((_e6.y * _e52) * metal::exp(metal::min(-(s_38.sigma_t) * dist, 0.0))) * _e50) * cos) * inv_5) * inv_5) * r_12) * dr;
 }
 
 float airlight_flat_radial(
     AirlightScene s_39,
-    AirlightArea a_22,
+    AirlightArea a_24,
     AirlightAbove above_2,
     metal::float2 e_4,
     float r_max
@@ -7305,73 +7429,73 @@ float airlight_flat_radial(
     float _e7 = airlight_atan(r_max / above_2.rho0_);
     metal::float2 _e8 = airlight_graded_range(s_39, _e7);
     float graded_6 = _e8.y;
-    float c_19 = 0.5 * _e8.x;
+    float c_20 = 0.5 * _e8.x;
     float hw_2 = 0.5 * _e8.x;
     float _e18 = sum_7;
-    float _e24 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.09501251 * hw_2));
+    float _e24 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.09501251 * hw_2));
     sum_7 = _e18 + ((0.1894506 * hw_2) * _e24);
     float _e27 = sum_7;
-    float _e33 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.09501251 * hw_2));
+    float _e33 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.09501251 * hw_2));
     sum_7 = _e27 + ((0.1894506 * hw_2) * _e33);
     float _e36 = sum_7;
-    float _e42 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.28160354 * hw_2));
+    float _e42 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.28160354 * hw_2));
     sum_7 = _e36 + ((0.18260342 * hw_2) * _e42);
     float _e45 = sum_7;
-    float _e51 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.28160354 * hw_2));
+    float _e51 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.28160354 * hw_2));
     sum_7 = _e45 + ((0.18260342 * hw_2) * _e51);
     float _e54 = sum_7;
-    float _e60 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.45801678 * hw_2));
+    float _e60 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.45801678 * hw_2));
     sum_7 = _e54 + ((0.16915652 * hw_2) * _e60);
     float _e63 = sum_7;
-    float _e69 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.45801678 * hw_2));
+    float _e69 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.45801678 * hw_2));
     sum_7 = _e63 + ((0.16915652 * hw_2) * _e69);
     float _e72 = sum_7;
-    float _e78 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.61787623 * hw_2));
+    float _e78 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.61787623 * hw_2));
     sum_7 = _e72 + ((0.14959599 * hw_2) * _e78);
     float _e81 = sum_7;
-    float _e87 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.61787623 * hw_2));
+    float _e87 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.61787623 * hw_2));
     sum_7 = _e81 + ((0.14959599 * hw_2) * _e87);
     float _e90 = sum_7;
-    float _e96 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.7554044 * hw_2));
+    float _e96 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.7554044 * hw_2));
     sum_7 = _e90 + ((0.12462897 * hw_2) * _e96);
     float _e99 = sum_7;
-    float _e105 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.7554044 * hw_2));
+    float _e105 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.7554044 * hw_2));
     sum_7 = _e99 + ((0.12462897 * hw_2) * _e105);
     float _e108 = sum_7;
-    float _e114 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.8656312 * hw_2));
+    float _e114 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.8656312 * hw_2));
     sum_7 = _e108 + ((0.09515851 * hw_2) * _e114);
     float _e117 = sum_7;
-    float _e123 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.8656312 * hw_2));
+    float _e123 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.8656312 * hw_2));
     sum_7 = _e117 + ((0.09515851 * hw_2) * _e123);
     float _e126 = sum_7;
-    float _e132 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.944575 * hw_2));
+    float _e132 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.944575 * hw_2));
     sum_7 = _e126 + ((0.062253524 * hw_2) * _e132);
     float _e135 = sum_7;
-    float _e141 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.944575 * hw_2));
+    float _e141 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.944575 * hw_2));
     sum_7 = _e135 + ((0.062253524 * hw_2) * _e141);
     float _e144 = sum_7;
-    float _e150 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 - (0.9894009 * hw_2));
+    float _e150 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 - (0.9894009 * hw_2));
     sum_7 = _e144 + ((0.02715246 * hw_2) * _e150);
     float _e153 = sum_7;
-    float _e159 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, c_19 + (0.9894009 * hw_2));
+    float _e159 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, c_20 + (0.9894009 * hw_2));
     sum_7 = _e153 + ((0.02715246 * hw_2) * _e159);
     float _e162 = sum_7;
     return _e162;
 }
 
 metal::float3 airlight_outline_boundary(
-    AirlightOutline o_1,
+    AirlightOutline o_2,
     metal::float2 q_5
 ) {
     float best = AIRLIGHT_FLT_MAX;
     metal::float2 nearest_1 = {};
     bool inside = true;
     uint i_30 = 0u;
-    bool local_181 = {};
-    if (o_1.radius > 0.0) {
-        metal::float2 qc = q_5 - o_1.corners.inner[0];
+    bool local_184 = {};
+    if (o_2.radius > 0.0) {
+        metal::float2 qc = q_5 - o_2.corners.inner[0];
         float dq = metal::sqrt((qc.x * qc.x) + (qc.y * qc.y));
-        return metal::float3(o_1.corners.inner[0] + ((qc * o_1.radius) / metal::float2(dq)), (dq <= o_1.radius) ? 1.0 : 0.0);
+        return metal::float3(o_2.corners.inner[0] + ((qc * o_2.radius) / metal::float2(dq)), (dq <= o_2.radius) ? 1.0 : 0.0);
     }
     nearest_1 = q_5;
     uint2 loop_bound_35 = uint2(4294967295u);
@@ -7391,18 +7515,18 @@ metal::float3 airlight_outline_boundary(
         }
         {
             uint _e40 = i_30;
-            metal::float2 a_46 = o_1.corners.inner[metal::min(unsigned(_e40), 3u)];
+            metal::float2 a_48 = o_2.corners.inner[metal::min(unsigned(_e40), 3u)];
             uint _e43 = i_30;
-            metal::float2 b_23 = o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)];
+            metal::float2 b_25 = o_2.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)];
             bool _e49 = inside;
             if (_e49) {
-                local_181 = (((q_5.x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x) * (o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y)) - ((q_5.y - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].y) * (o_1.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].x - o_1.corners.inner[metal::min(unsigned(_e40), 3u)].x))) <= 0.0;
+                local_184 = (((q_5.x - o_2.corners.inner[metal::min(unsigned(_e40), 3u)].x) * (o_2.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].y - o_2.corners.inner[metal::min(unsigned(_e40), 3u)].y)) - ((q_5.y - o_2.corners.inner[metal::min(unsigned(_e40), 3u)].y) * (o_2.corners.inner[metal::min(unsigned(airlight_naga_mod(_e43 + 1u, 4u)), 3u)].x - o_2.corners.inner[metal::min(unsigned(_e40), 3u)].x))) <= 0.0;
             } else {
-                local_181 = false;
+                local_184 = false;
             }
-            bool _e70 = local_181;
+            bool _e70 = local_184;
             inside = _e70;
-            metal::float2 _e71 = airlight_edge_nearest(a_46, b_23, q_5);
+            metal::float2 _e71 = airlight_edge_nearest(a_48, b_25, q_5);
             float dd = ((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y));
             float _e87 = best;
             if (dd < _e87) {
@@ -7417,24 +7541,24 @@ metal::float3 airlight_outline_boundary(
 }
 
 metal::float2 airlight_outline_nearest(
-    AirlightOutline o_2,
+    AirlightOutline o_3,
     metal::float2 q_6
 ) {
-    metal::float3 _e2 = airlight_outline_boundary(o_2, q_6);
+    metal::float3 _e2 = airlight_outline_boundary(o_3, q_6);
     return (_e2.z > 0.0) ? q_6 : _e2.xy;
 }
 
 AirlightFlatLobe airlight_flat_lobe(
-    AirlightArea a_23,
+    AirlightArea a_25,
     float z_11,
-    AirlightOutline o_3,
+    AirlightOutline o_4,
     metal::float2 centre_1,
     float size_1
 ) {
     uint j_6 = 0u;
-    bool local_182 = {};
-    bool local_183 = {};
-    bool local_184 = {};
+    bool local_185 = {};
+    bool local_186 = {};
+    bool local_187 = {};
     float _e10 = airlight_atan(size_1 / metal::sqrt(metal::dot(centre_1, centre_1) + (z_11 * z_11)));
     uint2 loop_bound_36 = uint2(4294967295u);
     bool loop_init_35 = true;
@@ -7453,34 +7577,34 @@ AirlightFlatLobe airlight_flat_lobe(
         }
         {
             uint _e20 = j_6;
-            metal::float2 lobe_5 = (_e20 == 1u) ? a_23.lobes.zw : a_23.lobes.xy;
-            metal::float3 p_5 = lobe_5.x * a_23.dirs;
+            metal::float2 lobe_5 = (_e20 == 1u) ? a_25.lobes.zw : a_25.lobes.xy;
+            metal::float3 p_5 = lobe_5.x * a_25.dirs;
             if (lobe_5.y > 0.0) {
-                local_182 = p_5.z < 0.0;
+                local_185 = p_5.z < 0.0;
             } else {
-                local_182 = false;
+                local_185 = false;
             }
-            bool _e36 = local_182;
+            bool _e36 = local_185;
             if (_e36) {
-                local_183 = lobe_5.y < (_e10 + _e10);
+                local_186 = lobe_5.y < (_e10 + _e10);
             } else {
-                local_183 = false;
+                local_186 = false;
             }
-            bool _e43 = local_183;
+            bool _e43 = local_186;
             if (_e43) {
                 float l_4 = z_11 / -(p_5.z);
                 metal::float2 q_14 = l_4 * p_5.xy;
-                metal::float2 _e49 = airlight_outline_nearest(o_3, q_14);
+                metal::float2 _e49 = airlight_outline_nearest(o_4, q_14);
                 metal::float3 to_near = metal::float3(_e49, -(z_11));
                 float cos_1 = metal::min(metal::dot(p_5, to_near) / metal::sqrt(metal::dot(to_near, to_near)), 1.0);
                 bool on_emitter = metal::length(_e49 - q_14) <= (0.0000019073486 * ((metal::length(q_14) + size_1) + z_11));
                 if (!(on_emitter)) {
                     float _e69 = airlight_acos(cos_1);
-                    local_184 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y);
+                    local_187 = _e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y);
                 } else {
-                    local_184 = true;
+                    local_187 = true;
                 }
-                bool _e75 = local_184;
+                bool _e75 = local_187;
                 if (_e75) {
                     return AirlightFlatLobe {p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter};
                 }
@@ -7505,20 +7629,20 @@ metal::float4 airlight_edge_at(
     float sigma_13 = (rule_1.reach * -(_e4.x)) / _e4.y;
     float r2_3 = (rule_1.h * rule_1.h) + (sigma_13 * sigma_13);
     float r_13 = metal::sqrt(r2_3);
-    metal::float2 m_12 = metal::float2(rule_1.t.y, -(rule_1.t.x));
-    return metal::float4(((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / metal::float2(r_13), r_13, (rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3));
+    metal::float2 m_13 = metal::float2(rule_1.t.y, -(rule_1.t.x));
+    return metal::float4(((rule_1.h * m_13) + (sigma_13 * rule_1.t)) / metal::float2(r_13), r_13, (rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3));
 }
 
 metal::float2 airlight_clip(
     metal::float2 chord,
-    metal::float2 a_24,
-    metal::float2 b_14,
+    metal::float2 a_26,
+    metal::float2 b_16,
     metal::float2 q_7,
     metal::float2 e_5
 ) {
-    metal::float2 m_13 = metal::float2(b_14.y - a_24.y, a_24.x - b_14.x);
-    float num = ((q_7.x - a_24.x) * m_13.x) + ((q_7.y - a_24.y) * m_13.y);
-    float den = (e_5.x * m_13.x) + (e_5.y * m_13.y);
+    metal::float2 m_14 = metal::float2(b_16.y - a_26.y, a_26.x - b_16.x);
+    float num = ((q_7.x - a_26.x) * m_14.x) + ((q_7.y - a_26.y) * m_14.y);
+    float den = (e_5.x * m_14.x) + (e_5.y * m_14.y);
     if (den > 0.0) {
         return metal::float2(chord.x, metal::min(chord.y, -(num) / den));
     }
@@ -7532,42 +7656,42 @@ metal::float2 airlight_clip(
 }
 
 metal::float2 airlight_outline_chord(
-    AirlightOutline o_4,
+    AirlightOutline o_5,
     metal::float2 q_8,
     metal::float2 e_6
 ) {
     metal::float2 chord_1 = metal::float2(0.0, 340282350000000000000000000000000000000.0);
-    if (o_4.radius > 0.0) {
-        metal::float2 qc_1 = q_8 - o_4.corners.inner[0];
-        float a_47 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
-        float b_24 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
+    if (o_5.radius > 0.0) {
+        metal::float2 qc_1 = q_8 - o_5.corners.inner[0];
+        float a_49 = (e_6.x * e_6.x) + (e_6.y * e_6.y);
+        float b_26 = (qc_1.x * e_6.x) + (qc_1.y * e_6.y);
         float dq_1 = metal::sqrt((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y));
-        float k_13 = (dq_1 - o_4.radius) * (dq_1 + o_4.radius);
-        float disc_3 = (b_24 * b_24) - (a_47 * k_13);
+        float k_13 = (dq_1 - o_5.radius) * (dq_1 + o_5.radius);
+        float disc_3 = (b_26 * b_26) - (a_49 * k_13);
         if (!((disc_3 > 0.0))) {
             return metal::float2(0.0);
         }
         float root_3 = metal::sqrt(disc_3);
-        float t_11 = -(b_24) - (((as_type<uint>(b_24) & 2147483648u) != 0u) ? -(root_3) : root_3);
-        float r1_2 = t_11 / a_47;
+        float t_11 = -(b_26) - (((as_type<uint>(b_26) & 2147483648u) != 0u) ? -(root_3) : root_3);
+        float r1_2 = t_11 / a_49;
         float r2_4 = k_13 / t_11;
-        float hi_9 = metal::max(r1_2, r2_4);
-        if (!((hi_9 > 0.0))) {
+        float hi_10 = metal::max(r1_2, r2_4);
+        if (!((hi_10 > 0.0))) {
             return metal::float2(0.0);
         }
-        return metal::float2(metal::max(metal::min(r1_2, r2_4), 0.0), hi_9);
+        return metal::float2(metal::max(metal::min(r1_2, r2_4), 0.0), hi_10);
     }
     metal::float2 _e70 = chord_1;
-    metal::float2 _e75 = airlight_clip(_e70, o_4.corners.inner[0], o_4.corners.inner[1], q_8, e_6);
+    metal::float2 _e75 = airlight_clip(_e70, o_5.corners.inner[0], o_5.corners.inner[1], q_8, e_6);
     chord_1 = _e75;
     metal::float2 _e76 = chord_1;
-    metal::float2 _e81 = airlight_clip(_e76, o_4.corners.inner[1], o_4.corners.inner[2], q_8, e_6);
+    metal::float2 _e81 = airlight_clip(_e76, o_5.corners.inner[1], o_5.corners.inner[2], q_8, e_6);
     chord_1 = _e81;
     metal::float2 _e82 = chord_1;
-    metal::float2 _e87 = airlight_clip(_e82, o_4.corners.inner[2], o_4.corners.inner[3], q_8, e_6);
+    metal::float2 _e87 = airlight_clip(_e82, o_5.corners.inner[2], o_5.corners.inner[3], q_8, e_6);
     chord_1 = _e87;
     metal::float2 _e88 = chord_1;
-    metal::float2 _e93 = airlight_clip(_e88, o_4.corners.inner[3], o_4.corners.inner[0], q_8, e_6);
+    metal::float2 _e93 = airlight_clip(_e88, o_5.corners.inner[3], o_5.corners.inner[0], q_8, e_6);
     return _e93;
 }
 
@@ -7601,19 +7725,19 @@ float airlight_flat_lobe_node(
     float g_27
 ) {
     metal::float3 _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
-    float c_20 = -(lobe_1.p[2]) * (_e7.x - (k_7 * _e7.y));
-    if (!((c_20 > 0.0))) {
+    float c_21 = -(lobe_1.p[2]) * (_e7.x - (k_7 * _e7.y));
+    if (!((c_21 > 0.0))) {
         return 0.0;
     }
-    float _e20 = airlight_emitted(s_40, c_20);
+    float _e20 = airlight_emitted(s_40, c_21);
     float _e31 = airlight_area_phase_about(s_40, lobe_1.sign, _e7.xy);
-    return (((_e20 * metal::exp(metal::min((-(s_40.sigma_t) * z_12) / c_20, 0.0))) * _e31) * _e7.y) * _e7.z;
+    return (((_e20 * metal::exp(metal::min((-(s_40.sigma_t) * z_12) / c_21, 0.0))) * _e31) * _e7.y) * _e7.z;
 }
 
 float airlight_flat_lobe_along(
     AirlightScene s_41,
     float z_13,
-    AirlightOutline o_5,
+    AirlightOutline o_6,
     AirlightFlatLobe lobe_2,
     metal::float3 u_4,
     metal::float3 v_6,
@@ -7622,7 +7746,7 @@ float airlight_flat_lobe_along(
     float sum_8 = 0.0;
     metal::float3 w_9 = (cs_2.x * u_4) + (cs_2.y * v_6);
     float k_14 = w_9.z / -(lobe_2.p[2]);
-    metal::float2 _e23 = airlight_outline_chord(o_5, lobe_2.q, w_9.xy + (k_14 * metal::float3(lobe_2.p).xy));
+    metal::float2 _e23 = airlight_outline_chord(o_6, lobe_2.q, w_9.xy + (k_14 * metal::float3(lobe_2.p).xy));
     if (!((_e23.x < _e23.y))) {
         return 0.0;
     }
@@ -7630,55 +7754,55 @@ float airlight_flat_lobe_along(
     float _e41 = airlight_atan2_upper(_e23.y, lobe_2.l + (k_14 * _e23.y));
     metal::float2 _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     float graded_8 = _e42.x;
-    float c_21 = 0.5 * _e42.y;
+    float c_22 = 0.5 * _e42.y;
     float hw_3 = 0.5 * _e42.y;
     float _e52 = sum_8;
-    float _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.09501251 * hw_3));
+    float _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.09501251 * hw_3));
     sum_8 = _e52 + ((0.1894506 * hw_3) * _e58);
     float _e61 = sum_8;
-    float _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.09501251 * hw_3));
+    float _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.09501251 * hw_3));
     sum_8 = _e61 + ((0.1894506 * hw_3) * _e67);
     float _e70 = sum_8;
-    float _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.28160354 * hw_3));
+    float _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.28160354 * hw_3));
     sum_8 = _e70 + ((0.18260342 * hw_3) * _e76);
     float _e79 = sum_8;
-    float _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.28160354 * hw_3));
+    float _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.28160354 * hw_3));
     sum_8 = _e79 + ((0.18260342 * hw_3) * _e85);
     float _e88 = sum_8;
-    float _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.45801678 * hw_3));
+    float _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.45801678 * hw_3));
     sum_8 = _e88 + ((0.16915652 * hw_3) * _e94);
     float _e97 = sum_8;
-    float _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.45801678 * hw_3));
+    float _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.45801678 * hw_3));
     sum_8 = _e97 + ((0.16915652 * hw_3) * _e103);
     float _e106 = sum_8;
-    float _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.61787623 * hw_3));
+    float _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.61787623 * hw_3));
     sum_8 = _e106 + ((0.14959599 * hw_3) * _e112);
     float _e115 = sum_8;
-    float _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.61787623 * hw_3));
+    float _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.61787623 * hw_3));
     sum_8 = _e115 + ((0.14959599 * hw_3) * _e121);
     float _e124 = sum_8;
-    float _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.7554044 * hw_3));
+    float _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.7554044 * hw_3));
     sum_8 = _e124 + ((0.12462897 * hw_3) * _e130);
     float _e133 = sum_8;
-    float _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.7554044 * hw_3));
+    float _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.7554044 * hw_3));
     sum_8 = _e133 + ((0.12462897 * hw_3) * _e139);
     float _e142 = sum_8;
-    float _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.8656312 * hw_3));
+    float _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.8656312 * hw_3));
     sum_8 = _e142 + ((0.09515851 * hw_3) * _e148);
     float _e151 = sum_8;
-    float _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.8656312 * hw_3));
+    float _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.8656312 * hw_3));
     sum_8 = _e151 + ((0.09515851 * hw_3) * _e157);
     float _e160 = sum_8;
-    float _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.944575 * hw_3));
+    float _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.944575 * hw_3));
     sum_8 = _e160 + ((0.062253524 * hw_3) * _e166);
     float _e169 = sum_8;
-    float _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.944575 * hw_3));
+    float _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.944575 * hw_3));
     sum_8 = _e169 + ((0.062253524 * hw_3) * _e175);
     float _e178 = sum_8;
-    float _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 - (0.9894009 * hw_3));
+    float _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 - (0.9894009 * hw_3));
     sum_8 = _e178 + ((0.02715246 * hw_3) * _e184);
     float _e187 = sum_8;
-    float _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_21 + (0.9894009 * hw_3));
+    float _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, c_22 + (0.9894009 * hw_3));
     sum_8 = _e187 + ((0.02715246 * hw_3) * _e193);
     float _e196 = sum_8;
     return _e196;
@@ -7709,18 +7833,18 @@ metal::float2 airlight_cos_sin_turns(
 }
 
 AirlightEdgeRule airlight_edge_rule(
-    metal::float2 a_25,
-    metal::float2 b_15,
+    metal::float2 a_27,
+    metal::float2 b_17,
     float width_1
 ) {
-    metal::float2 e_16 = b_15 - a_25;
+    metal::float2 e_16 = b_17 - a_27;
     float el = metal::sqrt((e_16.x * e_16.x) + (e_16.y * e_16.y));
     metal::float2 t_12 = e_16 / metal::float2(el);
-    float h_9 = ((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el;
-    float reach_3 = metal::sqrt((h_9 * h_9) + (width_1 * width_1));
-    float _e27 = airlight_atan2_(metal::dot(a_25, t_12), reach_3);
-    float _e29 = airlight_atan2_(metal::dot(b_15, t_12), reach_3);
-    return AirlightEdgeRule {h_9, {}, t_12, reach_3, _e27, _e29};
+    float h_10 = ((a_27.x * b_17.y) - (a_27.y * b_17.x)) / el;
+    float reach_3 = metal::sqrt((h_10 * h_10) + (width_1 * width_1));
+    float _e27 = airlight_atan2_(metal::dot(a_27, t_12), reach_3);
+    float _e29 = airlight_atan2_(metal::dot(b_17, t_12), reach_3);
+    return AirlightEdgeRule {h_10, {}, t_12, reach_3, _e27, _e29};
 }
 
 metal::float4 airlight_edge_node(
@@ -7736,9 +7860,9 @@ metal::float4 airlight_edge_node(
 metal::float4 airlight_sort4_(
     metal::float4 x_25
 ) {
-    metal::float4 a_48 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
-    metal::float4 b_25 = metal::float4(metal::min(a_48.x, a_48.z), metal::min(a_48.y, a_48.w), metal::max(a_48.x, a_48.z), metal::max(a_48.y, a_48.w));
-    return metal::float4(b_25.x, metal::min(b_25.y, b_25.z), metal::max(b_25.y, b_25.z), b_25.w);
+    metal::float4 a_50 = metal::float4(metal::min(x_25.x, x_25.y), metal::max(x_25.x, x_25.y), metal::min(x_25.z, x_25.w), metal::max(x_25.z, x_25.w));
+    metal::float4 b_27 = metal::float4(metal::min(a_50.x, a_50.z), metal::min(a_50.y, a_50.w), metal::max(a_50.x, a_50.z), metal::max(a_50.y, a_50.w));
+    return metal::float4(b_27.x, metal::min(b_27.y, b_27.z), metal::max(b_27.y, b_27.z), b_27.w);
 }
 
 AirlightChordEdges airlight_chord_edges(
@@ -7749,8 +7873,8 @@ AirlightChordEdges airlight_chord_edges(
     float farthest = 0.0;
     AirlightChordEdges edges_1 = AirlightChordEdges {metal::float2(0.0), metal::float2(0.0), 0.0};
     uint i_32 = 0u;
-    bool local_185 = {};
-    bool local_186 = {};
+    bool local_188 = {};
+    bool local_189 = {};
     uint2 loop_bound_37 = uint2(4294967295u);
     bool loop_init_36 = true;
     while(true) {
@@ -7768,31 +7892,31 @@ AirlightChordEdges airlight_chord_edges(
         }
         {
             uint _e18 = i_32;
-            metal::float2 a_49 = y_6.inner[metal::min(unsigned(_e18), 3u)];
+            metal::float2 a_51 = y_6.inner[metal::min(unsigned(_e18), 3u)];
             uint _e20 = i_32;
-            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_49;
+            metal::float2 d_5 = y_6.inner[metal::min(unsigned(airlight_naga_mod(_e20 + 1u, 4u)), 3u)] - a_51;
             float den_1 = (e_8.x * d_5.y) - (e_8.y * d_5.x);
             if (den_1 == 0.0) {
                 continue;
             }
             float r_14 = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * d_5.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * d_5.x)) / den_1;
-            float along = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * e_8.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * e_8.x)) / den_1;
+            float along_2 = ((y_6.inner[metal::min(unsigned(_e18), 3u)].x * e_8.y) - (y_6.inner[metal::min(unsigned(_e18), 3u)].y * e_8.x)) / den_1;
             if (r_14 > 0.0) {
-                local_185 = along >= 0.0;
+                local_188 = along_2 >= 0.0;
             } else {
-                local_185 = false;
+                local_188 = false;
             }
-            bool _e59 = local_185;
+            bool _e59 = local_188;
             if (_e59) {
-                local_186 = along <= 1.0;
+                local_189 = along_2 <= 1.0;
             } else {
-                local_186 = false;
+                local_189 = false;
             }
-            bool _e65 = local_186;
+            bool _e65 = local_189;
             if (_e65) {
                 metal::float2 n_8 = metal::float2(d_5.y, -(d_5.x)) / metal::float2(metal::sqrt(metal::dot(d_5, d_5)));
-                float h_10 = metal::dot(n_8, a_49);
-                metal::float2 outward = (h_10 < 0.0) ? -(n_8) : n_8;
+                float h_11 = metal::dot(n_8, a_51);
+                metal::float2 outward = (h_11 < 0.0) ? -(n_8) : n_8;
                 float _e79 = nearest_2;
                 if (r_14 < _e79) {
                     nearest_2 = r_14;
@@ -7802,7 +7926,7 @@ AirlightChordEdges airlight_chord_edges(
                 if (r_14 > _e82) {
                     farthest = r_14;
                     edges_1.exit = outward;
-                    edges_1.exit_h = metal::abs(h_10);
+                    edges_1.exit_h = metal::abs(h_11);
                 }
             }
         }
@@ -7815,8 +7939,8 @@ float airlight_line_beta(
     AirlightEdgeRule rule_3,
     metal::float2 cs_3
 ) {
-    metal::float2 m_14 = metal::float2(rule_3.t.y, -(rule_3.t.x));
-    float _e17 = airlight_atan2_(metal::dot(cs_3, rule_3.t) * rule_3.h, metal::max(metal::dot(cs_3, m_14), 0.0) * rule_3.reach);
+    metal::float2 m_15 = metal::float2(rule_3.t.y, -(rule_3.t.x));
+    float _e17 = airlight_atan2_(metal::dot(cs_3, rule_3.t) * rule_3.h, metal::max(metal::dot(cs_3, m_15), 0.0) * rule_3.reach);
     return _e17;
 }
 
@@ -7843,24 +7967,24 @@ metal::float3 airlight_mercator_node(
     uint i_33
 ) {
     float _e5 = airlight_mercator_cut(airlight_naga_div(i_33, 12u));
-    float lo_9 = metal::max(ua, _e5);
+    float lo_10 = metal::max(ua, _e5);
     float _e11 = airlight_mercator_cut(airlight_naga_div(i_33, 12u) + 1u);
-    float hi_10 = metal::min(ub, _e11);
-    if (!((lo_9 < hi_10))) {
+    float hi_11 = metal::min(ub, _e11);
+    if (!((lo_10 < hi_11))) {
         return metal::float3(0.0);
     }
     metal::float2 _e19 = airlight_triangle_rule(airlight_naga_mod(i_33, 12u));
-    float hw_5 = 0.5 * (hi_10 - lo_9);
-    float x_38 = (0.5 * (lo_9 + hi_10)) + (hw_5 * _e19.x);
-    float e_17 = metal::exp(-(metal::abs(x_38)));
+    float hw_5 = 0.5 * (hi_11 - lo_10);
+    float x_37 = (0.5 * (lo_10 + hi_11)) + (hw_5 * _e19.x);
+    float e_17 = metal::exp(-(metal::abs(x_37)));
     float sech = (2.0 * e_17) / (1.0 + (e_17 * e_17));
-    return metal::float3(sech, (metal::sign(x_38) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)), (_e19.y * hw_5) * sech);
+    return metal::float3(sech, (metal::sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17)), (_e19.y * hw_5) * sech);
 }
 
 float airlight_mercator_wedge(
     AirlightScene s_42,
     float z_14,
-    AirlightOutline o_6,
+    AirlightOutline o_7,
     AirlightFlatLobe lobe_3,
     metal::float3 u_6,
     metal::float3 v_8,
@@ -7895,7 +8019,7 @@ float airlight_mercator_wedge(
                 continue;
             }
             float _e27 = sum_9;
-            float _e34 = airlight_flat_lobe_along(s_42, z_14, o_6, lobe_3, u_6, v_8, (n_4 * _e23.x) + (t_13 * _e23.y));
+            float _e34 = airlight_flat_lobe_along(s_42, z_14, o_7, lobe_3, u_6, v_8, (n_4 * _e23.x) + (t_13 * _e23.y));
             sum_9 = _e27 + (_e23.z * _e34);
         }
     }
@@ -7906,7 +8030,7 @@ float airlight_mercator_wedge(
 float airlight_flat_about_lobe(
     AirlightScene s_43,
     float z_15,
-    AirlightOutline o_7,
+    AirlightOutline o_8,
     AirlightFlatLobe lobe_4
 ) {
     float sum_10 = 0.0;
@@ -7925,21 +8049,21 @@ float airlight_flat_about_lobe(
     uint j_10 = {};
     metal::float2 merc_first = {};
     metal::float2 merc_last = {};
-    bool local_187 = {};
+    bool local_190 = {};
     AirlightEdgeRule rule_4 = {};
     uint j_11 = {};
     metal::float3 _e5 = airlight_basis_e1_(lobe_4.p);
     metal::float3 v_10 = metal::cross(lobe_4.p, _e5);
     metal::float2 q_15 = lobe_4.q;
-    if (o_7.radius > 0.0) {
+    if (o_8.radius > 0.0) {
         if (lobe_4.on_emitter) {
-            metal::float2 dq_2 = q_15 - o_7.corners.inner[0];
+            metal::float2 dq_2 = q_15 - o_8.corners.inner[0];
             float d_6 = metal::sqrt(metal::dot(dq_2, dq_2));
             if (d_6 > 0.0) {
                 m_4 = dq_2 / metal::float2(d_6);
             }
             metal::float2 _e31 = m_4;
-            metal::float2 rim_e = (o_7.corners.inner[0] + (o_7.radius * _e31)) - q_15;
+            metal::float2 rim_e = (o_8.corners.inner[0] + (o_8.radius * _e31)) - q_15;
             metal::float2 rim = metal::float2(metal::dot(rim_e, _e5.xy), metal::dot(rim_e, v_10.xy));
             float _e41 = m_4.y;
             float _e46 = m_4.x;
@@ -7959,11 +8083,11 @@ float airlight_flat_about_lobe(
             }
             float _e87 = t_4.y;
             float _e91 = t_4.x;
-            float h_11 = (_e87 * rim.x) - (_e91 * rim.y);
-            float half_chord = tl * metal::sqrt(metal::max((o_7.radius - d_6) * (o_7.radius + d_6), 0.0));
+            float h_12 = (_e87 * rim.x) - (_e91 * rim.y);
+            float half_chord = tl * metal::sqrt(metal::max((o_8.radius - d_6) * (o_8.radius + d_6), 0.0));
             float width_5 = metal::min(lobe_4.l * lobe_4.scale, half_chord);
             metal::float2 _e108 = t_4;
-            AirlightEdgeRule rule_7 = AirlightEdgeRule {h_11, {}, _e108, metal::sqrt((h_11 * h_11) + (width_5 * width_5)), -1.5707964, 1.5707964};
+            AirlightEdgeRule rule_7 = AirlightEdgeRule {h_12, {}, _e108, metal::sqrt((h_12 * h_12) + (width_5 * width_5)), -1.5707964, 1.5707964};
             uint2 loop_bound_39 = uint2(4294967295u);
             bool loop_init_38 = true;
             while(true) {
@@ -7980,14 +8104,14 @@ float airlight_flat_about_lobe(
                     break;
                 }
                 {
-                    if (!((h_11 > 0.0))) {
+                    if (!((h_12 > 0.0))) {
                         break;
                     }
                     uint _e124 = j_8;
                     metal::float2 _e125 = airlight_radial_rule(_e124);
                     metal::float4 _e129 = airlight_edge_at(rule_7, 1.5707964 * _e125.x);
                     float _e130 = sum_10;
-                    float _e139 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    float _e139 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e129.xy);
                     sum_10 = _e130 + ((((_e125.y * 0.5) * AIRLIGHT_PI) * _e129.w) * _e139);
                 }
             }
@@ -8014,17 +8138,17 @@ float airlight_flat_about_lobe(
                     metal::float3 _e158 = airlight_azimuths(false, _e157);
                     float _e159 = sum_10;
                     metal::float2 _e163 = t_4;
-                    float _e168 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    float _e168 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
                     sum_10 = _e159 + (_e158.z * _e168);
                 }
             }
             float _e174 = sum_10;
             return _e174;
         }
-        metal::float2 d_7 = o_7.corners.inner[0] - q_15;
+        metal::float2 d_7 = o_8.corners.inner[0] - q_15;
         float dq_3 = metal::sqrt((d_7.x * d_7.x) + (d_7.y * d_7.y));
-        float sb_1 = o_7.radius / dq_3;
-        float cb = metal::sqrt((dq_3 - o_7.radius) * (dq_3 + o_7.radius)) / dq_3;
+        float sb_1 = o_8.radius / dq_3;
+        float cb = metal::sqrt((dq_3 - o_8.radius) * (dq_3 + o_8.radius)) / dq_3;
         float _e195 = airlight_lobe_azimuth(_e5, v_10, d_7);
         float _e207 = airlight_lobe_azimuth(_e5, v_10, metal::float2((d_7.x * cb) - (d_7.y * sb_1), (d_7.y * cb) + (d_7.x * sb_1)));
         float _e209 = airlight_wrap_turn(_e207 - _e195);
@@ -8052,14 +8176,14 @@ float airlight_flat_about_lobe(
                 metal::float3 _e239 = airlight_azimuths(false, _e238);
                 float _e240 = sum_10;
                 metal::float2 _e248 = airlight_cos_sin_turns(centre_2 + (half_19 * _e239.y));
-                float _e249 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                float _e249 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e248);
                 sum_10 = _e240 + (((_e239.z * half_19) * _e239.x) * _e249);
             }
         }
         float _e255 = sum_10;
         return _e255;
     }
-    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_7.corners.inner[0] - q_15, _e5.xy), metal::dot(o_7.corners.inner[0] - q_15, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[1] - q_15, _e5.xy), metal::dot(o_7.corners.inner[1] - q_15, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[2] - q_15, _e5.xy), metal::dot(o_7.corners.inner[2] - q_15, v_10.xy)), metal::float2(metal::dot(o_7.corners.inner[3] - q_15, _e5.xy), metal::dot(o_7.corners.inner[3] - q_15, v_10.xy))}};
+    airlight_type_8 y_14 = airlight_type_8 {{metal::float2(metal::dot(o_8.corners.inner[0] - q_15, _e5.xy), metal::dot(o_8.corners.inner[0] - q_15, v_10.xy)), metal::float2(metal::dot(o_8.corners.inner[1] - q_15, _e5.xy), metal::dot(o_8.corners.inner[1] - q_15, v_10.xy)), metal::float2(metal::dot(o_8.corners.inner[2] - q_15, _e5.xy), metal::dot(o_8.corners.inner[2] - q_15, v_10.xy)), metal::float2(metal::dot(o_8.corners.inner[3] - q_15, _e5.xy), metal::dot(o_8.corners.inner[3] - q_15, v_10.xy))}};
     if (lobe_4.on_emitter) {
         uint2 loop_bound_42 = uint2(4294967295u);
         bool loop_init_41 = true;
@@ -8078,7 +8202,7 @@ float airlight_flat_about_lobe(
             }
             {
                 uint _e310 = i_37;
-                metal::float2 b_26 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
+                metal::float2 b_28 = y_14.inner[metal::min(unsigned(airlight_naga_mod(_e310 + 1u, 4u)), 3u)];
                 uint _e316 = i_37;
                 uint _e318 = i_37;
                 uint _e323 = i_37;
@@ -8144,7 +8268,7 @@ float airlight_flat_about_lobe(
                         uint _e386 = j_9;
                         metal::float4 _e387 = airlight_edge_node(_e380, _e386);
                         float _e388 = sum_10;
-                        float _e391 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        float _e391 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e387.xy);
                         sum_10 = _e388 + (_e387.w * _e391);
                     }
                 }
@@ -8153,14 +8277,14 @@ float airlight_flat_about_lobe(
         float _e400 = sum_10;
         return _e400;
     }
-    float _e409 = airlight_lobe_azimuth(_e5, v_10, (0.5 * (o_7.corners.inner[0] + o_7.corners.inner[2])) - q_15);
-    float _e413 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[0] - q_15);
+    float _e409 = airlight_lobe_azimuth(_e5, v_10, (0.5 * (o_8.corners.inner[0] + o_8.corners.inner[2])) - q_15);
+    float _e413 = airlight_lobe_azimuth(_e5, v_10, o_8.corners.inner[0] - q_15);
     float _e415 = airlight_wrap_turn(_e413 - _e409);
-    float _e419 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[1] - q_15);
+    float _e419 = airlight_lobe_azimuth(_e5, v_10, o_8.corners.inner[1] - q_15);
     float _e421 = airlight_wrap_turn(_e419 - _e409);
-    float _e425 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[2] - q_15);
+    float _e425 = airlight_lobe_azimuth(_e5, v_10, o_8.corners.inner[2] - q_15);
     float _e427 = airlight_wrap_turn(_e425 - _e409);
-    float _e431 = airlight_lobe_azimuth(_e5, v_10, o_7.corners.inner[3] - q_15);
+    float _e431 = airlight_lobe_azimuth(_e5, v_10, o_8.corners.inner[3] - q_15);
     float _e433 = airlight_wrap_turn(_e431 - _e409);
     metal::float4 _e435 = airlight_sort4_(metal::float4(_e415, _e421, _e427, _e433));
     uint2 loop_bound_45 = uint2(4294967295u);
@@ -8187,7 +8311,7 @@ float airlight_flat_about_lobe(
             AirlightChordEdges _e453 = airlight_chord_edges(y_14, _e452);
             metal::float2 n_10 = _e453.entry;
             if (metal::all(n_10 == metal::float2(0.0))) {
-                float c_22 = (first_3 + last_2) * 0.5;
+                float c_23 = (first_3 + last_2) * 0.5;
                 float hw_6 = (last_2 - first_3) * 0.5;
                 j_10 = 0u;
                 uint2 loop_bound_46 = uint2(4294967295u);
@@ -8209,8 +8333,8 @@ float airlight_flat_about_lobe(
                         uint _e470 = j_10;
                         metal::float2 _e471 = airlight_triangle_rule(_e470);
                         float _e472 = sum_10;
-                        metal::float2 _e478 = airlight_cos_sin_turns(c_22 + (hw_6 * _e471.x));
-                        float _e479 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        metal::float2 _e478 = airlight_cos_sin_turns(c_23 + (hw_6 * _e471.x));
+                        float _e479 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e478);
                         sum_10 = _e472 + ((_e471.y * hw_6) * _e479);
                     }
                 }
@@ -8223,11 +8347,11 @@ float airlight_flat_about_lobe(
             float exit_h = _e453.exit_h;
             float width_6 = lobe_4.l * lobe_4.scale;
             if (exit_h > 0.0) {
-                local_187 = exit_h < width_6;
+                local_190 = exit_h < width_6;
             } else {
-                local_187 = false;
+                local_190 = false;
             }
-            bool _e499 = local_187;
+            bool _e499 = local_190;
             if (_e499) {
                 rule_4 = AirlightEdgeRule {exit_h, {}, metal::float2(-(_e453.exit.y), _e453.exit.x), metal::sqrt((exit_h * exit_h) + (width_6 * width_6)), 0.0, 0.0};
                 metal::float2 _e514 = merc_first;
@@ -8272,7 +8396,7 @@ float airlight_flat_about_lobe(
                         uint _e541 = j_11;
                         metal::float4 _e542 = airlight_edge_node(_e540, _e541);
                         float _e543 = sum_10;
-                        float _e546 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        float _e546 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e542.xy);
                         sum_10 = _e543 + (_e542.w * _e546);
                     }
                 }
@@ -8280,7 +8404,7 @@ float airlight_flat_about_lobe(
             float _e552 = sum_10;
             metal::float2 _e553 = merc_first;
             metal::float2 _e554 = merc_last;
-            float _e555 = airlight_mercator_wedge(s_43, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            float _e555 = airlight_mercator_wedge(s_43, z_15, o_8, lobe_4, _e5, v_10, n_10, _e553, _e554);
             sum_10 = _e552 + _e555;
         }
     }
@@ -8290,55 +8414,55 @@ float airlight_flat_about_lobe(
 
 float airlight_disc(
     AirlightScene s_44,
-    AirlightArea a_26,
+    AirlightArea a_28,
     metal::float3 x_26
 ) {
-    bool local_188 = {};
-    bool local_189 = {};
+    bool local_191 = {};
+    bool local_192 = {};
     metal::float2 u_7 = metal::float2(0.0);
     AirlightAbove above_3 = {};
     float sum_11 = 0.0;
     uint i_40 = 0u;
     metal::float2 e_9 = {};
     float r_max_1 = {};
-    metal::float3 rel_1 = x_26 - a_26.c;
-    float z_20 = metal::dot(rel_1, a_26.n);
+    metal::float3 rel_1 = x_26 - a_28.c;
+    float z_20 = metal::dot(rel_1, a_28.n);
     if (!((z_20 > 0.0))) {
         return 0.0;
     }
-    float fx = metal::dot(rel_1, a_26.a1_);
-    float fy_1 = metal::dot(rel_1, a_26.a2_);
+    float fx = metal::dot(rel_1, a_28.a1_);
+    float fy_1 = metal::dot(rel_1, a_28.a2_);
     float rf = metal::sqrt((fx * fx) + (fy_1 * fy_1));
-    float radius_2 = a_26.radius;
+    float radius_3 = a_28.radius;
     metal::float2 zero_2 = metal::float2(0.0);
-    AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2}}, radius_2};
-    AirlightFlatLobe _e30 = airlight_flat_lobe(a_26, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_2);
+    AirlightOutline outline = AirlightOutline {airlight_type_8 {{metal::float2(-(fx), -(fy_1)), zero_2, zero_2, zero_2}}, radius_3};
+    AirlightFlatLobe _e30 = airlight_flat_lobe(a_28, z_20, outline, metal::float2(-(fx), -(fy_1)), radius_3);
     if (_e30.scale > 0.0) {
         float _e34 = airlight_flat_about_lobe(s_44, z_20, outline, _e30);
         return _e34;
     }
-    if (rf <= radius_2) {
+    if (rf <= radius_3) {
         if (!((rf == 0.0))) {
-            bool _e44 = airlight_far_from_edge(s_44, radius_2 - rf, z_20);
-            local_189 = _e44;
+            bool _e44 = airlight_far_from_edge(s_44, radius_3 - rf, z_20);
+            local_192 = _e44;
         } else {
-            local_189 = true;
+            local_192 = true;
         }
-        bool _e46 = local_189;
-        local_188 = _e46;
+        bool _e46 = local_192;
+        local_191 = _e46;
     } else {
-        local_188 = false;
+        local_191 = false;
     }
-    bool inside_2 = local_188;
+    bool inside_2 = local_191;
     AirlightAbove _e54 = airlight_above(z_20, metal::float2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
         u_7 = metal::float2(-(fx) / rf, -(fy_1) / rf);
         metal::float2 _e63 = u_7;
-        AirlightAbove _e65 = airlight_above(z_20, (rf - radius_2) * _e63);
+        AirlightAbove _e65 = airlight_above(z_20, (rf - radius_3) * _e63);
         above_3 = _e65;
     }
-    float k_15 = (rf - radius_2) * (rf + radius_2);
+    float k_15 = (rf - radius_3) * (rf + radius_3);
     uint2 loop_bound_48 = uint2(4294967295u);
     bool loop_init_47 = true;
     while(true) {
@@ -8362,18 +8486,18 @@ float airlight_disc(
             float _e89 = u_7.y;
             float _e93 = u_7.x;
             e_9 = metal::float2((_e77.x * _e80) - (_e77.y * _e84), (_e77.x * _e89) + (_e77.y * _e93));
-            r_max_1 = (radius_2 + radius_2) * _e77.x;
+            r_max_1 = (radius_3 + radius_3) * _e77.x;
             if (inside_2) {
                 e_9 = _e77.xy;
-                float b_27 = (fx * _e77.x) + (fy_1 * _e77.y);
-                float root_4 = metal::sqrt((b_27 * b_27) - k_15);
-                r_max_1 = (b_27 > 0.0) ? (-(k_15) / (b_27 + root_4)) : (root_4 - b_27);
+                float b_29 = (fx * _e77.x) + (fy_1 * _e77.y);
+                float root_4 = metal::sqrt((b_29 * b_29) - k_15);
+                r_max_1 = (b_29 > 0.0) ? (-(k_15) / (b_29 + root_4)) : (root_4 - b_29);
             }
             float _e118 = sum_11;
             AirlightAbove _e120 = above_3;
             metal::float2 _e121 = e_9;
             float _e122 = r_max_1;
-            float _e123 = airlight_flat_radial(s_44, a_26, _e120, _e121, _e122);
+            float _e123 = airlight_flat_radial(s_44, a_28, _e120, _e121, _e122);
             sum_11 = _e118 + (_e77.z * _e123);
         }
     }
@@ -8383,27 +8507,27 @@ float airlight_disc(
 
 float airlight_parallelogram(
     AirlightScene s_45,
-    AirlightArea a_27,
+    AirlightArea a_29,
     metal::float3 x_27
 ) {
     metal::float2 q_9 = {};
-    bool local_190 = {};
+    bool local_193 = {};
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = {};
-    metal::float3 rel_2 = x_27 - a_27.c;
-    float z_21 = metal::dot(rel_2, a_27.n);
+    metal::float3 rel_2 = x_27 - a_29.c;
+    float z_21 = metal::dot(rel_2, a_29.n);
     if (!((z_21 > 0.0))) {
         return 0.0;
     }
-    metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_27.a1_), metal::dot(rel_2, a_27.a2_));
-    metal::float2 u2_1 = metal::float2(metal::dot(a_27.eu, a_27.a1_), metal::dot(a_27.eu, a_27.a2_));
-    metal::float2 v2_1 = metal::float2(metal::dot(a_27.ev, a_27.a1_), metal::dot(a_27.ev, a_27.a2_));
+    metal::float2 foot_1 = metal::float2(metal::dot(rel_2, a_29.a1_), metal::dot(rel_2, a_29.a2_));
+    metal::float2 u2_1 = metal::float2(metal::dot(a_29.eu, a_29.a1_), metal::dot(a_29.eu, a_29.a2_));
+    metal::float2 v2_1 = metal::float2(metal::dot(a_29.ev, a_29.a1_), metal::dot(a_29.ev, a_29.a2_));
     airlight_type_17 corners = airlight_type_17 {{metal::float2(0.0), u2_1, u2_1 + v2_1, v2_1, metal::float2(0.0)}};
     float det = (u2_1.x * v2_1.y) - (u2_1.y * v2_1.x);
     AirlightOutline about_foot = AirlightOutline {airlight_type_8 {{corners.inner[0] - foot_1, corners.inner[1] - foot_1, corners.inner[2] - foot_1, corners.inner[3] - foot_1}}, 0.0};
     float size_2 = 0.5 * metal::max(metal::sqrt(metal::dot(u2_1 + v2_1, u2_1 + v2_1)), metal::sqrt(metal::dot(u2_1 - v2_1, u2_1 - v2_1)));
-    AirlightFlatLobe _e69 = airlight_flat_lobe(a_27, z_21, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
+    AirlightFlatLobe _e69 = airlight_flat_lobe(a_29, z_21, about_foot, (0.5 * corners.inner[2]) - foot_1, size_2);
     if (_e69.scale > 0.0) {
         float _e73 = airlight_flat_about_lobe(s_45, z_21, about_foot, _e69);
         return _e73;
@@ -8412,11 +8536,11 @@ float airlight_parallelogram(
     q_9 = _e76.xy + foot_1;
     if (_e76.z > 0.0) {
         bool _e89 = airlight_far_from_edge(s_45, metal::sqrt(metal::dot(_e76.xy, _e76.xy)), z_21);
-        local_190 = _e89;
+        local_193 = _e89;
     } else {
-        local_190 = false;
+        local_193 = false;
     }
-    bool _e91 = local_190;
+    bool _e91 = local_193;
     if (_e91) {
         q_9 = foot_1;
     }
@@ -8470,7 +8594,7 @@ float airlight_parallelogram(
                     uint _e132 = j_12;
                     metal::float4 _e133 = airlight_edge_node(_e126, _e132);
                     float _e134 = sum_12;
-                    float _e138 = airlight_flat_radial(s_45, a_27, _e94, _e133.xy, _e133.z);
+                    float _e138 = airlight_flat_radial(s_45, a_29, _e94, _e133.xy, _e133.z);
                     sum_12 = _e134 + (_e133.w * _e138);
                 }
             }
@@ -8500,7 +8624,7 @@ metal::float3 airlight_cap_row(
 
 float airlight_sphere_cap(
     AirlightScene s_47,
-    AirlightArea a_28,
+    AirlightArea a_30,
     AirlightCap cap_1
 ) {
     airlight_type_23 rows = airlight_type_23 {{metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)}};
@@ -8509,46 +8633,46 @@ float airlight_sphere_cap(
     float at_2 = {};
     metal::float3 _e4 = airlight_basis_e1_(cap_1.a);
     metal::float3 e2_2 = metal::cross(cap_1.a, _e4);
-    float ad = metal::dot(cap_1.a, a_28.d);
-    float e1d = metal::dot(_e4, a_28.d);
-    float e2d = metal::dot(e2_2, a_28.d);
+    float ad = metal::dot(cap_1.a, a_30.d);
+    float e1d = metal::dot(_e4, a_30.d);
+    float e2d = metal::dot(e2_2, a_30.d);
     metal::float2 _e15 = airlight_graded_range(s_47, 1.5707964);
     float graded_9 = _e15.y;
-    float c_23 = 0.5 * _e15.x;
+    float c_24 = 0.5 * _e15.x;
     float hw_7 = 0.5 * _e15.x;
-    metal::float3 _e63 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e63 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[0] = _e63;
-    metal::float3 _e70 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.09501251 * hw_7), 0.1894506 * hw_7);
+    metal::float3 _e70 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.09501251 * hw_7), 0.1894506 * hw_7);
     rows.inner[1] = _e70;
-    metal::float3 _e77 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e77 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[2] = _e77;
-    metal::float3 _e84 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.28160354 * hw_7), 0.18260342 * hw_7);
+    metal::float3 _e84 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.28160354 * hw_7), 0.18260342 * hw_7);
     rows.inner[3] = _e84;
-    metal::float3 _e91 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e91 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[4] = _e91;
-    metal::float3 _e98 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.45801678 * hw_7), 0.16915652 * hw_7);
+    metal::float3 _e98 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.45801678 * hw_7), 0.16915652 * hw_7);
     rows.inner[5] = _e98;
-    metal::float3 _e105 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e105 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[6] = _e105;
-    metal::float3 _e112 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.61787623 * hw_7), 0.14959599 * hw_7);
+    metal::float3 _e112 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.61787623 * hw_7), 0.14959599 * hw_7);
     rows.inner[7] = _e112;
-    metal::float3 _e119 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e119 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[8] = _e119;
-    metal::float3 _e126 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.7554044 * hw_7), 0.12462897 * hw_7);
+    metal::float3 _e126 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.7554044 * hw_7), 0.12462897 * hw_7);
     rows.inner[9] = _e126;
-    metal::float3 _e133 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e133 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[10] = _e133;
-    metal::float3 _e140 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.8656312 * hw_7), 0.09515851 * hw_7);
+    metal::float3 _e140 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.8656312 * hw_7), 0.09515851 * hw_7);
     rows.inner[11] = _e140;
-    metal::float3 _e147 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e147 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[12] = _e147;
-    metal::float3 _e154 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.944575 * hw_7), 0.062253524 * hw_7);
+    metal::float3 _e154 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.944575 * hw_7), 0.062253524 * hw_7);
     rows.inner[13] = _e154;
-    metal::float3 _e161 = airlight_cap_row(s_47, cap_1, graded_9, c_23 - (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e161 = airlight_cap_row(s_47, cap_1, graded_9, c_24 - (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[14] = _e161;
-    metal::float3 _e168 = airlight_cap_row(s_47, cap_1, graded_9, c_23 + (0.9894009 * hw_7), 0.02715246 * hw_7);
+    metal::float3 _e168 = airlight_cap_row(s_47, cap_1, graded_9, c_24 + (0.9894009 * hw_7), 0.02715246 * hw_7);
     rows.inner[15] = _e168;
-    if (a_28.isotropic) {
+    if (a_30.isotropic) {
         float _e174 = airlight_area_phase(s_47, 0.0);
         float around_1 = 6.2831855 * _e174;
         float _e176 = sum_13;
@@ -8748,7 +8872,7 @@ float airlight_sphere_lobe_node(
 
 float airlight_sphere_about_lobe(
     AirlightScene s_49,
-    AirlightArea a_29,
+    AirlightArea a_31,
     AirlightCap cap_3,
     float sign_3,
     float cos_p_1,
@@ -8761,17 +8885,17 @@ float airlight_sphere_about_lobe(
     uint i_43 = 0u;
     float big_b_1 = {};
     float wpsi = {};
-    bool local_191 = {};
-    bool local_192 = {};
+    bool local_194 = {};
+    bool local_195 = {};
     float mid = {};
-    bool local_193 = {};
+    bool local_196 = {};
     float lo_7 = {};
     float hi_6 = {};
-    bool local_194 = {};
+    bool local_197 = {};
     float around = {};
     uint k_9 = {};
-    bool local_195 = {};
-    metal::float3 p_6 = sign_3 * a_29.d;
+    bool local_198 = {};
+    metal::float3 p_6 = sign_3 * a_31.d;
     metal::float3 _e8 = airlight_basis_e1_(p_6);
     metal::float3 v_11 = metal::cross(p_6, _e8);
     float au = metal::dot(cap_3.a, _e8);
@@ -8815,11 +8939,11 @@ float airlight_sphere_about_lobe(
             wpsi = 0.0;
             if (beside) {
                 uint _e87 = i_43;
-                local_191 = _e87 < 84u;
+                local_194 = _e87 < 84u;
             } else {
-                local_191 = false;
+                local_194 = false;
             }
-            bool _e91 = local_191;
+            bool _e91 = local_194;
             if (_e91) {
                 float _e94 = airlight_mercator_cut(7u);
                 uint _e95 = i_43;
@@ -8838,11 +8962,11 @@ float airlight_sphere_about_lobe(
                 } else {
                     if (inside_3) {
                         uint _e115 = i_43;
-                        local_192 = _e115 < 8u;
+                        local_195 = _e115 < 8u;
                     } else {
-                        local_192 = false;
+                        local_195 = false;
                     }
-                    bool _e119 = local_192;
+                    bool _e119 = local_195;
                     if (_e119) {
                         if (!((eps > 0.0))) {
                             continue;
@@ -8876,11 +9000,11 @@ float airlight_sphere_about_lobe(
             mid = _e167;
             if (beside) {
                 float _e171 = mid;
-                local_193 = _e171 < 0.0;
+                local_196 = _e171 < 0.0;
             } else {
-                local_193 = false;
+                local_196 = false;
             }
-            bool _e175 = local_193;
+            bool _e175 = local_196;
             if (_e175) {
                 float _e176 = mid;
                 mid = _e176 + 6.2831855;
@@ -8906,11 +9030,11 @@ float airlight_sphere_about_lobe(
                 float _e210 = hi_6;
                 float _e211 = lo_7;
                 float _e214 = lo_7;
-                local_194 = (_e210 - _e211) > (AIRLIGHT_LOBE_REACH * metal::max(scale_3, _e214));
+                local_197 = (_e210 - _e211) > (AIRLIGHT_LOBE_REACH * metal::max(scale_3, _e214));
             } else {
-                local_194 = false;
+                local_197 = false;
             }
-            bool cut_3 = local_194;
+            bool cut_3 = local_197;
             around = 0.0;
             k_9 = 0u;
             uint2 loop_bound_53 = uint2(4294967295u);
@@ -8935,79 +9059,79 @@ float airlight_sphere_about_lobe(
                     float _e234 = hi_6;
                     if (cut_3) {
                         uint _e237 = k_9;
-                        local_195 = _e237 == 0u;
+                        local_198 = _e237 == 0u;
                     } else {
-                        local_195 = false;
+                        local_198 = false;
                     }
-                    bool _e241 = local_195;
+                    bool _e241 = local_198;
                     float to_1 = _e241 ? tail_1 : _e234;
                     metal::float2 _e243 = airlight_graded_from(scale_3, start_5, to_1);
                     float graded_10 = _e243.x;
-                    float c_24 = 0.5 * _e243.y;
+                    float c_25 = 0.5 * _e243.y;
                     float hw_8 = 0.5 * _e243.y;
                     float _e251 = around;
                     float _e254 = big_b_1;
-                    float _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, c_24 - (0.09501251 * hw_8));
+                    float _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, c_25 - (0.09501251 * hw_8));
                     around = _e251 + ((0.1894506 * hw_8) * _e258);
                     float _e261 = around;
                     float _e264 = big_b_1;
-                    float _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, c_24 + (0.09501251 * hw_8));
+                    float _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, c_25 + (0.09501251 * hw_8));
                     around = _e261 + ((0.1894506 * hw_8) * _e268);
                     float _e271 = around;
                     float _e274 = big_b_1;
-                    float _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, c_24 - (0.28160354 * hw_8));
+                    float _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, c_25 - (0.28160354 * hw_8));
                     around = _e271 + ((0.18260342 * hw_8) * _e278);
                     float _e281 = around;
                     float _e284 = big_b_1;
-                    float _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, c_24 + (0.28160354 * hw_8));
+                    float _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, c_25 + (0.28160354 * hw_8));
                     around = _e281 + ((0.18260342 * hw_8) * _e288);
                     float _e291 = around;
                     float _e294 = big_b_1;
-                    float _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, c_24 - (0.45801678 * hw_8));
+                    float _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, c_25 - (0.45801678 * hw_8));
                     around = _e291 + ((0.16915652 * hw_8) * _e298);
                     float _e301 = around;
                     float _e304 = big_b_1;
-                    float _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, c_24 + (0.45801678 * hw_8));
+                    float _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, c_25 + (0.45801678 * hw_8));
                     around = _e301 + ((0.16915652 * hw_8) * _e308);
                     float _e311 = around;
                     float _e314 = big_b_1;
-                    float _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, c_24 - (0.61787623 * hw_8));
+                    float _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, c_25 - (0.61787623 * hw_8));
                     around = _e311 + ((0.14959599 * hw_8) * _e318);
                     float _e321 = around;
                     float _e324 = big_b_1;
-                    float _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, c_24 + (0.61787623 * hw_8));
+                    float _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, c_25 + (0.61787623 * hw_8));
                     around = _e321 + ((0.14959599 * hw_8) * _e328);
                     float _e331 = around;
                     float _e334 = big_b_1;
-                    float _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, c_24 - (0.7554044 * hw_8));
+                    float _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, c_25 - (0.7554044 * hw_8));
                     around = _e331 + ((0.12462897 * hw_8) * _e338);
                     float _e341 = around;
                     float _e344 = big_b_1;
-                    float _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, c_24 + (0.7554044 * hw_8));
+                    float _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, c_25 + (0.7554044 * hw_8));
                     around = _e341 + ((0.12462897 * hw_8) * _e348);
                     float _e351 = around;
                     float _e354 = big_b_1;
-                    float _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, c_24 - (0.8656312 * hw_8));
+                    float _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, c_25 - (0.8656312 * hw_8));
                     around = _e351 + ((0.09515851 * hw_8) * _e358);
                     float _e361 = around;
                     float _e364 = big_b_1;
-                    float _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, c_24 + (0.8656312 * hw_8));
+                    float _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, c_25 + (0.8656312 * hw_8));
                     around = _e361 + ((0.09515851 * hw_8) * _e368);
                     float _e371 = around;
                     float _e374 = big_b_1;
-                    float _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, c_24 - (0.944575 * hw_8));
+                    float _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, c_25 - (0.944575 * hw_8));
                     around = _e371 + ((0.062253524 * hw_8) * _e378);
                     float _e381 = around;
                     float _e384 = big_b_1;
-                    float _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, c_24 + (0.944575 * hw_8));
+                    float _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, c_25 + (0.944575 * hw_8));
                     around = _e381 + ((0.062253524 * hw_8) * _e388);
                     float _e391 = around;
                     float _e394 = big_b_1;
-                    float _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, c_24 - (0.9894009 * hw_8));
+                    float _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, c_25 - (0.9894009 * hw_8));
                     around = _e391 + ((0.02715246 * hw_8) * _e398);
                     float _e401 = around;
                     float _e404 = big_b_1;
-                    float _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, c_24 + (0.9894009 * hw_8));
+                    float _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, c_25 + (0.9894009 * hw_8));
                     around = _e401 + ((0.02715246 * hw_8) * _e408);
                 }
             }
@@ -9023,136 +9147,157 @@ float airlight_sphere_about_lobe(
 
 float airlight_sphere(
     AirlightScene s_50,
-    AirlightArea a_30,
-    metal::float3 x_28
+    AirlightArea a_32,
+    float along
 ) {
+    float gap_4 = {};
+    bool local_199 = {};
     float chosen = 0.0;
     float sign_4 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
-    bool local_196 = {};
-    bool local_197 = {};
-    bool local_198 = {};
-    bool local_199 = {};
     bool local_200 = {};
     bool local_201 = {};
-    metal::float3 v_12 = a_30.c - x_28;
-    float _e5 = airlight_safe_length(v_12);
-    if (!((_e5 > a_30.radius))) {
+    bool local_202 = {};
+    bool local_203 = {};
+    bool local_204 = {};
+    bool local_205 = {};
+    metal::float3 v_12 = a_32.foot.to_centre - (along * a_32.d);
+    float _e8 = airlight_safe_length(v_12);
+    gap_4 = ((a_32.foot.miss * (a_32.foot.h + a_32.radius)) + (along * along)) / (_e8 + a_32.radius);
+    float _e22 = gap_4;
+    bool _e23 = airlight_is_finite(_e22);
+    if (!(_e23)) {
+        gap_4 = _e8 - a_32.radius;
+    }
+    float _e27 = gap_4;
+    if (_e27 > 0.0) {
+        float _e32 = gap_4;
+        bool _e33 = airlight_is_finite(_e32);
+        local_199 = _e33;
+    } else {
+        local_199 = false;
+    }
+    bool _e35 = local_199;
+    if (!(_e35)) {
         return 0.0;
     }
-    float sin_a_2 = a_30.radius / _e5;
-    float cos_a_3 = metal::sqrt((1.0 - sin_a_2) * (1.0 + sin_a_2));
-    float _e18 = airlight_atan2_upper(sin_a_2, cos_a_3);
-    AirlightCap cap_4 = AirlightCap {v_12 / metal::float3(_e5), _e5, a_30.radius, sin_a_2, cos_a_3, _e18};
+    float _e39 = gap_4;
+    float dc = a_32.radius + _e39;
+    float sin_a_2 = a_32.radius / dc;
+    float _e43 = gap_4;
+    float cos_a_3 = metal::sqrt((_e43 / dc) * (1.0 + sin_a_2));
+    float _e49 = airlight_atan2_upper(sin_a_2, cos_a_3);
+    AirlightCap cap_4 = AirlightCap {v_12 / metal::float3(_e8), dc, a_32.radius, sin_a_2, cos_a_3, _e49};
     uint2 loop_bound_54 = uint2(4294967295u);
     bool loop_init_53 = true;
     while(true) {
         if (metal::all(loop_bound_54 == uint2(0u))) { break; }
         loop_bound_54 -= uint2(loop_bound_54.y == 0u, 1u);
         if (!loop_init_53) {
-            uint _e101 = j_13;
-            j_13 = _e101 + 1u;
+            uint _e132 = j_13;
+            j_13 = _e132 + 1u;
         }
         loop_init_53 = false;
-        uint _e31 = j_13;
-        if (_e31 < 2u) {
+        uint _e62 = j_13;
+        if (_e62 < 2u) {
         } else {
             break;
         }
         {
-            uint _e38 = j_13;
-            metal::float2 lobe_6 = (_e38 == 1u) ? a_30.lobes.zw : a_30.lobes.xy;
-            float c_25 = metal::dot(cap_4.a, lobe_6.x * a_30.d);
-            float _e47 = chosen;
-            if (_e47 == 0.0) {
-                local_196 = lobe_6.y > 0.0;
-            } else {
-                local_196 = false;
-            }
-            bool _e56 = local_196;
-            if (_e56) {
-                local_197 = lobe_6.y < (_e18 + _e18);
-            } else {
-                local_197 = false;
-            }
-            bool _e63 = local_197;
-            if (_e63) {
-                if (!(!((c_25 < -(cap_4.cos_a))))) {
-                    local_199 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
-                } else {
-                    local_199 = true;
-                }
-                bool _e77 = local_199;
-                local_198 = _e77;
-            } else {
-                local_198 = false;
-            }
-            bool _e79 = local_198;
-            if (_e79) {
-                if (!((c_25 > cap_4.cos_a))) {
-                    float _e87 = airlight_acos(c_25);
-                    local_201 = (_e87 - _e18) < metal::max(AIRLIGHT_LOBE_REACH * lobe_6.y, _e18);
-                } else {
-                    local_201 = true;
-                }
-                bool _e95 = local_201;
-                local_200 = _e95;
+            uint _e69 = j_13;
+            metal::float2 lobe_6 = (_e69 == 1u) ? a_32.lobes.zw : a_32.lobes.xy;
+            float c_26 = metal::dot(cap_4.a, lobe_6.x * a_32.d);
+            float _e78 = chosen;
+            if (_e78 == 0.0) {
+                local_200 = lobe_6.y > 0.0;
             } else {
                 local_200 = false;
             }
-            bool _e97 = local_200;
-            if (_e97) {
+            bool _e87 = local_200;
+            if (_e87) {
+                local_201 = lobe_6.y < (_e49 + _e49);
+            } else {
+                local_201 = false;
+            }
+            bool _e94 = local_201;
+            if (_e94) {
+                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                    local_203 = lobe_6.y < AIRLIGHT_BESIDE_SCALE;
+                } else {
+                    local_203 = true;
+                }
+                bool _e108 = local_203;
+                local_202 = _e108;
+            } else {
+                local_202 = false;
+            }
+            bool _e110 = local_202;
+            if (_e110) {
+                if (!((c_26 > cap_4.cos_a))) {
+                    float _e118 = airlight_acos(c_26);
+                    local_205 = (_e118 - _e49) < metal::max(AIRLIGHT_LOBE_REACH * lobe_6.y, _e49);
+                } else {
+                    local_205 = true;
+                }
+                bool _e126 = local_205;
+                local_204 = _e126;
+            } else {
+                local_204 = false;
+            }
+            bool _e128 = local_204;
+            if (_e128) {
                 chosen = lobe_6.y;
                 sign_4 = lobe_6.x;
-                cos_p_2 = c_25;
+                cos_p_2 = c_26;
             }
         }
     }
-    float _e103 = chosen;
-    if (_e103 > 0.0) {
-        float _e106 = sign_4;
-        float _e107 = cos_p_2;
-        float _e108 = chosen;
-        float _e109 = airlight_sphere_about_lobe(s_50, a_30, cap_4, _e106, _e107, _e108);
-        return _e109;
+    float _e134 = chosen;
+    if (_e134 > 0.0) {
+        float _e137 = sign_4;
+        float _e138 = cos_p_2;
+        float _e139 = chosen;
+        float _e140 = airlight_sphere_about_lobe(s_50, a_32, cap_4, _e137, _e138, _e139);
+        return _e140;
     }
-    float _e110 = airlight_sphere_cap(s_50, a_30, cap_4);
-    return _e110;
+    float _e141 = airlight_sphere_cap(s_50, a_32, cap_4);
+    return _e141;
 }
 
 float airlight_emitter_radiance(
     AirlightScene s_51,
-    AirlightArea a_31,
-    metal::float3 x_29
+    AirlightArea a_33,
+    metal::float3 x_28,
+    float along_1
 ) {
     switch(s_51.light_shape) {
         case 2u: {
-            float _e4 = airlight_disc(s_51, a_31, x_29);
-            return _e4;
-        }
-        case 3u: {
-            float _e5 = airlight_parallelogram(s_51, a_31, x_29);
+            float _e5 = airlight_disc(s_51, a_33, x_28);
             return _e5;
         }
-        default: {
-            float _e6 = airlight_sphere(s_51, a_31, x_29);
+        case 3u: {
+            float _e6 = airlight_parallelogram(s_51, a_33, x_28);
             return _e6;
+        }
+        default: {
+            float _e7 = airlight_sphere(s_51, a_33, along_1);
+            return _e7;
         }
     }
 }
 
 float airlight_area_node(
     AirlightScene s_52,
-    AirlightArea a_32,
+    AirlightArea a_34,
     float theta
 ) {
     metal::float2 _e3 = airlight_cos_sin(theta);
-    float along_1 = (a_32.h_eff * _e3.y) / _e3.x;
-    float t_14 = a_32.x_h + along_1;
-    float fade = metal::exp(metal::min(-(s_52.sigma_t) * metal::max((a_32.x_h - s_52.t_min) + along_1, 0.0), 0.0));
-    float _e33 = airlight_emitter_radiance(s_52, a_32, s_52.origin + (t_14 * a_32.d));
-    return ((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
+    float along_3 = (a_34.h_eff * _e3.y) / _e3.x;
+    float t_14 = a_34.x_h + along_3;
+    float fade = metal::exp(metal::min(-(s_52.sigma_t) * metal::max((a_34.x_h - s_52.t_min) + along_3, 0.0), 0.0));
+    float _e33 = airlight_emitter_radiance(s_52, a_34, s_52.origin + (t_14 * a_34.d), along_3);
+    return ((a_34.h_eff / (_e3.x * _e3.x)) * fade) * _e33;
 }
 
 AirlightResult airlight_area_light(
@@ -9163,7 +9308,7 @@ AirlightResult airlight_area_light(
     float k_10 = {};
     float gauss_1 = {};
     uint j_14 = {};
-    bool local_202 = {};
+    bool local_206 = {};
     AirlightArea _e1 = airlight_area(s_53);
     if (_e1.outcome == 1u) {
         return AirlightResult {0.0, 0u};
@@ -9191,7 +9336,7 @@ AirlightResult airlight_area_light(
         {
             float _e27 = st_1.lo;
             float _e29 = st_1.hi;
-            float c_26 = 0.5 * (_e27 + _e29);
+            float c_27 = 0.5 * (_e27 + _e29);
             float _e34 = st_1.hi;
             float _e36 = st_1.lo;
             float hw_9 = 0.5 * (_e34 - _e36);
@@ -9219,13 +9364,13 @@ AirlightResult airlight_area_light(
                     uint _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         uint _e66 = j_14;
-                        local_202 = _e66 < 14u;
+                        local_206 = _e66 < 14u;
                     } else {
-                        local_202 = false;
+                        local_206 = false;
                     }
-                    bool _e70 = local_202;
-                    float x_39 = _e70 ? (c_26 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_26 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
-                    float _e72 = airlight_area_node(s_53, _e1, x_39);
+                    bool _e70 = local_206;
+                    float x_38 = _e70 ? (c_27 - (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x)) : (c_27 + (hw_9 * _e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].x));
+                    float _e72 = airlight_area_node(s_53, _e1, x_38);
                     float _e73 = k_10;
                     k_10 = _e73 + (_e8.inner[metal::min(unsigned(airlight_naga_div(_e49, 2u)), 7u)].y * _e72);
                     float _e77 = gauss_1;
@@ -9257,21 +9402,21 @@ AirlightResult airlight_area_light(
 AirlightResult airlight_in_scatter_area(
     AirlightScene s_54
 ) {
-    bool local_203 = {};
-    bool local_204 = {};
+    bool local_207 = {};
+    bool local_208 = {};
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_203 = s_54.light_shape < AIRLIGHT_SHAPE_DISC;
+        local_207 = s_54.light_shape < AIRLIGHT_SHAPE_DISC;
     } else {
-        local_203 = true;
+        local_207 = true;
     }
-    bool _e10 = local_203;
+    bool _e10 = local_207;
     if (!(_e10)) {
-        local_204 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_208 = s_54.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_204 = true;
+        local_208 = true;
     }
-    bool _e18 = local_204;
+    bool _e18 = local_208;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9282,14 +9427,14 @@ AirlightResult airlight_in_scatter_area(
 AirlightResult airlight_overflowed(
     AirlightResult r_5
 ) {
-    bool local_205 = {};
+    bool local_209 = {};
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_205 = r_5.status == AIRLIGHT_STATUS_INFINITE;
+        local_209 = r_5.status == AIRLIGHT_STATUS_INFINITE;
     } else {
-        local_205 = true;
+        local_209 = true;
     }
-    bool _e11 = local_205;
+    bool _e11 = local_209;
     if (_e11) {
         return AirlightResult {340282350000000000000000000000000000000.0, 2u};
     }
@@ -9300,17 +9445,17 @@ AirlightResult airlight_node_integral(
     AirlightNode n_5
 ) {
     AirlightResult r_6 = AirlightResult {0.0, 0u};
-    bool local_206 = {};
+    bool local_210 = {};
     AirlightCanonical g_29 = {};
     AirlightScene p_7 = n_5.scene;
     bool _e7 = airlight_vec_finite(n_5.scene.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(n_5.scene.dir);
-        local_206 = _e11;
+        local_210 = _e11;
     } else {
-        local_206 = false;
+        local_210 = false;
     }
-    bool _e13 = local_206;
+    bool _e13 = local_210;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -9338,21 +9483,21 @@ AirlightResult airlight_point_integral(
 AirlightResult airlight_in_scatter_point(
     AirlightScene s_55
 ) {
-    bool local_207 = {};
-    bool local_208 = {};
+    bool local_211 = {};
+    bool local_212 = {};
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_207 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_211 = s_55.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_207 = true;
+        local_211 = true;
     }
-    bool _e10 = local_207;
+    bool _e10 = local_211;
     if (!(_e10)) {
-        local_208 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_212 = s_55.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_208 = true;
+        local_212 = true;
     }
-    bool _e18 = local_208;
+    bool _e18 = local_212;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9363,21 +9508,21 @@ AirlightResult airlight_in_scatter_point(
 AirlightResult airlight_in_scatter_route(
     AirlightScene s_56
 ) {
-    bool local_209 = {};
-    bool local_210 = {};
+    bool local_213 = {};
+    bool local_214 = {};
     bool _e1 = airlight_valid(s_56);
     if (!(!(_e1))) {
-        local_209 = s_56.light_shape != AIRLIGHT_SHAPE_POINT;
+        local_213 = s_56.light_shape != AIRLIGHT_SHAPE_POINT;
     } else {
-        local_209 = true;
+        local_213 = true;
     }
-    bool _e10 = local_209;
+    bool _e10 = local_213;
     if (!(_e10)) {
-        local_210 = s_56.surface_kind != AIRLIGHT_SURFACE_NONE;
+        local_214 = s_56.surface_kind != AIRLIGHT_SURFACE_NONE;
     } else {
-        local_210 = true;
+        local_214 = true;
     }
-    bool _e18 = local_210;
+    bool _e18 = local_214;
     if (_e18) {
         return AirlightResult {0.0, 1u};
     }
@@ -9407,9 +9552,9 @@ AirlightResult airlight_in_scatter(
     float k_11 = {};
     float gauss_2 = {};
     uint j_15 = {};
-    bool local_211 = {};
+    bool local_215 = {};
     float f = {};
-    bool local_212 = {};
+    bool local_216 = {};
     bool _e1 = airlight_valid(s_57);
     if (!(_e1)) {
         return AirlightResult {0.0, 1u};
@@ -9446,7 +9591,7 @@ AirlightResult airlight_in_scatter(
         {
             float _e42 = st_2.lo;
             float _e44 = st_2.hi;
-            float c_27 = 0.5 * (_e42 + _e44);
+            float c_28 = 0.5 * (_e42 + _e44);
             float _e49 = st_2.hi;
             float _e51 = st_2.lo;
             float hw_10 = 0.5 * (_e49 - _e51);
@@ -9474,12 +9619,12 @@ AirlightResult airlight_in_scatter(
                     uint _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         uint _e81 = j_15;
-                        local_211 = _e81 < 6u;
+                        local_215 = _e81 < 6u;
                     } else {
-                        local_211 = false;
+                        local_215 = false;
                     }
-                    bool _e85 = local_211;
-                    float w_11 = _e85 ? (c_27 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_27 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
+                    bool _e85 = local_215;
+                    float w_11 = _e85 ? (c_28 - (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x)) : (c_28 + (hw_10 * _e25.inner[metal::min(unsigned(airlight_naga_div(_e64, 2u)), 3u)].x));
                     AirlightNode _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0.0;
                     if (_e87.weight != 0.0) {
@@ -9488,11 +9633,11 @@ AirlightResult airlight_in_scatter(
                             return _e93;
                         }
                         if (s_57.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_212 = s_57.surface_kind == AIRLIGHT_SURFACE_NONE;
+                            local_216 = s_57.surface_kind == AIRLIGHT_SURFACE_NONE;
                         } else {
-                            local_212 = false;
+                            local_216 = false;
                         }
-                        bool _e106 = local_212;
+                        bool _e106 = local_216;
                         if (_e106) {
                             return _e93;
                         }

@@ -91,6 +91,12 @@ struct AirlightPanel {
     f_max: f32,
 }
 
+struct AirlightSphereFoot {
+    to_centre: vec3<f32>,
+    h: f32,
+    miss: f32,
+}
+
 struct AirlightPanelList {
     panel_a: vec4<f32>,
     panel_b: vec4<f32>,
@@ -199,6 +205,7 @@ struct AirlightArea {
     outcome: u32,
     lobes: vec4<f32>,
     isotropic: bool,
+    foot: AirlightSphereFoot,
 }
 
 struct AirlightOutline {
@@ -471,9 +478,9 @@ fn airlight_csqrt(z_1: vec2<f32>) -> vec2<f32> {
 
 fn airlight_cos_sin(x: f32) -> vec2<f32> {
     let z_16 = (x * x);
-    let c_8 = (1f + (z_16 * (-0.5f + (z_16 * (0.041666668f + (z_16 * (-0.0013888889f + (z_16 * (0.000024801588f + (z_16 * (-0.0000002755732f + (z_16 * (0.0000000020876756f + (z_16 * (-0.000000000011470745f + (z_16 * 0.000000000000047794773f))))))))))))))));
+    let c_9 = (1f + (z_16 * (-0.5f + (z_16 * (0.041666668f + (z_16 * (-0.0013888889f + (z_16 * (0.000024801588f + (z_16 * (-0.0000002755732f + (z_16 * (0.0000000020876756f + (z_16 * (-0.000000000011470745f + (z_16 * 0.000000000000047794773f))))))))))))))));
     let s_58 = (1f + (z_16 * (-0.16666667f + (z_16 * (0.008333334f + (z_16 * (-0.0001984127f + (z_16 * (0.0000027557319f + (z_16 * (-0.000000025052108f + (z_16 * (0.00000000016059044f + (z_16 * (-0.00000000000076471636f + (z_16 * 0.0000000000000028114574f))))))))))))))));
-    return vec2<f32>(c_8, (s_58 * x));
+    return vec2<f32>(c_9, (s_58 * x));
 }
 
 fn airlight_cexp(z_2: vec2<f32>) -> vec2<f32> {
@@ -603,9 +610,9 @@ fn airlight_ein_divided_difference(a_2: vec2<f32>, b_2: vec2<f32>) -> vec2<f32> 
 }
 
 fn airlight_in_series_region(z_5: vec2<f32>) -> bool {
-    let x_30 = (z_5.x * AIRLIGHT_E1_INV_RE);
+    let x_29 = (z_5.x * AIRLIGHT_E1_INV_RE);
     let y_7 = (z_5.y * AIRLIGHT_E1_INV_IM);
-    return (((x_30 * x_30) + (y_7 * y_7)) < 1f);
+    return (((x_29 * x_29) + (y_7 * y_7)) < 1f);
 }
 
 fn airlight_cf_depth_squared(r2_: f32) -> u32 {
@@ -679,8 +686,8 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
     let _e13 = r2_1;
     let _e14 = airlight_cf_depth_squared(_e13);
     let nf = f32(_e14);
-    let b_16 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
-    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_16);
+    let b_18 = (z_6 + vec2<f32>(((2f * nf) + 1f), 0f));
+    let _e29 = airlight_cdiv(vec2<f32>((2f * (nf + 1f)), 0f), b_18);
     let _e33 = airlight_cmul(_e29, _e29);
     let _e35 = airlight_csqrt((vec2<f32>(1f, 0f) - _e33));
     root = _e35;
@@ -690,7 +697,7 @@ fn airlight_e1_scaled_cf(z_6: vec2<f32>) -> vec2<f32> {
         root = -(_e41);
     }
     let _e46 = root;
-    let _e48 = airlight_cmul(b_16, (vec2<f32>(1f, 0f) + _e46));
+    let _e48 = airlight_cmul(b_18, (vec2<f32>(1f, 0f) + _e46));
     t_1 = (_e48 * 0.5f);
     loop {
         let _e54 = i;
@@ -757,12 +764,12 @@ fn airlight_en_scaled_cf(x_4: f32, n: u32) -> f32 {
     let _e2 = airlight_en_cf_depth(x_4);
     let nf_1 = f32(n);
     let m_7 = f32(_e2);
-    let b_17 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
-    let a_33 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
-    let disc = (1f - ((4f * a_33) / (b_17 * b_17)));
-    t_2 = b_17;
+    let b_19 = ((x_4 + nf_1) + (2f * (m_7 + 1f)));
+    let a_35 = ((m_7 + 2f) * ((nf_1 + m_7) + 1f));
+    let disc = (1f - ((4f * a_35) / (b_19 * b_19)));
+    t_2 = b_19;
     if (disc > 0f) {
-        t_2 = ((b_17 * (1f + sqrt(disc))) * 0.5f);
+        t_2 = ((b_19 * (1f + sqrt(disc))) * 0.5f);
     }
     loop {
         let _e34 = i_1;
@@ -900,11 +907,11 @@ fn airlight_en_scaled(x_5: f32) -> array<f32, 10> {
 
 fn airlight_hg_base(g_2: f32, om: f32, op: f32) -> f32 {
     if (g_2 >= 0f) {
-        let a_34 = (1f - g_2);
-        return ((om * (g_2 + g_2)) + (a_34 * a_34));
+        let a_36 = (1f - g_2);
+        return ((om * (g_2 + g_2)) + (a_36 * a_36));
     }
-    let b_18 = (1f + g_2);
-    return ((op * -((g_2 + g_2))) + (b_18 * b_18));
+    let b_20 = (1f + g_2);
+    return ((op * -((g_2 + g_2))) + (b_20 * b_20));
 }
 
 fn airlight_hg(g_3: f32, om_1: f32, op_1: f32) -> f32 {
@@ -998,8 +1005,8 @@ fn airlight_light(kind_2: u32, p0_2: f32, p1_2: f32, c: f32) -> f32 {
             if (width_2 <= AIRLIGHT_FLT_EPS) {
                 return select(0f, 1f, (c >= (p1_2 + (width_2 * 0.5f))));
             }
-            let x_31 = clamp(((c - p1_2) / width_2), 0f, 1f);
-            return ((x_31 * x_31) * (3f - (2f * x_31)));
+            let x_30 = clamp(((c - p1_2) / width_2), 0f, 1f);
+            return ((x_30 * x_30) * (3f - (2f * x_30)));
         }
         default: {
             return 1f;
@@ -1018,11 +1025,11 @@ fn airlight_singular_height(side: f32, gap: f32, sigma: f32) -> f32 {
 }
 
 fn airlight_hg_gap(g_4: f32) -> f32 {
-    let a_35 = abs(g_4);
-    if !((a_35 > 0f)) {
+    let a_37 = abs(g_4);
+    if !((a_37 > 0f)) {
         return AIRLIGHT_FLT_MAX;
     }
-    return (((1f - a_35) * (1f - a_35)) / (a_35 + a_35));
+    return (((1f - a_37) * (1f - a_37)) / (a_37 + a_37));
 }
 
 fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
@@ -1036,8 +1043,8 @@ fn airlight_singular_heights(s_2: AirlightScene, sigma_1: f32) -> vec3<f32> {
             h_1.y = _e9;
         }
         case 3u: {
-            let a_36 = abs(p0_3);
-            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_36) / a_36), (a_36 > 0f)), sigma_1);
+            let a_38 = abs(p0_3);
+            let _e19 = airlight_singular_height(p0_3, select(AIRLIGHT_FLT_MAX, ((1f - a_38) / a_38), (a_38 > 0f)), sigma_1);
             h_1.y = _e19;
         }
         case 5u: {
@@ -1109,7 +1116,7 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
     let inv_2 = (1f / (1f + y2_));
     let om_3 = (1f - y2_);
     let mu_3 = (-(sigma_2) * (om_3 * inv_2));
-    let c_9 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
+    let c_10 = ((((sigma_2 * g_5.d_el) * om_3) + ((2f * g_5.d_c) * y_1)) * inv_2);
     let far_1 = ((y2_ * inv_2) * 2f);
     let near_1 = (inv_2 * 2f);
     minus = near_1;
@@ -1118,7 +1125,7 @@ fn airlight_integrand_over(s_4: AirlightScene, g_5: AirlightCanonical, sigma_2: 
         minus = far_1;
         plus = near_1;
     }
-    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_9);
+    let _e35 = airlight_light(s_4.light_kind, s_4.light_param_a, s_4.light_param_b, c_10);
     let _e40 = minus;
     let _e41 = plus;
     let _e42 = airlight_phase(s_4.phase_kind, s_4.phase_param_a, s_4.phase_param_b, s_4.phase_param_c, mu_3, _e40, _e41);
@@ -1255,10 +1262,10 @@ fn airlight_q_zero(half_2: AirlightHalf) -> f32 {
             let _e33 = airlight_atan((half_2.dv / (1f + (v_s_1 * _e28))));
             d_im = _e33;
             let _e35 = v_e_1;
-            let x_32 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
-            let _e42 = airlight_is_finite(x_32);
+            let x_31 = ((half_2.dv * (v_s_1 + _e35)) / (1f + (v_s_1 * v_s_1)));
+            let _e42 = airlight_is_finite(x_31);
             if _e42 {
-                let _e43 = airlight_log1p(x_32);
+                let _e43 = airlight_log1p(x_31);
                 d_re = (0.5f * _e43);
             } else {
                 let _e48 = v_e_1;
@@ -1391,8 +1398,8 @@ fn airlight_gauss_rule() -> array<vec2<f32>, 4> {
 }
 
 fn airlight_node(rule: array<vec2<f32>, 4>, i_3: u32) -> f32 {
-    let x_33 = rule[(i_3 / 2u)].x;
-    return select(x_33, -(x_33), ((i_3 % 2u) == 0u));
+    let x_32 = rule[(i_3 / 2u)].x;
+    return select(x_32, -(x_32), ((i_3 % 2u) == 0u));
 }
 
 fn airlight_legendre(g_7: array<f32, 8>) -> array<f32, 8> {
@@ -1469,8 +1476,8 @@ fn airlight_exp_legendre_moments(lambda: f32) -> array<f32, 8> {
         if (lambda < f32((2u * AIRLIGHT_TERMS))) {
             let inv_3 = (1f / lambda);
             let k0_ = max(AIRLIGHT_TERMS, (u32(lambda) + 1u));
-            let x_34 = (lambda / f32((2u * k0_)));
-            let per_step = (x_34 * x_34);
+            let x_33 = (lambda / f32((2u * k0_)));
+            let per_step = (x_33 * x_33);
             share = per_step;
             loop {
                 let _e43 = steps;
@@ -1876,8 +1883,8 @@ fn airlight_error_factor(c_2: array<f32, 8>, m_1: array<f32, 8>, floor_: f32) ->
 
 fn airlight_bernstein_rho(re: f32, im: f32) -> f32 {
     let im2_ = (im * im);
-    let a_37 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
-    return (a_37 + sqrt(max(((a_37 * a_37) - 1f), 0f)));
+    let a_39 = ((sqrt((((re - 1f) * (re - 1f)) + im2_)) + sqrt((((re + 1f) * (re + 1f)) + im2_))) * 0.5f);
+    return (a_39 + sqrt(max(((a_39 * a_39) - 1f), 0f)));
 }
 
 fn airlight_transform_noise(mass: f32, mean_abs: f32) -> f32 {
@@ -1892,8 +1899,8 @@ fn airlight_factor(half_5: AirlightHalf, a_4: f32, b_3: f32) -> f32 {
         offset = ((half_5.y_hi - b_3) / (b_3 * half_5.y_hi));
     }
     let _e13 = offset;
-    let x_35 = (half_5.big_h * _e13);
-    return select(1f, exp(-(x_35)), (x_35 > 0f));
+    let x_34 = (half_5.big_h * _e13);
+    return select(1f, exp(-(x_34)), (x_34 > 0f));
 }
 
 fn airlight_panel_result(value: f32, error: f32, noise: f32, mass_over: f32, f_max: f32) -> AirlightPanel {
@@ -2355,13 +2362,13 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     let _e528 = airlight_factor(half_8, a_7, b_6);
     let _e529 = mass_2;
     mass_2 = (_e529 * _e528);
-    let x_36 = (abs(alpha) + abs(beta_1));
+    let x_35 = (abs(alpha) + abs(beta_1));
     let _e542 = spread;
     let _e543 = l_cur;
     spread = (_e542 + (_e543 * abs(_e54[0])));
     let _e550 = l_cur;
     let _e552 = l_prev;
-    next = ((((1f * x_36) * _e550) + (0f * _e552)) / 1f);
+    next = ((((1f * x_35) * _e550) + (0f * _e552)) / 1f);
     let _e558 = l_cur;
     l_prev = _e558;
     let _e559 = next;
@@ -2371,7 +2378,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e560 + (_e561 * abs(_e54[1])));
     let _e568 = l_cur;
     let _e570 = l_prev;
-    next = ((((3f * x_36) * _e568) + (1f * _e570)) / 2f);
+    next = ((((3f * x_35) * _e568) + (1f * _e570)) / 2f);
     let _e576 = l_cur;
     l_prev = _e576;
     let _e577 = next;
@@ -2381,7 +2388,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e578 + (_e579 * abs(_e54[2])));
     let _e586 = l_cur;
     let _e588 = l_prev;
-    next = ((((5f * x_36) * _e586) + (2f * _e588)) / 3f);
+    next = ((((5f * x_35) * _e586) + (2f * _e588)) / 3f);
     let _e594 = l_cur;
     l_prev = _e594;
     let _e595 = next;
@@ -2391,7 +2398,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e596 + (_e597 * abs(_e54[3])));
     let _e604 = l_cur;
     let _e606 = l_prev;
-    next = ((((7f * x_36) * _e604) + (3f * _e606)) / 4f);
+    next = ((((7f * x_35) * _e604) + (3f * _e606)) / 4f);
     let _e612 = l_cur;
     l_prev = _e612;
     let _e613 = next;
@@ -2401,7 +2408,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e614 + (_e615 * abs(_e54[4])));
     let _e622 = l_cur;
     let _e624 = l_prev;
-    next = ((((9f * x_36) * _e622) + (4f * _e624)) / 5f);
+    next = ((((9f * x_35) * _e622) + (4f * _e624)) / 5f);
     let _e630 = l_cur;
     l_prev = _e630;
     let _e631 = next;
@@ -2411,7 +2418,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e632 + (_e633 * abs(_e54[5])));
     let _e640 = l_cur;
     let _e642 = l_prev;
-    next = ((((11f * x_36) * _e640) + (5f * _e642)) / 6f);
+    next = ((((11f * x_35) * _e640) + (5f * _e642)) / 6f);
     let _e648 = l_cur;
     l_prev = _e648;
     let _e649 = next;
@@ -2421,7 +2428,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e650 + (_e651 * abs(_e54[6])));
     let _e658 = l_cur;
     let _e660 = l_prev;
-    next = ((((13f * x_36) * _e658) + (6f * _e660)) / 7f);
+    next = ((((13f * x_35) * _e658) + (6f * _e660)) / 7f);
     let _e666 = l_cur;
     l_prev = _e666;
     let _e667 = next;
@@ -2431,7 +2438,7 @@ fn airlight_tail_panel(s_8: AirlightScene, g_10: AirlightCanonical, sigma_6: f32
     spread = (_e668 + (_e669 * abs(_e54[7])));
     let _e676 = l_cur;
     let _e678 = l_prev;
-    next = ((((15f * x_36) * _e676) + (7f * _e678)) / 8f);
+    next = ((((15f * x_35) * _e676) + (7f * _e678)) / 8f);
     let _e684 = l_cur;
     l_prev = _e684;
     let _e685 = next;
@@ -2897,9 +2904,9 @@ fn airlight_angle_route(s_11: AirlightScene, g_13: AirlightCanonical) -> vec2<f3
             rate = _e136;
         }
         case 3u: {
-            let a_38 = abs(p0_4);
+            let a_40 = abs(p0_4);
             let _e145 = psi1_1;
-            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_38) / a_38), (a_38 > 0f)), _e40, _e145, inv_hw_1, step_4);
+            let _e146 = airlight_angle_floor(p0_4, select(AIRLIGHT_FLT_MAX, ((1f - a_40) / a_40), (a_40 > 0f)), _e40, _e145, inv_hw_1, step_4);
             rate = _e146;
         }
         case 5u: {
@@ -3046,23 +3053,23 @@ fn airlight_crossings(sigma_9: f32, d_el: f32, d_c: f32, k_4: f32) -> vec2<f32> 
     if _e24 {
         return vec2<f32>(-1f, -1f);
     }
-    let a_39 = (a0_ / scale_4);
-    let b_19 = (b0_ / scale_4);
-    let c_10 = (c0_ / scale_4);
-    let disc_1 = ((b_19 * b_19) - ((4f * a_39) * c_10));
+    let a_41 = (a0_ / scale_4);
+    let b_21 = (b0_ / scale_4);
+    let c_11 = (c0_ / scale_4);
+    let disc_1 = ((b_21 * b_21) - ((4f * a_41) * c_11));
     if !((disc_1 >= 0f)) {
         return vec2<f32>(-1f, -1f);
     }
-    if (b_19 < 0f) {
+    if (b_21 < 0f) {
         sb = -1f;
     }
     let _e47 = sb;
-    let q_11 = (-0.5f * (b_19 + (_e47 * sqrt(disc_1))));
+    let q_11 = (-0.5f * (b_21 + (_e47 * sqrt(disc_1))));
     if (q_11 != 0f) {
-        r1_ = (c_10 / q_11);
+        r1_ = (c_11 / q_11);
     }
-    if (a_39 != 0f) {
-        r2_2 = (q_11 / a_39);
+    if (a_41 != 0f) {
+        r2_2 = (q_11 / a_41);
     }
     let _e63 = r1_;
     let _e64 = r2_2;
@@ -3107,15 +3114,15 @@ fn airlight_dark(g_15: AirlightCanonical, sigma_11: f32, half_11: AirlightHalf, 
     if _e31 {
         return false;
     }
-    let a_40 = (sigma_11 * g_15.d_el);
+    let a_42 = (sigma_11 * g_15.d_el);
     let d_3 = g_15.d_c;
     if (d_3 == 0f) {
         return true;
     }
-    let root_1 = sqrt(((a_40 * a_40) + (d_3 * d_3)));
-    y1_1 = ((root_1 - a_40) / d_3);
-    if (a_40 > 0f) {
-        y1_1 = (d_3 / (a_40 + root_1));
+    let root_1 = sqrt(((a_42 * a_42) + (d_3 * d_3)));
+    y1_1 = ((root_1 - a_42) / d_3);
+    if (a_42 > 0f) {
+        y1_1 = (d_3 / (a_42 + root_1));
     }
     let _e50 = y1_1;
     let y2_2 = (-1f / _e50);
@@ -4431,6 +4438,26 @@ fn airlight_diff_of_products(a_15: f32, b_12: f32, c_5: f32, d_1: f32, key_3: u3
     return (_e10 + _e14);
 }
 
+fn airlight_pair_add(a_16: vec2<f32>, b_13: vec2<f32>, key_4: u32) -> vec2<f32> {
+    let _e5 = airlight_two_sum(a_16.x, b_13.x, key_4);
+    let _e12 = airlight_two_sum(_e5.x, (_e5.y + (a_16.y + b_13.y)), key_4);
+    return _e12;
+}
+
+fn airlight_pair_mul(a_17: vec2<f32>, b_14: vec2<f32>, key_5: u32) -> vec2<f32> {
+    let _e5 = airlight_two_product(a_17.x, b_14.x, key_5);
+    let _e16 = airlight_two_sum(_e5.x, (_e5.y + ((a_17.x * b_14.y) + (a_17.y * b_14.x))), key_5);
+    return _e16;
+}
+
+fn airlight_cross_pair(hi_i: f32, hi_j: f32, lo_i: f32, lo_j: f32, dir_i: f32, dir_j: f32, key_6: u32) -> vec2<f32> {
+    let _e7 = airlight_two_product(hi_i, dir_j, key_6);
+    let _e8 = airlight_two_product(hi_j, dir_i, key_6);
+    let _e12 = airlight_two_sum(_e7.x, -(_e8.x), key_6);
+    let _e23 = airlight_two_sum(_e12.x, ((_e12.y + (_e7.y - _e8.y)) + ((lo_i * dir_j) - (lo_j * dir_i))), key_6);
+    return _e23;
+}
+
 fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     var local_126: bool;
     var local_127: bool;
@@ -4455,18 +4482,18 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     var local_128: bool;
     var out_2: AirlightCanonical;
     var local_129: bool;
-    var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+    var a_18: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_21.flags > 1u));
-    let _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_4);
+    let key_8 = u32((s_21.flags > 1u));
+    let _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_8);
+    let _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_8);
+    let _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_8);
     let hi_7 = vec3<f32>(_e11.x, _e17.x, _e23.x);
     let lo_8 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_2 = s_21.dir;
+    let dir_3 = s_21.dir;
     let _e33 = airlight_in_exact_range(hi_7);
     if !(!(_e33)) {
-        let _e38 = airlight_in_exact_range(dir_2);
+        let _e38 = airlight_in_exact_range(dir_3);
         local_128 = !(_e38);
     } else {
         local_128 = true;
@@ -4475,10 +4502,10 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     if _e41 {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_7.y, dir_2.z, hi_7.z, dir_2.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_7.z, dir_2.x, hi_7.x, dir_2.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_7.x, dir_2.y, hi_7.y, dir_2.x, key_4);
-    let w_6 = vec3<f32>((_e46 + ((lo_8.y * dir_2.z) - (lo_8.z * dir_2.y))), (_e59 + ((lo_8.z * dir_2.x) - (lo_8.x * dir_2.z))), (_e72 + ((lo_8.x * dir_2.y) - (lo_8.y * dir_2.x))));
+    let _e46 = airlight_diff_of_products(hi_7.y, dir_3.z, hi_7.z, dir_3.y, key_8);
+    let _e59 = airlight_diff_of_products(hi_7.z, dir_3.x, hi_7.x, dir_3.z, key_8);
+    let _e72 = airlight_diff_of_products(hi_7.x, dir_3.y, hi_7.y, dir_3.x, key_8);
+    let w_6 = vec3<f32>((_e46 + ((lo_8.y * dir_3.z) - (lo_8.z * dir_3.y))), (_e59 + ((lo_8.z * dir_3.x) - (lo_8.x * dir_3.z))), (_e72 + ((lo_8.x * dir_3.y) - (lo_8.y * dir_3.x))));
     let _e82 = airlight_vec_finite(w_6);
     if !(_e82) {
         return plain;
@@ -4491,7 +4518,7 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
         let _e92 = out_2;
         return _e92;
     }
-    let _e93 = airlight_safe_length(dir_2);
+    let _e93 = airlight_safe_length(dir_3);
     let h_7 = (_e85 / _e93);
     let _e95 = airlight_is_finite(h_7);
     if _e95 {
@@ -4505,16 +4532,87 @@ fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCa
     }
     if (s_21.light_kind != AIRLIGHT_LIGHT_OMNI) {
         let _e112 = airlight_normalize(s_21.light_axis);
-        a_16 = _e112;
+        a_18 = _e112;
     }
-    let _e113 = airlight_normalize(dir_2);
+    let _e113 = airlight_normalize(dir_3);
     let _e114 = airlight_normalize(w_6);
     let n_6 = -(cross(_e113, _e114));
     out_2.h = h_7;
-    let _e119 = a_16;
+    let _e119 = a_18;
     out_2.d_c = dot(n_6, _e119);
     let _e121 = out_2;
     return _e121;
+}
+
+fn airlight_sphere_foot(o: vec3<f32>, dir_2: vec3<f32>, c_6: vec3<f32>, radius_2: f32, key_7: u32) -> AirlightSphereFoot {
+    var local_130: bool;
+    var local_131: bool;
+    var local_132: bool;
+
+    let _e5 = airlight_normalize(dir_2);
+    let oc = (o - c_6);
+    let to_centre = -((oc - (dot(oc, _e5) * _e5)));
+    let _e11 = airlight_safe_length(to_centre);
+    let plain_2 = AirlightSphereFoot(to_centre, _e11, (_e11 - radius_2));
+    let _e17 = airlight_two_sum(c_6.x, -(o.x), key_7);
+    let _e21 = airlight_two_sum(c_6.y, -(o.y), key_7);
+    let _e25 = airlight_two_sum(c_6.z, -(o.z), key_7);
+    let hi_8 = vec3<f32>(_e17.x, _e21.x, _e25.x);
+    let lo_9 = vec3<f32>(_e17.y, _e21.y, _e25.y);
+    let _e34 = airlight_in_exact_range(hi_8);
+    if !(!(_e34)) {
+        let _e39 = airlight_in_exact_range(dir_2);
+        local_130 = !(_e39);
+    } else {
+        local_130 = true;
+    }
+    let _e42 = local_130;
+    if _e42 {
+        return plain_2;
+    }
+    let _e49 = airlight_cross_pair(hi_8.y, hi_8.z, lo_9.y, lo_9.z, dir_2.y, dir_2.z, key_7);
+    let _e56 = airlight_cross_pair(hi_8.z, hi_8.x, lo_9.z, lo_9.x, dir_2.z, dir_2.x, key_7);
+    let _e63 = airlight_cross_pair(hi_8.x, hi_8.y, lo_9.x, lo_9.y, dir_2.x, dir_2.y, key_7);
+    let _e64 = airlight_pair_mul(_e49, _e49, key_7);
+    let _e65 = airlight_pair_mul(_e56, _e56, key_7);
+    let _e66 = airlight_pair_add(_e64, _e65, key_7);
+    let _e67 = airlight_pair_mul(_e63, _e63, key_7);
+    let _e68 = airlight_pair_add(_e66, _e67, key_7);
+    let dx = vec2<f32>(dir_2.x, 0f);
+    let dy_2 = vec2<f32>(dir_2.y, 0f);
+    let dz = vec2<f32>(dir_2.z, 0f);
+    let _e78 = airlight_pair_mul(dx, dx, key_7);
+    let _e79 = airlight_pair_mul(dy_2, dy_2, key_7);
+    let _e80 = airlight_pair_add(_e78, _e79, key_7);
+    let _e81 = airlight_pair_mul(dz, dz, key_7);
+    let _e82 = airlight_pair_add(_e80, _e81, key_7);
+    let w_len = sqrt(_e68.x);
+    let scale_5 = sqrt(_e82.x);
+    let h_8 = (w_len / scale_5);
+    let _e88 = airlight_two_product(radius_2, radius_2, key_7);
+    let _e89 = airlight_pair_mul(_e88, _e82, key_7);
+    let _e91 = airlight_pair_add(_e68, -(_e89), key_7);
+    let miss = (_e91.x / ((w_len + (radius_2 * scale_5)) * scale_5));
+    if (h_8 > 0f) {
+        let _e101 = airlight_is_finite(h_8);
+        local_131 = _e101;
+    } else {
+        local_131 = false;
+    }
+    let _e103 = local_131;
+    if _e103 {
+        let _e106 = airlight_is_finite(miss);
+        local_132 = _e106;
+    } else {
+        local_132 = false;
+    }
+    let _e108 = local_132;
+    if !(_e108) {
+        return plain_2;
+    }
+    let _e114 = airlight_normalize(vec3<f32>(_e49.x, _e56.x, _e63.x));
+    let m_11 = cross(_e5, _e114);
+    return AirlightSphereFoot((h_8 * m_11), h_8, miss);
 }
 
 fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
@@ -4835,48 +4933,48 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_130: bool;
+    var local_133: bool;
 
     cuts_1 = unsorted;
     let _e5 = cuts_1[1];
     let _e7 = cuts_1[0];
     if (_e5 < _e7) {
-        let c_11 = cuts_1[0];
+        let c_12 = cuts_1[0];
         let _e13 = cuts_1[1];
         cuts_1[0] = _e13;
-        cuts_1[1] = c_11;
+        cuts_1[1] = c_12;
     }
     let _e16 = cuts_1[3];
     let _e18 = cuts_1[2];
     if (_e16 < _e18) {
-        let c_12 = cuts_1[2];
+        let c_13 = cuts_1[2];
         let _e24 = cuts_1[3];
         cuts_1[2] = _e24;
-        cuts_1[3] = c_12;
+        cuts_1[3] = c_13;
     }
     let _e27 = cuts_1[2];
     let _e29 = cuts_1[0];
     if (_e27 < _e29) {
-        let c_13 = cuts_1[0];
+        let c_14 = cuts_1[0];
         let _e35 = cuts_1[2];
         cuts_1[0] = _e35;
-        cuts_1[2] = c_13;
+        cuts_1[2] = c_14;
     }
     let _e38 = cuts_1[3];
     let _e40 = cuts_1[1];
     if (_e38 < _e40) {
-        let c_14 = cuts_1[1];
+        let c_15 = cuts_1[1];
         let _e46 = cuts_1[3];
         cuts_1[1] = _e46;
-        cuts_1[3] = c_14;
+        cuts_1[3] = c_15;
     }
     let _e49 = cuts_1[2];
     let _e51 = cuts_1[1];
     if (_e49 < _e51) {
-        let c_15 = cuts_1[1];
+        let c_16 = cuts_1[1];
         let _e57 = cuts_1[2];
         cuts_1[1] = _e57;
-        cuts_1[2] = c_15;
+        cuts_1[2] = c_16;
     }
     e_1 = AirlightEdges(array<f32, 13>(lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3, lo_3), 0u);
     loop {
@@ -4893,11 +4991,11 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
             if (_e72 > _e76) {
                 let _e80 = i_18;
                 let _e82 = cuts_1[_e80];
-                local_130 = (_e82 < hi_3);
+                local_133 = (_e82 < hi_3);
             } else {
-                local_130 = false;
+                local_133 = false;
             }
-            let _e85 = local_130;
+            let _e85 = local_133;
             if _e85 {
                 let _e86 = n_1;
                 n_1 = (_e86 + 1u);
@@ -4922,9 +5020,9 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
-    var local_131: bool;
-    var local_132: bool;
-    var local_133: bool;
+    var local_134: bool;
+    var local_135: bool;
+    var local_136: bool;
 
     loop {
         let _e6 = tries;
@@ -4936,18 +5034,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_131 = (count_2 == max_panels);
+                local_134 = (count_2 == max_panels);
             } else {
-                local_131 = true;
+                local_134 = true;
             }
-            let _e21 = local_131;
+            let _e21 = local_134;
             if !(_e21) {
                 let _e26 = airlight_is_finite(_e9.total);
-                local_132 = !(_e26);
+                local_135 = !(_e26);
             } else {
-                local_132 = true;
+                local_135 = true;
             }
-            let _e29 = local_132;
+            let _e29 = local_135;
             if _e29 {
                 break;
             }
@@ -4955,11 +5053,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_2 = (0.5f * (_e32.x + _e32.y));
             if (mid_2 > _e32.x) {
-                local_133 = (mid_2 < _e32.y);
+                local_136 = (mid_2 < _e32.y);
             } else {
-                local_133 = false;
+                local_136 = false;
             }
-            let _e45 = local_133;
+            let _e45 = local_136;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -5029,10 +5127,10 @@ fn airlight_adaptive_step(state: AirlightAdaptive, kronrod: f32, gauss: f32, edg
 fn airlight_asinh(x_16: f32) -> f32 {
     var r_4: f32;
 
-    let a_41 = abs(x_16);
-    r_4 = (AIRLIGHT_LN_2_ + log(a_41));
-    if (a_41 <= 4096f) {
-        let _e17 = airlight_log1p((a_41 + ((a_41 * a_41) / (1f + sqrt((1f + (a_41 * a_41)))))));
+    let a_43 = abs(x_16);
+    r_4 = (AIRLIGHT_LN_2_ + log(a_43));
+    if (a_43 <= 4096f) {
+        let _e17 = airlight_log1p((a_43 + ((a_43 * a_43) / (1f + sqrt((1f + (a_43 * a_43)))))));
         r_4 = _e17;
     }
     let _e18 = r_4;
@@ -5058,23 +5156,23 @@ fn airlight_cos_sin_half_turn(x_17: f32) -> vec2<f32> {
 }
 
 fn airlight_acos(x_18: f32) -> f32 {
-    let a_42 = abs(x_18);
-    let _e8 = airlight_atan(sqrt(((1f - a_42) / (1f + a_42))));
+    let a_44 = abs(x_18);
+    let _e8 = airlight_atan(sqrt(((1f - a_44) / (1f + a_44))));
     return select((_e8 + _e8), ((AIRLIGHT_PI - _e8) - _e8), (x_18 < 0f));
 }
 
-fn airlight_angle(c_6: f32, s_23: f32) -> f32 {
-    let _e2 = airlight_atan2_upper(s_23, c_6);
+fn airlight_angle(c_7: f32, s_23: f32) -> f32 {
+    let _e2 = airlight_atan2_upper(s_23, c_7);
     return _e2;
 }
 
 fn airlight_half_arc(cos_a: f32, sin_a: f32, cos_g: f32, sin_g: f32) -> f32 {
-    let a_43 = (cos_a * cos_g);
-    let b_20 = (sin_a * sin_g);
-    if (b_20 <= abs(a_43)) {
-        return select(0f, AIRLIGHT_PI, (a_43 > 0f));
+    let a_45 = (cos_a * cos_g);
+    let b_22 = (sin_a * sin_g);
+    if (b_22 <= abs(a_45)) {
+        return select(0f, AIRLIGHT_PI, (a_45 > 0f));
     }
-    let _e18 = airlight_acos(clamp((-(a_43) / b_20), -1f, 1f));
+    let _e18 = airlight_acos(clamp((-(a_45) / b_22), -1f, 1f));
     return _e18;
 }
 
@@ -5085,33 +5183,33 @@ fn airlight_outer_point(s_24: AirlightScene, max_panels_2: u32) -> AirlightOuter
 
 fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_134: bool;
+    var local_137: bool;
     var u_1: vec3<f32>;
     var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_19: u32 = 1u;
     var j_4: u32;
-    var local_135: bool;
+    var local_138: bool;
     var k_5: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_136: bool;
+    var local_139: bool;
     var i_21: u32 = 0u;
     var i_22: u32 = 1u;
-    var local_137: bool;
-    var local_138: bool;
-    var local_139: bool;
     var local_140: bool;
     var local_141: bool;
+    var local_142: bool;
+    var local_143: bool;
+    var local_144: bool;
 
     let _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     let to_light_1 = (s_25.light_position - s_25.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_25.intensity == 0f)) {
-        local_134 = (s_25.sigma_s == 0f);
+        local_137 = (s_25.sigma_s == 0f);
     } else {
-        local_134 = true;
+        local_137 = true;
     }
-    let _e18 = local_134;
+    let _e18 = local_137;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -5157,22 +5255,22 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         let _e105 = airlight_normalize(s_25.brdf_view);
         let _e111 = airlight_normalize((((2f * dot(_e37, _e105)) * _e37) - _e105));
         let _e112 = u_1;
-        let x_37 = dot(_e111, _e112);
+        let x_36 = dot(_e111, _e112);
         let _e114 = u_1;
         let y_12 = dot(_e111, cross(l_3, _e114));
         g_22.cos_r = dot(_e111, l_3);
-        g_22.sin_r = sqrt(((x_37 * x_37) + (y_12 * y_12)));
+        g_22.sin_r = sqrt(((x_36 * x_36) + (y_12 * y_12)));
         let _e126 = g_22.cos_r;
         let _e128 = g_22.sin_r;
         let _e129 = airlight_angle(_e126, _e128);
         g_22.alpha_r = _e129;
         let _e131 = g_22.sin_r;
         if (_e131 > 0f) {
-            let _e140 = airlight_angle(x_37, abs(y_12));
+            let _e140 = airlight_angle(x_36, abs(y_12));
             let phi_r = (select(1f, -1f, (y_12 < 0f)) * _e140);
             let _e145 = g_22.sin_r;
             let _e149 = g_22.sin_r;
-            g_22.delta = vec3<f32>(-(phi_r), (x_37 / _e145), (-(y_12) / _e149));
+            g_22.delta = vec3<f32>(-(phi_r), (x_36 / _e145), (-(y_12) / _e149));
         }
         let _e154 = g_22.alpha_r;
         let first_r = abs((1.5707964f - _e154));
@@ -5214,7 +5312,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         }
         {
             let _e227 = i_19;
-            let c_16 = cuts_2[_e227];
+            let c_17 = cuts_2[_e227];
             let _e230 = i_19;
             j_4 = _e230;
             loop {
@@ -5222,11 +5320,11 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_135 = (_e241 > c_16);
+                    local_138 = (_e241 > c_17);
                 } else {
-                    local_135 = false;
+                    local_138 = false;
                 }
-                let _e244 = local_135;
+                let _e244 = local_138;
                 if _e244 {
                 } else {
                     break;
@@ -5241,14 +5339,14 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 }
             }
             let _e255 = j_4;
-            cuts_2[_e255] = c_16;
+            cuts_2[_e255] = c_17;
         }
         continuing {
             let _e258 = i_19;
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_8 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_9 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first_2, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
@@ -5264,11 +5362,11 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_136 = (_e291 < hi_8);
+                local_139 = (_e291 < hi_9);
             } else {
-                local_136 = false;
+                local_139 = false;
             }
-            let _e294 = local_136;
+            let _e294 = local_139;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5284,7 +5382,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_8;
+    g_22.gamma[(_e308 + 1u)] = hi_9;
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
@@ -5316,35 +5414,35 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 let _e339 = i_22;
                 let e_13 = g_22.gamma[_e339];
                 if !((e_13 == kinks[0])) {
-                    local_137 = (e_13 == kinks[1]);
-                } else {
-                    local_137 = true;
-                }
-                let _e350 = local_137;
-                if !(_e350) {
-                    local_138 = (e_13 == kinks[2]);
-                } else {
-                    local_138 = true;
-                }
-                let _e357 = local_138;
-                if !(_e357) {
-                    local_139 = (e_13 == kinks[3]);
-                } else {
-                    local_139 = true;
-                }
-                let _e364 = local_139;
-                if !(_e364) {
-                    local_140 = (e_13 == kinks[4]);
+                    local_140 = (e_13 == kinks[1]);
                 } else {
                     local_140 = true;
                 }
-                let _e371 = local_140;
-                if !(_e371) {
-                    local_141 = (e_13 == kinks[5]);
+                let _e350 = local_140;
+                if !(_e350) {
+                    local_141 = (e_13 == kinks[2]);
                 } else {
                     local_141 = true;
                 }
-                let kink = local_141;
+                let _e357 = local_141;
+                if !(_e357) {
+                    local_142 = (e_13 == kinks[3]);
+                } else {
+                    local_142 = true;
+                }
+                let _e364 = local_142;
+                if !(_e364) {
+                    local_143 = (e_13 == kinks[4]);
+                } else {
+                    local_143 = true;
+                }
+                let _e371 = local_143;
+                if !(_e371) {
+                    local_144 = (e_13 == kinks[5]);
+                } else {
+                    local_144 = true;
+                }
+                let kink = local_144;
                 let _e380 = g_22.smooth_edges;
                 let _e382 = i_22;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -5360,7 +5458,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
-    var local_142: bool;
+    var local_145: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_19));
     let s2_ = (_e4.y * _e4.y);
@@ -5371,11 +5469,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_142 = (clip > 0f);
+        local_145 = (clip > 0f);
     } else {
-        local_142 = false;
+        local_145 = false;
     }
-    let _e43 = local_142;
+    let _e43 = local_145;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5394,7 +5492,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_143: bool;
+    var local_146: bool;
 
     end_1 = x_20;
     let _e3 = end_1;
@@ -5411,11 +5509,11 @@ fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_143 = (_e21 < cut);
+        local_146 = (_e21 < cut);
     } else {
-        local_143 = false;
+        local_146 = false;
     }
-    let _e24 = local_143;
+    let _e24 = local_146;
     return select(0f, _e15, _e24);
 }
 
@@ -5424,18 +5522,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
-    var local_144: bool;
+    var local_147: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
     let w_7 = (hi_5 - lo_6);
     if !(!((w_7 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_7)));
-        local_144 = !((_e14 > 0f));
+        local_147 = !((_e14 > 0f));
     } else {
-        local_144 = true;
+        local_147 = true;
     }
-    let _e19 = local_144;
+    let _e19 = local_147;
     if _e19 {
         return 0f;
     }
@@ -5469,9 +5567,9 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
     var sum_6: f32 = 0f;
     var i_23: u32 = 0u;
 
-    let c_17 = (g_23.cos_r * cs.x);
+    let c_18 = (g_23.cos_r * cs.x);
     let d_4 = (g_23.sin_r * cs.y);
-    let peak = (c_17 + d_4);
+    let peak = (c_18 + d_4);
     if !((peak > 0f)) {
         return 0f;
     }
@@ -5528,30 +5626,30 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
-    var local_145: bool;
-    var local_146: bool;
-    var s_star: f32 = 0f;
-    var t_star: f32;
-    var local_147: bool;
     var local_148: bool;
     var local_149: bool;
+    var s_star: f32 = 0f;
+    var t_star: f32;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
-    var scale: f32 = 0f;
     var local_153: bool;
     var local_154: bool;
     var local_155: bool;
+    var scale: f32 = 0f;
     var local_156: bool;
     var local_157: bool;
-    var cuts_3: array<f32, 4> = array<f32, 4>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
-    var at: array<f32, 3>;
     var local_158: bool;
-    var i_24: u32 = 0u;
     var local_159: bool;
     var local_160: bool;
+    var cuts_3: array<f32, 4> = array<f32, 4>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
+    var at: array<f32, 3>;
     var local_161: bool;
+    var i_24: u32 = 0u;
     var local_162: bool;
+    var local_163: bool;
+    var local_164: bool;
+    var local_165: bool;
 
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_26);
@@ -5566,17 +5664,17 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_26.light_end - s_26.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_145 = (s_26.intensity == 0f);
+        local_148 = (s_26.intensity == 0f);
     } else {
-        local_145 = true;
+        local_148 = true;
     }
-    let _e26 = local_145;
+    let _e26 = local_148;
     if !(_e26) {
-        local_146 = (s_26.sigma_s == 0f);
+        local_149 = (s_26.sigma_s == 0f);
     } else {
-        local_146 = true;
+        local_149 = true;
     }
-    let _e34 = local_146;
+    let _e34 = local_149;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
@@ -5600,94 +5698,94 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_14 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_147 = (sin_a_1 > 0f);
-    } else {
-        local_147 = false;
-    }
-    let _e84 = local_147;
-    if _e84 {
-        let _e87 = s_star;
-        local_148 = (_e87 >= 0f);
-    } else {
-        local_148 = false;
-    }
-    let _e91 = local_148;
-    if _e91 {
-        let _e94 = s_star;
-        local_149 = (_e94 <= _e15);
-    } else {
-        local_149 = false;
-    }
-    let _e97 = local_149;
-    if _e97 {
-        let _e101 = t_star;
-        local_150 = (s_26.t_min <= _e101);
+        local_150 = (sin_a_1 > 0f);
     } else {
         local_150 = false;
     }
-    let _e104 = local_150;
-    if _e104 {
-        if !(infinite_5) {
-            let _e110 = t_star;
-            local_152 = (_e110 <= s_26.t_max);
-        } else {
-            local_152 = true;
-        }
-        let _e114 = local_152;
-        local_151 = _e114;
+    let _e84 = local_150;
+    if _e84 {
+        let _e87 = s_star;
+        local_151 = (_e87 >= 0f);
     } else {
         local_151 = false;
     }
-    let _e116 = local_151;
+    let _e91 = local_151;
+    if _e91 {
+        let _e94 = s_star;
+        local_152 = (_e94 <= _e15);
+    } else {
+        local_152 = false;
+    }
+    let _e97 = local_152;
+    if _e97 {
+        let _e101 = t_star;
+        local_153 = (s_26.t_min <= _e101);
+    } else {
+        local_153 = false;
+    }
+    let _e104 = local_153;
+    if _e104 {
+        if !(infinite_5) {
+            let _e110 = t_star;
+            local_155 = (_e110 <= s_26.t_max);
+        } else {
+            local_155 = true;
+        }
+        let _e114 = local_155;
+        local_154 = _e114;
+    } else {
+        local_154 = false;
+    }
+    let _e116 = local_154;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_153 = (_e73 > 0f);
+        local_156 = (_e73 > 0f);
     } else {
-        local_153 = false;
+        local_156 = false;
     }
-    let _e129 = local_153;
+    let _e129 = local_156;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_154 = (_e136 < (_e15 + _e15));
+        local_157 = (_e136 < (_e15 + _e15));
     } else {
-        local_154 = false;
+        local_157 = false;
     }
-    let _e140 = local_154;
+    let _e140 = local_157;
     if _e140 {
         let _e143 = scale;
-        local_155 = (_e143 < _e15);
+        local_158 = (_e143 < _e15);
     } else {
-        local_155 = false;
+        local_158 = false;
     }
-    let near_2 = local_155;
+    let near_2 = local_158;
     if near_2 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_156 = _e154;
+        local_159 = _e154;
     } else {
-        local_156 = false;
+        local_159 = false;
     }
-    let _e156 = local_156;
+    let _e156 = local_159;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_157 = _e163;
+        local_160 = _e163;
     } else {
-        local_157 = false;
+        local_160 = false;
     }
-    let _e165 = local_157;
+    let _e165 = local_160;
     if !(_e165) {
         scale = 0f;
     }
@@ -5704,11 +5802,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         let _e195 = airlight_to_w(_e193, 0f);
         let _e197 = g_24;
         let _e198 = airlight_to_w(_e197, _e15);
-        local_158 = (min(-(_e195), _e198) < 0.5f);
+        local_161 = (min(-(_e195), _e198) < 0.5f);
     } else {
-        local_158 = false;
+        local_161 = false;
     }
-    let sliver = local_158;
+    let sliver = local_161;
     loop {
         let _e206 = i_24;
         if (_e206 < 3u) {
@@ -5718,31 +5816,31 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         {
             let _e209 = i_24;
             if (_e209 == 0u) {
-                local_159 = sliver;
+                local_162 = sliver;
             } else {
-                local_159 = false;
+                local_162 = false;
             }
-            let _e215 = local_159;
+            let _e215 = local_162;
             if _e215 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e220 = i_24;
-                local_160 = (_e220 > 0u);
+                local_163 = (_e220 > 0u);
             } else {
-                local_160 = false;
+                local_163 = false;
             }
-            let _e224 = local_160;
+            let _e224 = local_163;
             if _e224 {
                 continue;
             }
             let _e225 = i_24;
             if (_e225 == 2u) {
-                local_161 = infinite_5;
+                local_164 = infinite_5;
             } else {
-                local_161 = false;
+                local_164 = false;
             }
-            let _e231 = local_161;
+            let _e231 = local_164;
             if _e231 {
                 continue;
             }
@@ -5751,11 +5849,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
             if (_e234 > 0f) {
                 let _e239 = i_24;
                 let _e241 = at[_e239];
-                local_162 = (_e241 < _e15);
+                local_165 = (_e241 < _e15);
             } else {
-                local_162 = false;
+                local_165 = false;
             }
-            let _e244 = local_162;
+            let _e244 = local_165;
             if _e244 {
                 let _e245 = i_24;
                 let _e247 = g_24;
@@ -5790,12 +5888,12 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
-    var local_163: bool;
-    var local_164: bool;
-    var local_165: bool;
     var local_166: bool;
     var local_167: bool;
     var local_168: bool;
+    var local_169: bool;
+    var local_170: bool;
+    var local_171: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -5807,61 +5905,61 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     if (s_27.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let i_44 = min(u32(max(floor(x_21), 0f)), (g_25.panels - 1u));
         let t_9 = (x_21 - f32(i_44));
-        let a_44 = g_25.gamma[i_44];
-        let b_21 = g_25.gamma[(i_44 + 1u)];
-        let w_8 = (b_21 - a_44);
+        let a_46 = g_25.gamma[i_44];
+        let b_23 = g_25.gamma[(i_44 + 1u)];
+        let w_8 = (b_23 - a_46);
         let u_9 = (1f - t_9);
         let smooth_a = (((g_25.smooth_edges >> i_44) & 1u) != 0u);
         let smooth_b = (((g_25.smooth_edges >> (i_44 + 1u)) & 1u) != 0u);
-        gamma_1 = (a_44 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
+        gamma_1 = (a_46 + (((w_8 * t_9) * t_9) * ((3f - t_9) - t_9)));
         jacobian = (((w_8 * 6f) * t_9) * u_9);
         let _e58 = gamma_1;
         if smooth_b {
-            local_163 = !(smooth_a);
-        } else {
-            local_163 = false;
-        }
-        let _e66 = local_163;
-        gamma_1 = select(_e58, (a_44 + ((w_8 * t_9) * t_9)), _e66);
-        let _e68 = jacobian;
-        if smooth_b {
-            local_164 = !(smooth_a);
-        } else {
-            local_164 = false;
-        }
-        let _e75 = local_164;
-        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
-        let _e77 = gamma_1;
-        if smooth_a {
-            local_165 = !(smooth_b);
-        } else {
-            local_165 = false;
-        }
-        let _e85 = local_165;
-        gamma_1 = select(_e77, (b_21 - ((w_8 * u_9) * u_9)), _e85);
-        let _e87 = jacobian;
-        if smooth_a {
-            local_166 = !(smooth_b);
+            local_166 = !(smooth_a);
         } else {
             local_166 = false;
         }
-        let _e94 = local_166;
-        jacobian = select(_e87, (w_8 * (u_9 + u_9)), _e94);
-        let _e96 = gamma_1;
-        if smooth_a {
-            local_167 = smooth_b;
+        let _e66 = local_166;
+        gamma_1 = select(_e58, (a_46 + ((w_8 * t_9) * t_9)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
+            local_167 = !(smooth_a);
         } else {
             local_167 = false;
         }
-        let _e102 = local_167;
-        gamma_1 = select(_e96, (a_44 + (w_8 * t_9)), _e102);
-        let _e104 = jacobian;
+        let _e75 = local_167;
+        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
+        let _e77 = gamma_1;
         if smooth_a {
-            local_168 = smooth_b;
+            local_168 = !(smooth_b);
         } else {
             local_168 = false;
         }
-        let _e108 = local_168;
+        let _e85 = local_168;
+        gamma_1 = select(_e77, (b_23 - ((w_8 * u_9) * u_9)), _e85);
+        let _e87 = jacobian;
+        if smooth_a {
+            local_169 = !(smooth_b);
+        } else {
+            local_169 = false;
+        }
+        let _e94 = local_169;
+        jacobian = select(_e87, (w_8 * (u_9 + u_9)), _e94);
+        let _e96 = gamma_1;
+        if smooth_a {
+            local_170 = smooth_b;
+        } else {
+            local_170 = false;
+        }
+        let _e102 = local_170;
+        gamma_1 = select(_e96, (a_46 + (w_8 * t_9)), _e102);
+        let _e104 = jacobian;
+        if smooth_a {
+            local_171 = smooth_b;
+        } else {
+            local_171 = false;
+        }
+        let _e108 = local_171;
         jacobian = select(_e104, w_8, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -5890,9 +5988,9 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
         p.t_max = 0f;
         p.flags = 1u;
         let sin_g_1 = max(_e119.y, 0f);
-        let h_8 = (g_25.d * sin_g_1);
-        let d_c_2 = select(0f, ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_8 > 0f));
-        let exact = AirlightCanonical(h_8, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
+        let h_9 = (g_25.d * sin_g_1);
+        let d_c_2 = select(0f, ((_e119.x * g_25.axis_u) - (sin_g_1 * g_25.axis_l)), (h_9 > 0f));
+        let exact = AirlightCanonical(h_9, (g_25.d * _e119.x), ((_e119.x * g_25.axis_l) + (sin_g_1 * g_25.axis_u)), d_c_2, 0f, 0f, true);
         let _e206 = p;
         let _e207 = weight;
         let _e210 = jacobian;
@@ -5960,7 +6058,7 @@ fn airlight_area_phase_about(s_29: AirlightScene, sign_: f32, cs_1: vec2<f32>) -
     return _e41;
 }
 
-fn airlight_emitted(s_30: AirlightScene, c_7: f32) -> f32 {
+fn airlight_emitted(s_30: AirlightScene, c_8: f32) -> f32 {
     var e_2: u32;
     var base_1: f32;
     var acc_1: f32 = 1f;
@@ -5970,7 +6068,7 @@ fn airlight_emitted(s_30: AirlightScene, c_7: f32) -> f32 {
         return s_30.intensity;
     }
     e_2 = (p_2 - 1u);
-    base_1 = c_7;
+    base_1 = c_8;
     let _e13 = e_2;
     if ((_e13 & 1u) != 0u) {
         let _e18 = acc_1;
@@ -6094,15 +6192,15 @@ fn airlight_emission_scale(s_31: AirlightScene) -> f32 {
 }
 
 fn airlight_graded_range(s_32: AirlightScene, top: f32) -> vec2<f32> {
-    var local_169: bool;
+    var local_172: bool;
 
     let _e2 = airlight_emission_scale(s_32);
     if (_e2 > 0f) {
-        local_169 = (_e2 < top);
+        local_172 = (_e2 < top);
     } else {
-        local_169 = false;
+        local_172 = false;
     }
-    let _e9 = local_169;
+    let _e9 = local_172;
     if _e9 {
         let _e11 = airlight_atan((top / _e2));
         return vec2<f32>(_e11, _e2);
@@ -6129,14 +6227,14 @@ fn airlight_far_from_edge(s_34: AirlightScene, depth: f32, z_9: f32) -> bool {
 }
 
 fn airlight_lobe(sign_1: f32, gap_3: f32) -> vec2<f32> {
-    var local_170: bool;
+    var local_173: bool;
 
     if !(!((gap_3 > 0f))) {
-        local_170 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_173 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_170 = true;
+        local_173 = true;
     }
-    let _e12 = local_170;
+    let _e12 = local_173;
     if _e12 {
         return vec2<f32>(1f, 0f);
     }
@@ -6155,8 +6253,8 @@ fn airlight_phase_lobes(s_35: AirlightScene) -> vec4<f32> {
             first = _e12;
         }
         case 3u: {
-            let a_45 = abs(p0_5);
-            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_45) / a_45), (a_45 > 0f)));
+            let a_47 = abs(p0_5);
+            let _e21 = airlight_lobe(p0_5, select(AIRLIGHT_FLT_MAX, ((1f - a_47) / a_47), (a_47 > 0f)));
             first = _e21;
         }
         case 5u: {
@@ -6177,19 +6275,19 @@ fn airlight_phase_lobes(s_35: AirlightScene) -> vec4<f32> {
 
 fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
-    var local_171: bool;
+    var local_174: bool;
 
-    let m_11 = abs(n_2);
-    if (m_11.x <= m_11.y) {
-        local_171 = (m_11.x <= m_11.z);
+    let m_12 = abs(n_2);
+    if (m_12.x <= m_12.y) {
+        local_174 = (m_12.x <= m_12.z);
     } else {
-        local_171 = false;
+        local_174 = false;
     }
-    let _e16 = local_171;
+    let _e16 = local_174;
     if _e16 {
         u_3 = vec3<f32>(1f, 0f, 0f);
     } else {
-        if (m_11.y <= m_11.z) {
+        if (m_12.y <= m_12.z) {
             u_3 = vec3<f32>(0f, 1f, 0f);
         }
     }
@@ -6198,26 +6296,26 @@ fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     return _e30;
 }
 
-fn airlight_area_theta(a_17: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
+fn airlight_area_theta(a_19: AirlightArea, t_3: f32, infinite_3: bool) -> f32 {
     if infinite_3 {
         return 1.5707964f;
     }
-    let _e7 = airlight_atan2_((t_3 - a_17.x_h), a_17.h_eff);
+    let _e7 = airlight_atan2_((t_3 - a_19.x_h), a_19.h_eff);
     return _e7;
 }
 
-fn airlight_edge_nearest(a_18: vec2<f32>, b_13: vec2<f32>, q_4: vec2<f32>) -> vec2<f32> {
-    let e_15 = (b_13 - a_18);
-    return (a_18 + (clamp(((((q_4.x - a_18.x) * e_15.x) + ((q_4.y - a_18.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
+fn airlight_edge_nearest(a_20: vec2<f32>, b_15: vec2<f32>, q_4: vec2<f32>) -> vec2<f32> {
+    let e_15 = (b_15 - a_20);
+    return (a_20 + (clamp(((((q_4.x - a_20.x) * e_15.x) + ((q_4.y - a_20.y) * e_15.y)) / ((e_15.x * e_15.x) + (e_15.y * e_15.y))), 0f, 1f) * e_15));
 }
 
-fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
+fn airlight_outline_distances(o_1: AirlightOutline) -> vec2<f32> {
     var nearest: vec2<f32> = vec2(340282350000000000000000000000000000000f);
     var i_27: u32 = 0u;
 
-    if (o.radius > 0f) {
-        let c_18 = o.corners[0];
-        return vec2<f32>(abs((sqrt(((c_18.x * c_18.x) + (c_18.y * c_18.y))) - o.radius)), AIRLIGHT_FLT_MAX);
+    if (o_1.radius > 0f) {
+        let c_19 = o_1.corners[0];
+        return vec2<f32>(abs((sqrt(((c_19.x * c_19.x) + (c_19.y * c_19.y))) - o_1.radius)), AIRLIGHT_FLT_MAX);
     }
     loop {
         let _e24 = i_27;
@@ -6228,7 +6326,7 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
         {
             let _e28 = i_27;
             let _e31 = i_27;
-            let _e39 = airlight_edge_nearest(o.corners[_e28], o.corners[((_e31 + 1u) % 4u)], vec2(0f));
+            let _e39 = airlight_edge_nearest(o_1.corners[_e28], o_1.corners[((_e31 + 1u) % 4u)], vec2(0f));
             let distance_ = sqrt(((_e39.x * _e39.x) + (_e39.y * _e39.y)));
             let _e49 = nearest.x;
             if (distance_ < _e49) {
@@ -6250,21 +6348,21 @@ fn airlight_outline_distances(o: AirlightOutline) -> vec2<f32> {
     return _e61;
 }
 
-fn airlight_outline_at(s_36: AirlightScene, a_19: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
-    let rel = (x_22 - a_19.c);
-    let foot = vec2<f32>(dot(rel, a_19.a1_), dot(rel, a_19.a2_));
+fn airlight_outline_at(s_36: AirlightScene, a_21: AirlightArea, x_22: vec3<f32>) -> AirlightOutline {
+    let rel = (x_22 - a_21.c);
+    let foot = vec2<f32>(dot(rel, a_21.a1_), dot(rel, a_21.a2_));
     let zero = vec2(0f);
     if (s_36.light_shape == AIRLIGHT_SHAPE_DISC) {
-        return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_19.radius);
+        return AirlightOutline(array<vec2<f32>, 4>(-(foot), zero, zero, zero), a_21.radius);
     }
-    let u2_ = vec2<f32>(dot(a_19.eu, a_19.a1_), dot(a_19.eu, a_19.a2_));
-    let v2_ = vec2<f32>(dot(a_19.ev, a_19.a1_), dot(a_19.ev, a_19.a2_));
+    let u2_ = vec2<f32>(dot(a_21.eu, a_21.a1_), dot(a_21.eu, a_21.a2_));
+    let v2_ = vec2<f32>(dot(a_21.ev, a_21.a1_), dot(a_21.ev, a_21.a2_));
     return AirlightOutline(array<vec2<f32>, 4>(-(foot), (u2_ - foot), ((u2_ + v2_) - foot), (v2_ - foot)), 0f);
 }
 
 fn airlight_area(s_37: AirlightScene) -> AirlightArea {
-    var a_20: AirlightArea;
-    var local_172: bool;
+    var a_22: AirlightArea;
+    var local_175: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
     var cut1_: f32 = 0f;
@@ -6274,281 +6372,286 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     var size: f32;
     var t_end_1: f32;
     var end_infinite: bool;
-    var local_173: bool;
+    var local_176: bool;
     var cuts_4: array<f32, 4>;
     var scale_1: f32 = 1f;
-    var local_174: bool;
-    var local_175: bool;
-    var local_176: bool;
     var local_177: bool;
-    var i_28: u32 = 0u;
-    var i_29: u32 = 0u;
     var local_178: bool;
     var local_179: bool;
     var local_180: bool;
+    var i_28: u32 = 0u;
+    var i_29: u32 = 0u;
+    var local_181: bool;
+    var local_182: bool;
+    var local_183: bool;
 
     let zero_1 = vec3(0f);
     let _e21 = airlight_phase_lobes(s_37);
-    a_20 = AirlightArea(zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false);
-    let _e28 = airlight_isotropic_phase(s_37);
-    a_20.isotropic = _e28;
+    a_22 = AirlightArea(zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0f, 0f, array<f32, 13>(0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f, 0f), 0u, 0u, _e21, false, AirlightSphereFoot(zero_1, 0f, 0f));
+    let _e31 = airlight_isotropic_phase(s_37);
+    a_22.isotropic = _e31;
     if !((s_37.intensity == 0f)) {
-        local_172 = (s_37.sigma_s == 0f);
+        local_175 = (s_37.sigma_s == 0f);
     } else {
-        local_172 = true;
+        local_175 = true;
     }
-    let _e39 = local_172;
-    if _e39 {
-        a_20.outcome = 1u;
-        let _e42 = a_20;
-        return _e42;
+    let _e42 = local_175;
+    if _e42 {
+        a_22.outcome = 1u;
+        let _e45 = a_22;
+        return _e45;
     }
-    let o_8 = s_37.origin;
-    let _e45 = airlight_normalize(s_37.dir);
-    a_20.d = _e45;
+    let o_9 = s_37.origin;
+    let _e48 = airlight_normalize(s_37.dir);
+    a_22.d = _e48;
     let infinite_6 = ((s_37.flags & 1u) != 0u);
     let t0_2 = s_37.t_min;
     centre = s_37.light_position;
     size = s_37.light_param_a;
     if (s_37.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        let _e72 = a_20.c;
-        let oc = (o_8 - _e72);
-        let b_22 = dot(oc, _e45);
-        let _e77 = a_20.radius;
-        let _e79 = a_20.radius;
-        let k_12 = (dot(oc, oc) - (_e77 * _e79));
-        let _e84 = airlight_safe_length((oc - (b_22 * _e45)));
-        let _e86 = a_20.radius;
-        let _e89 = a_20.radius;
-        let disc_2 = ((_e86 - _e84) * (_e89 + _e84));
+        let _e75 = a_22.c;
+        let oc_1 = (o_9 - _e75);
+        let b_24 = dot(oc_1, _e48);
+        let _e80 = a_22.radius;
+        let _e82 = a_22.radius;
+        let k_12 = (dot(oc_1, oc_1) - (_e80 * _e82));
+        let key_9 = u32((s_37.flags > 1u));
+        let _e92 = a_22.c;
+        let _e94 = a_22.radius;
+        let _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_9);
+        a_22.foot = _e95;
+        let _e98 = a_22.foot.miss;
+        let _e102 = a_22.foot.h;
+        let _e104 = a_22.radius;
+        let disc_2 = (-(_e98) * (_e102 + _e104));
         if (disc_2 > 0f) {
             let root_2 = sqrt(disc_2);
-            let q_13 = (-(b_22) - select(root_2, -(root_2), ((bitcast<u32>(b_22) & 2147483648u) != 0u)));
+            let q_13 = (-(b_24) - select(root_2, -(root_2), ((bitcast<u32>(b_24) & 2147483648u) != 0u)));
             cut0_ = q_13;
             cut1_ = (k_12 / q_13);
             cut_count = 2u;
         }
     } else {
         if (s_37.light_shape == AIRLIGHT_SHAPE_DISC) {
-            let _e111 = airlight_normalize(s_37.light_axis);
-            a_20.n = _e111;
-            let _e114 = a_20.n;
-            let _e115 = airlight_basis_e1_(_e114);
-            a_20.a1_ = _e115;
+            let _e126 = airlight_normalize(s_37.light_axis);
+            a_22.n = _e126;
+            let _e129 = a_22.n;
+            let _e130 = airlight_basis_e1_(_e129);
+            a_22.a1_ = _e130;
         } else {
-            a_20.eu = s_37.light_axis;
-            a_20.ev = s_37.light_end;
-            let _e122 = a_20.eu;
-            let _e124 = a_20.ev;
-            let _e126 = airlight_normalize(cross(_e122, _e124));
-            a_20.n = _e126;
-            let _e129 = a_20.eu;
-            let _e130 = airlight_normalize(_e129);
-            a_20.a1_ = _e130;
-            let _e132 = a_20.eu;
-            let _e134 = a_20.ev;
-            let diagonal = (_e132 + _e134);
-            let _e137 = a_20.c;
-            centre = (_e137 + (0.5f * diagonal));
-            let _e141 = airlight_safe_length(diagonal);
-            let _e143 = a_20.eu;
-            let _e145 = a_20.ev;
-            let _e147 = airlight_safe_length((_e143 - _e145));
-            size = (0.5f * max(_e141, _e147));
+            a_22.eu = s_37.light_axis;
+            a_22.ev = s_37.light_end;
+            let _e137 = a_22.eu;
+            let _e139 = a_22.ev;
+            let _e141 = airlight_normalize(cross(_e137, _e139));
+            a_22.n = _e141;
+            let _e144 = a_22.eu;
+            let _e145 = airlight_normalize(_e144);
+            a_22.a1_ = _e145;
+            let _e147 = a_22.eu;
+            let _e149 = a_22.ev;
+            let diagonal = (_e147 + _e149);
+            let _e152 = a_22.c;
+            centre = (_e152 + (0.5f * diagonal));
+            let _e156 = airlight_safe_length(diagonal);
+            let _e158 = a_22.eu;
+            let _e160 = a_22.ev;
+            let _e162 = airlight_safe_length((_e158 - _e160));
+            size = (0.5f * max(_e156, _e162));
         }
-        let _e153 = a_20.n;
-        let _e155 = a_20.a1_;
-        a_20.a2_ = cross(_e153, _e155);
-        let _e159 = a_20.a1_;
-        let _e162 = a_20.a2_;
-        let _e165 = a_20.n;
-        a_20.dirs = vec3<f32>(dot(_e159, _e45), dot(_e162, _e45), dot(_e165, _e45));
-        let _e169 = a_20.c;
-        let _e172 = a_20.n;
-        let _e175 = a_20.n;
-        cut0_ = (dot((_e169 - o_8), _e172) / dot(_e45, _e175));
+        let _e168 = a_22.n;
+        let _e170 = a_22.a1_;
+        a_22.a2_ = cross(_e168, _e170);
+        let _e174 = a_22.a1_;
+        let _e177 = a_22.a2_;
+        let _e180 = a_22.n;
+        a_22.dirs = vec3<f32>(dot(_e174, _e48), dot(_e177, _e48), dot(_e180, _e48));
+        let _e184 = a_22.c;
+        let _e187 = a_22.n;
+        let _e190 = a_22.n;
+        cut0_ = (dot((_e184 - o_9), _e187) / dot(_e48, _e190));
         cut_count = 1u;
-        let _e179 = a_20;
-        let _e180 = cut0_;
-        let _e183 = airlight_outline_at(s_37, _e179, (o_8 + (_e180 * _e45)));
-        let _e184 = airlight_outline_distances(_e183);
-        distances = _e184;
-        let _e186 = a_20.n;
-        front = select(1f, -1f, (dot(_e45, _e186) < 0f));
+        let _e194 = a_22;
+        let _e195 = cut0_;
+        let _e198 = airlight_outline_at(s_37, _e194, (o_9 + (_e195 * _e48)));
+        let _e199 = airlight_outline_distances(_e198);
+        distances = _e199;
+        let _e201 = a_22.n;
+        front = select(1f, -1f, (dot(_e48, _e201) < 0f));
     }
-    let _e193 = size;
-    if !((_e193 > 0f)) {
-        a_20.outcome = 1u;
-        let _e199 = a_20;
-        return _e199;
+    let _e208 = size;
+    if !((_e208 > 0f)) {
+        a_22.outcome = 1u;
+        let _e214 = a_22;
+        return _e214;
     }
-    let _e200 = centre;
-    let to_centre = (_e200 - o_8);
-    a_20.x_h = dot(to_centre, _e45);
-    let _e205 = a_20.x_h;
-    let _e208 = airlight_safe_length((to_centre - (_e205 * _e45)));
-    let _e211 = size;
-    let _e212 = size;
-    a_20.h_eff = sqrt(((_e208 * _e208) + (_e211 * _e212)));
+    let _e215 = centre;
+    let to_centre_1 = (_e215 - o_9);
+    a_22.x_h = dot(to_centre_1, _e48);
+    let _e220 = a_22.x_h;
+    let _e223 = airlight_safe_length((to_centre_1 - (_e220 * _e48)));
+    let _e226 = size;
+    let _e227 = size;
+    a_22.h_eff = sqrt(((_e223 * _e223) + (_e226 * _e227)));
     t_end_1 = s_37.t_max;
     end_infinite = infinite_6;
     if (s_37.sigma_t > 0f) {
-        let _e222 = centre;
-        let _e226 = airlight_safe_length((_e222 - (o_8 + (t0_2 * _e45))));
-        let _e228 = size;
-        let reach_1 = (((t0_2 + _e226) + _e228) - (-15.942385f / s_37.sigma_t));
+        let _e237 = centre;
+        let _e241 = airlight_safe_length((_e237 - (o_9 + (t0_2 * _e48))));
+        let _e243 = size;
+        let reach_1 = (((t0_2 + _e241) + _e243) - (-15.942385f / s_37.sigma_t));
         if !(infinite_6) {
-            let _e237 = t_end_1;
-            local_173 = (reach_1 < _e237);
+            let _e252 = t_end_1;
+            local_176 = (reach_1 < _e252);
         } else {
-            local_173 = true;
+            local_176 = true;
         }
-        let _e240 = local_173;
-        if _e240 {
+        let _e255 = local_176;
+        if _e255 {
             t_end_1 = reach_1;
             end_infinite = false;
         }
     }
-    let _e242 = a_20;
-    let _e244 = airlight_area_theta(_e242, t0_2, false);
-    let _e245 = a_20;
-    let _e246 = t_end_1;
-    let _e247 = end_infinite;
-    let _e248 = airlight_area_theta(_e245, _e246, _e247);
-    let _e250 = a_20.x_h;
-    let _e252 = a_20.x_h;
-    let _e253 = cut0_;
-    let _e254 = cut_count;
-    let _e259 = a_20.x_h;
-    let _e260 = cut1_;
-    let _e261 = cut_count;
-    let _e266 = a_20.x_h;
-    cuts_4 = array<f32, 4>(_e250, select(_e252, _e253, (_e254 > 0u)), select(_e259, _e260, (_e261 > 1u)), _e266);
-    let _e273 = a_20.lobes.y;
-    if (_e273 > 0f) {
-        let _e276 = scale_1;
-        let _e279 = a_20.lobes.y;
-        scale_1 = min(_e276, _e279);
+    let _e257 = a_22;
+    let _e259 = airlight_area_theta(_e257, t0_2, false);
+    let _e260 = a_22;
+    let _e261 = t_end_1;
+    let _e262 = end_infinite;
+    let _e263 = airlight_area_theta(_e260, _e261, _e262);
+    let _e265 = a_22.x_h;
+    let _e267 = a_22.x_h;
+    let _e268 = cut0_;
+    let _e269 = cut_count;
+    let _e274 = a_22.x_h;
+    let _e275 = cut1_;
+    let _e276 = cut_count;
+    let _e281 = a_22.x_h;
+    cuts_4 = array<f32, 4>(_e265, select(_e267, _e268, (_e269 > 0u)), select(_e274, _e275, (_e276 > 1u)), _e281);
+    let _e288 = a_22.lobes.y;
+    if (_e288 > 0f) {
+        let _e291 = scale_1;
+        let _e294 = a_22.lobes.y;
+        scale_1 = min(_e291, _e294);
     }
-    let _e283 = a_20.lobes.w;
-    if (_e283 > 0f) {
-        let _e286 = scale_1;
-        let _e289 = a_20.lobes.w;
-        scale_1 = min(_e286, _e289);
+    let _e298 = a_22.lobes.w;
+    if (_e298 > 0f) {
+        let _e301 = scale_1;
+        let _e304 = a_22.lobes.w;
+        scale_1 = min(_e301, _e304);
     }
-    let _e291 = cut_count;
-    if (_e291 == 1u) {
-        let _e296 = scale_1;
-        local_174 = (_e296 < 1f);
+    let _e306 = cut_count;
+    if (_e306 == 1u) {
+        let _e311 = scale_1;
+        local_177 = (_e311 < 1f);
     } else {
-        local_174 = false;
+        local_177 = false;
     }
-    let _e300 = local_174;
-    if _e300 {
-        let _e303 = cut0_;
-        local_175 = (_e303 >= t0_2);
+    let _e315 = local_177;
+    if _e315 {
+        let _e318 = cut0_;
+        local_178 = (_e318 >= t0_2);
     } else {
-        local_175 = false;
+        local_178 = false;
     }
-    let _e306 = local_175;
-    if _e306 {
-        let _e309 = end_infinite;
-        if !(_e309) {
-            let _e313 = cut0_;
-            let _e314 = t_end_1;
-            local_177 = (_e313 <= _e314);
+    let _e321 = local_178;
+    if _e321 {
+        let _e324 = end_infinite;
+        if !(_e324) {
+            let _e328 = cut0_;
+            let _e329 = t_end_1;
+            local_180 = (_e328 <= _e329);
         } else {
-            local_177 = true;
+            local_180 = true;
         }
-        let _e317 = local_177;
-        local_176 = _e317;
+        let _e332 = local_180;
+        local_179 = _e332;
     } else {
-        local_176 = false;
+        local_179 = false;
     }
-    let _e319 = local_176;
-    if _e319 {
+    let _e334 = local_179;
+    if _e334 {
         loop {
-            let _e322 = i_28;
-            if (_e322 < 2u) {
+            let _e337 = i_28;
+            if (_e337 < 2u) {
             } else {
                 break;
             }
             {
-                let _e326 = i_28;
-                let _e328 = distances[_e326];
-                let _e330 = scale_1;
-                let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e328) / _e330);
-                let _e333 = a_20.h_eff;
-                if (reach_2 < _e333) {
-                    let _e335 = i_28;
-                    let _e339 = cut0_;
-                    let _e340 = front;
-                    cuts_4[(_e335 + 2u)] = (_e339 + (_e340 * reach_2));
+                let _e341 = i_28;
+                let _e343 = distances[_e341];
+                let _e345 = scale_1;
+                let reach_2 = ((AIRLIGHT_CROSSING_REACH * _e343) / _e345);
+                let _e348 = a_22.h_eff;
+                if (reach_2 < _e348) {
+                    let _e350 = i_28;
+                    let _e354 = cut0_;
+                    let _e355 = front;
+                    cuts_4[(_e350 + 2u)] = (_e354 + (_e355 * reach_2));
                 }
             }
             continuing {
-                let _e344 = i_28;
-                i_28 = (_e344 + 1u);
+                let _e359 = i_28;
+                i_28 = (_e359 + 1u);
             }
         }
     }
     loop {
-        let _e348 = i_29;
-        if (_e348 < 4u) {
+        let _e363 = i_29;
+        if (_e363 < 4u) {
         } else {
             break;
         }
         {
-            let _e351 = i_29;
-            let t_10 = cuts_4[_e351];
-            let _e354 = i_29;
-            cuts_4[_e354] = _e244;
-            let _e356 = airlight_is_finite(t_10);
-            if _e356 {
-                local_178 = (t_10 >= t0_2);
+            let _e366 = i_29;
+            let t_10 = cuts_4[_e366];
+            let _e369 = i_29;
+            cuts_4[_e369] = _e259;
+            let _e371 = airlight_is_finite(t_10);
+            if _e371 {
+                local_181 = (t_10 >= t0_2);
             } else {
-                local_178 = false;
+                local_181 = false;
             }
-            let _e361 = local_178;
-            if _e361 {
-                let _e364 = end_infinite;
-                if !(_e364) {
-                    let _e368 = t_end_1;
-                    local_180 = (t_10 <= _e368);
+            let _e376 = local_181;
+            if _e376 {
+                let _e379 = end_infinite;
+                if !(_e379) {
+                    let _e383 = t_end_1;
+                    local_183 = (t_10 <= _e383);
                 } else {
-                    local_180 = true;
+                    local_183 = true;
                 }
-                let _e371 = local_180;
-                local_179 = _e371;
+                let _e386 = local_183;
+                local_182 = _e386;
             } else {
-                local_179 = false;
+                local_182 = false;
             }
-            let _e373 = local_179;
-            if _e373 {
-                let _e374 = i_29;
-                let _e376 = a_20;
-                let _e378 = airlight_area_theta(_e376, t_10, false);
-                cuts_4[_e374] = _e378;
+            let _e388 = local_182;
+            if _e388 {
+                let _e389 = i_29;
+                let _e391 = a_22;
+                let _e393 = airlight_area_theta(_e391, t_10, false);
+                cuts_4[_e389] = _e393;
             }
         }
         continuing {
-            let _e380 = i_29;
-            i_29 = (_e380 + 1u);
+            let _e395 = i_29;
+            i_29 = (_e395 + 1u);
         }
     }
-    let _e382 = cuts_4;
-    let _e383 = airlight_edges_between(_e244, _e248, _e382);
-    a_20.edges = _e383.at;
-    a_20.panels = _e383.panels;
-    let _e388 = a_20;
-    return _e388;
+    let _e397 = cuts_4;
+    let _e398 = airlight_edges_between(_e259, _e263, _e397);
+    a_22.edges = _e398.at;
+    a_22.panels = _e398.panels;
+    let _e403 = a_22;
+    return _e403;
 }
 
 fn airlight_above(z_10: f32, off: vec2<f32>) -> AirlightAbove {
     return AirlightAbove(z_10, off, sqrt((((z_10 * z_10) + (off.x * off.x)) + (off.y * off.y))));
 }
 
-fn airlight_flat_node(s_38: AirlightScene, a_21: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
+fn airlight_flat_node(s_38: AirlightScene, a_23: AirlightArea, above_1: AirlightAbove, e_3: vec2<f32>, graded_1: f32, node_1: f32) -> f32 {
     let _e6 = airlight_graded_node(graded_1, node_1);
     let _e8 = airlight_cos_sin_half_turn(_e6.x);
     let r_12 = ((above_1.rho0_ * _e8.y) / _e8.x);
@@ -6558,82 +6661,82 @@ fn airlight_flat_node(s_38: AirlightScene, a_21: AirlightArea, above_1: Airlight
     let dist = sqrt((((z_19 * z_19) + (p_4.x * p_4.x)) + (p_4.y * p_4.y)));
     let inv_5 = (1f / dist);
     let cos_ = (z_19 * inv_5);
-    let _e50 = airlight_area_phase(s_38, ((((p_4.x * a_21.dirs.x) + (p_4.y * a_21.dirs.y)) - (z_19 * a_21.dirs.z)) * inv_5));
+    let _e50 = airlight_area_phase(s_38, ((((p_4.x * a_23.dirs.x) + (p_4.y * a_23.dirs.y)) - (z_19 * a_23.dirs.z)) * inv_5));
     let _e52 = airlight_emitted(s_38, cos_);
     return ((((((((_e6.y * _e52) * exp(min((-(s_38.sigma_t) * dist), 0f))) * _e50) * cos_) * inv_5) * inv_5) * r_12) * dr);
 }
 
-fn airlight_flat_radial(s_39: AirlightScene, a_22: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
+fn airlight_flat_radial(s_39: AirlightScene, a_24: AirlightArea, above_2: AirlightAbove, e_4: vec2<f32>, r_max: f32) -> f32 {
     var sum_7: f32 = 0f;
 
     let _e7 = airlight_atan((r_max / above_2.rho0_));
     let _e8 = airlight_graded_range(s_39, _e7);
     let graded_6 = _e8.y;
-    let c_19 = (0.5f * _e8.x);
+    let c_20 = (0.5f * _e8.x);
     let hw_2 = (0.5f * _e8.x);
     let _e18 = sum_7;
-    let _e24 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.09501251f * hw_2)));
+    let _e24 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.09501251f * hw_2)));
     sum_7 = (_e18 + ((0.1894506f * hw_2) * _e24));
     let _e27 = sum_7;
-    let _e33 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.09501251f * hw_2)));
+    let _e33 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.09501251f * hw_2)));
     sum_7 = (_e27 + ((0.1894506f * hw_2) * _e33));
     let _e36 = sum_7;
-    let _e42 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.28160354f * hw_2)));
+    let _e42 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.28160354f * hw_2)));
     sum_7 = (_e36 + ((0.18260342f * hw_2) * _e42));
     let _e45 = sum_7;
-    let _e51 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.28160354f * hw_2)));
+    let _e51 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.28160354f * hw_2)));
     sum_7 = (_e45 + ((0.18260342f * hw_2) * _e51));
     let _e54 = sum_7;
-    let _e60 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.45801678f * hw_2)));
+    let _e60 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.45801678f * hw_2)));
     sum_7 = (_e54 + ((0.16915652f * hw_2) * _e60));
     let _e63 = sum_7;
-    let _e69 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.45801678f * hw_2)));
+    let _e69 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.45801678f * hw_2)));
     sum_7 = (_e63 + ((0.16915652f * hw_2) * _e69));
     let _e72 = sum_7;
-    let _e78 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.61787623f * hw_2)));
+    let _e78 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.61787623f * hw_2)));
     sum_7 = (_e72 + ((0.14959599f * hw_2) * _e78));
     let _e81 = sum_7;
-    let _e87 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.61787623f * hw_2)));
+    let _e87 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.61787623f * hw_2)));
     sum_7 = (_e81 + ((0.14959599f * hw_2) * _e87));
     let _e90 = sum_7;
-    let _e96 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.7554044f * hw_2)));
+    let _e96 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.7554044f * hw_2)));
     sum_7 = (_e90 + ((0.12462897f * hw_2) * _e96));
     let _e99 = sum_7;
-    let _e105 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.7554044f * hw_2)));
+    let _e105 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.7554044f * hw_2)));
     sum_7 = (_e99 + ((0.12462897f * hw_2) * _e105));
     let _e108 = sum_7;
-    let _e114 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.8656312f * hw_2)));
+    let _e114 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.8656312f * hw_2)));
     sum_7 = (_e108 + ((0.09515851f * hw_2) * _e114));
     let _e117 = sum_7;
-    let _e123 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.8656312f * hw_2)));
+    let _e123 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.8656312f * hw_2)));
     sum_7 = (_e117 + ((0.09515851f * hw_2) * _e123));
     let _e126 = sum_7;
-    let _e132 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.944575f * hw_2)));
+    let _e132 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.944575f * hw_2)));
     sum_7 = (_e126 + ((0.062253524f * hw_2) * _e132));
     let _e135 = sum_7;
-    let _e141 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.944575f * hw_2)));
+    let _e141 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.944575f * hw_2)));
     sum_7 = (_e135 + ((0.062253524f * hw_2) * _e141));
     let _e144 = sum_7;
-    let _e150 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 - (0.9894009f * hw_2)));
+    let _e150 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 - (0.9894009f * hw_2)));
     sum_7 = (_e144 + ((0.02715246f * hw_2) * _e150));
     let _e153 = sum_7;
-    let _e159 = airlight_flat_node(s_39, a_22, above_2, e_4, graded_6, (c_19 + (0.9894009f * hw_2)));
+    let _e159 = airlight_flat_node(s_39, a_24, above_2, e_4, graded_6, (c_20 + (0.9894009f * hw_2)));
     sum_7 = (_e153 + ((0.02715246f * hw_2) * _e159));
     let _e162 = sum_7;
     return _e162;
 }
 
-fn airlight_outline_boundary(o_1: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> {
+fn airlight_outline_boundary(o_2: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> {
     var best: f32 = AIRLIGHT_FLT_MAX;
     var nearest_1: vec2<f32>;
     var inside: bool = true;
     var i_30: u32 = 0u;
-    var local_181: bool;
+    var local_184: bool;
 
-    if (o_1.radius > 0f) {
-        let qc = (q_5 - o_1.corners[0]);
+    if (o_2.radius > 0f) {
+        let qc = (q_5 - o_2.corners[0]);
         let dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
-        return vec3<f32>((o_1.corners[0] + ((qc * o_1.radius) / vec2(dq))), select(0f, 1f, (dq <= o_1.radius)));
+        return vec3<f32>((o_2.corners[0] + ((qc * o_2.radius) / vec2(dq))), select(0f, 1f, (dq <= o_2.radius)));
     }
     nearest_1 = q_5;
     loop {
@@ -6644,18 +6747,18 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> 
         }
         {
             let _e40 = i_30;
-            let a_46 = o_1.corners[_e40];
+            let a_48 = o_2.corners[_e40];
             let _e43 = i_30;
-            let b_23 = o_1.corners[((_e43 + 1u) % 4u)];
+            let b_25 = o_2.corners[((_e43 + 1u) % 4u)];
             let _e49 = inside;
             if _e49 {
-                local_181 = ((((q_5.x - a_46.x) * (b_23.y - a_46.y)) - ((q_5.y - a_46.y) * (b_23.x - a_46.x))) <= 0f);
+                local_184 = ((((q_5.x - a_48.x) * (b_25.y - a_48.y)) - ((q_5.y - a_48.y) * (b_25.x - a_48.x))) <= 0f);
             } else {
-                local_181 = false;
+                local_184 = false;
             }
-            let _e70 = local_181;
+            let _e70 = local_184;
             inside = _e70;
-            let _e71 = airlight_edge_nearest(a_46, b_23, q_5);
+            let _e71 = airlight_edge_nearest(a_48, b_25, q_5);
             let dd = (((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y)));
             let _e87 = best;
             if (dd < _e87) {
@@ -6673,16 +6776,16 @@ fn airlight_outline_boundary(o_1: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> 
     return vec3<f32>(_e92, select(0f, 1f, _e93));
 }
 
-fn airlight_outline_nearest(o_2: AirlightOutline, q_6: vec2<f32>) -> vec2<f32> {
-    let _e2 = airlight_outline_boundary(o_2, q_6);
+fn airlight_outline_nearest(o_3: AirlightOutline, q_6: vec2<f32>) -> vec2<f32> {
+    let _e2 = airlight_outline_boundary(o_3, q_6);
     return select(_e2.xy, q_6, (_e2.z > 0f));
 }
 
-fn airlight_flat_lobe(a_23: AirlightArea, z_11: f32, o_3: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
+fn airlight_flat_lobe(a_25: AirlightArea, z_11: f32, o_4: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_6: u32 = 0u;
-    var local_182: bool;
-    var local_183: bool;
-    var local_184: bool;
+    var local_185: bool;
+    var local_186: bool;
+    var local_187: bool;
 
     let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
@@ -6693,34 +6796,34 @@ fn airlight_flat_lobe(a_23: AirlightArea, z_11: f32, o_3: AirlightOutline, centr
         }
         {
             let _e20 = j_6;
-            let lobe_5 = select(a_23.lobes.xy, a_23.lobes.zw, (_e20 == 1u));
-            let p_5 = (lobe_5.x * a_23.dirs);
+            let lobe_5 = select(a_25.lobes.xy, a_25.lobes.zw, (_e20 == 1u));
+            let p_5 = (lobe_5.x * a_25.dirs);
             if (lobe_5.y > 0f) {
-                local_182 = (p_5.z < 0f);
+                local_185 = (p_5.z < 0f);
             } else {
-                local_182 = false;
+                local_185 = false;
             }
-            let _e36 = local_182;
+            let _e36 = local_185;
             if _e36 {
-                local_183 = (lobe_5.y < (_e10 + _e10));
+                local_186 = (lobe_5.y < (_e10 + _e10));
             } else {
-                local_183 = false;
+                local_186 = false;
             }
-            let _e43 = local_183;
+            let _e43 = local_186;
             if _e43 {
                 let l_4 = (z_11 / -(p_5.z));
                 let q_14 = (l_4 * p_5.xy);
-                let _e49 = airlight_outline_nearest(o_3, q_14);
+                let _e49 = airlight_outline_nearest(o_4, q_14);
                 let to_near = vec3<f32>(_e49, -(z_11));
                 let cos_1 = min((dot(p_5, to_near) / sqrt(dot(to_near, to_near))), 1f);
                 let on_emitter = (length((_e49 - q_14)) <= (0.0000019073486f * ((length(q_14) + size_1) + z_11)));
                 if !(on_emitter) {
                     let _e69 = airlight_acos(cos_1);
-                    local_184 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                    local_187 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                 } else {
-                    local_184 = true;
+                    local_187 = true;
                 }
-                let _e75 = local_184;
+                let _e75 = local_187;
                 if _e75 {
                     return AirlightFlatLobe(p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter);
                 }
@@ -6744,14 +6847,14 @@ fn airlight_edge_at(rule_1: AirlightEdgeRule, beta: f32) -> vec4<f32> {
     let sigma_13 = ((rule_1.reach * -(_e4.x)) / _e4.y);
     let r2_3 = ((rule_1.h * rule_1.h) + (sigma_13 * sigma_13));
     let r_13 = sqrt(r2_3);
-    let m_12 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
-    return vec4<f32>((((rule_1.h * m_12) + (sigma_13 * rule_1.t)) / vec2(r_13)), r_13, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
+    let m_13 = vec2<f32>(rule_1.t.y, -(rule_1.t.x));
+    return vec4<f32>((((rule_1.h * m_13) + (sigma_13 * rule_1.t)) / vec2(r_13)), r_13, ((rule_1.h * rule_1.reach) / ((_e4.y * _e4.y) * r2_3)));
 }
 
-fn airlight_clip(chord: vec2<f32>, a_24: vec2<f32>, b_14: vec2<f32>, q_7: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
-    let m_13 = vec2<f32>((b_14.y - a_24.y), (a_24.x - b_14.x));
-    let num = (((q_7.x - a_24.x) * m_13.x) + ((q_7.y - a_24.y) * m_13.y));
-    let den = ((e_5.x * m_13.x) + (e_5.y * m_13.y));
+fn airlight_clip(chord: vec2<f32>, a_26: vec2<f32>, b_16: vec2<f32>, q_7: vec2<f32>, e_5: vec2<f32>) -> vec2<f32> {
+    let m_14 = vec2<f32>((b_16.y - a_26.y), (a_26.x - b_16.x));
+    let num = (((q_7.x - a_26.x) * m_14.x) + ((q_7.y - a_26.y) * m_14.y));
+    let den = ((e_5.x * m_14.x) + (e_5.y * m_14.y));
     if (den > 0f) {
         return vec2<f32>(chord.x, min(chord.y, (-(num) / den)));
     }
@@ -6764,40 +6867,40 @@ fn airlight_clip(chord: vec2<f32>, a_24: vec2<f32>, b_14: vec2<f32>, q_7: vec2<f
     return chord;
 }
 
-fn airlight_outline_chord(o_4: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
+fn airlight_outline_chord(o_5: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) -> vec2<f32> {
     var chord_1: vec2<f32> = vec2<f32>(0f, 340282350000000000000000000000000000000f);
 
-    if (o_4.radius > 0f) {
-        let qc_1 = (q_8 - o_4.corners[0]);
-        let a_47 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
-        let b_24 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
+    if (o_5.radius > 0f) {
+        let qc_1 = (q_8 - o_5.corners[0]);
+        let a_49 = ((e_6.x * e_6.x) + (e_6.y * e_6.y));
+        let b_26 = ((qc_1.x * e_6.x) + (qc_1.y * e_6.y));
         let dq_1 = sqrt(((qc_1.x * qc_1.x) + (qc_1.y * qc_1.y)));
-        let k_13 = ((dq_1 - o_4.radius) * (dq_1 + o_4.radius));
-        let disc_3 = ((b_24 * b_24) - (a_47 * k_13));
+        let k_13 = ((dq_1 - o_5.radius) * (dq_1 + o_5.radius));
+        let disc_3 = ((b_26 * b_26) - (a_49 * k_13));
         if !((disc_3 > 0f)) {
             return vec2(0f);
         }
         let root_3 = sqrt(disc_3);
-        let t_11 = (-(b_24) - select(root_3, -(root_3), ((bitcast<u32>(b_24) & 2147483648u) != 0u)));
-        let r1_2 = (t_11 / a_47);
+        let t_11 = (-(b_26) - select(root_3, -(root_3), ((bitcast<u32>(b_26) & 2147483648u) != 0u)));
+        let r1_2 = (t_11 / a_49);
         let r2_4 = (k_13 / t_11);
-        let hi_9 = max(r1_2, r2_4);
-        if !((hi_9 > 0f)) {
+        let hi_10 = max(r1_2, r2_4);
+        if !((hi_10 > 0f)) {
             return vec2(0f);
         }
-        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_9);
+        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_10);
     }
     let _e70 = chord_1;
-    let _e75 = airlight_clip(_e70, o_4.corners[0], o_4.corners[1], q_8, e_6);
+    let _e75 = airlight_clip(_e70, o_5.corners[0], o_5.corners[1], q_8, e_6);
     chord_1 = _e75;
     let _e76 = chord_1;
-    let _e81 = airlight_clip(_e76, o_4.corners[1], o_4.corners[2], q_8, e_6);
+    let _e81 = airlight_clip(_e76, o_5.corners[1], o_5.corners[2], q_8, e_6);
     chord_1 = _e81;
     let _e82 = chord_1;
-    let _e87 = airlight_clip(_e82, o_4.corners[2], o_4.corners[3], q_8, e_6);
+    let _e87 = airlight_clip(_e82, o_5.corners[2], o_5.corners[3], q_8, e_6);
     chord_1 = _e87;
     let _e88 = chord_1;
-    let _e93 = airlight_clip(_e88, o_4.corners[3], o_4.corners[0], q_8, e_6);
+    let _e93 = airlight_clip(_e88, o_5.corners[3], o_5.corners[0], q_8, e_6);
     return _e93;
 }
 
@@ -6815,21 +6918,21 @@ fn airlight_graded_from_node(start_2: f32, graded_2: f32, g_26: f32) -> vec3<f32
 
 fn airlight_flat_lobe_node(s_40: AirlightScene, z_12: f32, lobe_1: AirlightFlatLobe, k_7: f32, start_3: f32, graded_3: f32, g_27: f32) -> f32 {
     let _e7 = airlight_graded_from_node(start_3, graded_3, g_27);
-    let c_20 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
-    if !((c_20 > 0f)) {
+    let c_21 = (-(lobe_1.p.z) * (_e7.x - (k_7 * _e7.y)));
+    if !((c_21 > 0f)) {
         return 0f;
     }
-    let _e20 = airlight_emitted(s_40, c_20);
+    let _e20 = airlight_emitted(s_40, c_21);
     let _e31 = airlight_area_phase_about(s_40, lobe_1.sign, _e7.xy);
-    return ((((_e20 * exp(min(((-(s_40.sigma_t) * z_12) / c_20), 0f))) * _e31) * _e7.y) * _e7.z);
+    return ((((_e20 * exp(min(((-(s_40.sigma_t) * z_12) / c_21), 0f))) * _e31) * _e7.y) * _e7.z);
 }
 
-fn airlight_flat_lobe_along(s_41: AirlightScene, z_13: f32, o_5: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_2: vec2<f32>) -> f32 {
+fn airlight_flat_lobe_along(s_41: AirlightScene, z_13: f32, o_6: AirlightOutline, lobe_2: AirlightFlatLobe, u_4: vec3<f32>, v_6: vec3<f32>, cs_2: vec2<f32>) -> f32 {
     var sum_8: f32 = 0f;
 
     let w_9 = ((cs_2.x * u_4) + (cs_2.y * v_6));
     let k_14 = (w_9.z / -(lobe_2.p.z));
-    let _e23 = airlight_outline_chord(o_5, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
+    let _e23 = airlight_outline_chord(o_6, lobe_2.q, (w_9.xy + (k_14 * lobe_2.p.xy)));
     if !((_e23.x < _e23.y)) {
         return 0f;
     }
@@ -6837,55 +6940,55 @@ fn airlight_flat_lobe_along(s_41: AirlightScene, z_13: f32, o_5: AirlightOutline
     let _e41 = airlight_atan2_upper(_e23.y, (lobe_2.l + (k_14 * _e23.y)));
     let _e42 = airlight_graded_from(lobe_2.scale, _e34, _e41);
     let graded_8 = _e42.x;
-    let c_21 = (0.5f * _e42.y);
+    let c_22 = (0.5f * _e42.y);
     let hw_3 = (0.5f * _e42.y);
     let _e52 = sum_8;
-    let _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.09501251f * hw_3)));
+    let _e58 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.09501251f * hw_3)));
     sum_8 = (_e52 + ((0.1894506f * hw_3) * _e58));
     let _e61 = sum_8;
-    let _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.09501251f * hw_3)));
+    let _e67 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.09501251f * hw_3)));
     sum_8 = (_e61 + ((0.1894506f * hw_3) * _e67));
     let _e70 = sum_8;
-    let _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.28160354f * hw_3)));
+    let _e76 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.28160354f * hw_3)));
     sum_8 = (_e70 + ((0.18260342f * hw_3) * _e76));
     let _e79 = sum_8;
-    let _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.28160354f * hw_3)));
+    let _e85 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.28160354f * hw_3)));
     sum_8 = (_e79 + ((0.18260342f * hw_3) * _e85));
     let _e88 = sum_8;
-    let _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.45801678f * hw_3)));
+    let _e94 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.45801678f * hw_3)));
     sum_8 = (_e88 + ((0.16915652f * hw_3) * _e94));
     let _e97 = sum_8;
-    let _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.45801678f * hw_3)));
+    let _e103 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.45801678f * hw_3)));
     sum_8 = (_e97 + ((0.16915652f * hw_3) * _e103));
     let _e106 = sum_8;
-    let _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.61787623f * hw_3)));
+    let _e112 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.61787623f * hw_3)));
     sum_8 = (_e106 + ((0.14959599f * hw_3) * _e112));
     let _e115 = sum_8;
-    let _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.61787623f * hw_3)));
+    let _e121 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.61787623f * hw_3)));
     sum_8 = (_e115 + ((0.14959599f * hw_3) * _e121));
     let _e124 = sum_8;
-    let _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.7554044f * hw_3)));
+    let _e130 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.7554044f * hw_3)));
     sum_8 = (_e124 + ((0.12462897f * hw_3) * _e130));
     let _e133 = sum_8;
-    let _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.7554044f * hw_3)));
+    let _e139 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.7554044f * hw_3)));
     sum_8 = (_e133 + ((0.12462897f * hw_3) * _e139));
     let _e142 = sum_8;
-    let _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.8656312f * hw_3)));
+    let _e148 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.8656312f * hw_3)));
     sum_8 = (_e142 + ((0.09515851f * hw_3) * _e148));
     let _e151 = sum_8;
-    let _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.8656312f * hw_3)));
+    let _e157 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.8656312f * hw_3)));
     sum_8 = (_e151 + ((0.09515851f * hw_3) * _e157));
     let _e160 = sum_8;
-    let _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.944575f * hw_3)));
+    let _e166 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.944575f * hw_3)));
     sum_8 = (_e160 + ((0.062253524f * hw_3) * _e166));
     let _e169 = sum_8;
-    let _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.944575f * hw_3)));
+    let _e175 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.944575f * hw_3)));
     sum_8 = (_e169 + ((0.062253524f * hw_3) * _e175));
     let _e178 = sum_8;
-    let _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 - (0.9894009f * hw_3)));
+    let _e184 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 - (0.9894009f * hw_3)));
     sum_8 = (_e178 + ((0.02715246f * hw_3) * _e184));
     let _e187 = sum_8;
-    let _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_21 + (0.9894009f * hw_3)));
+    let _e193 = airlight_flat_lobe_node(s_41, z_13, lobe_2, k_14, _e34, graded_8, (c_22 + (0.9894009f * hw_3)));
     sum_8 = (_e187 + ((0.02715246f * hw_3) * _e193));
     let _e196 = sum_8;
     return _e196;
@@ -6907,15 +7010,15 @@ fn airlight_cos_sin_turns(x_24: f32) -> vec2<f32> {
     return vec2<f32>(_e3.x, select(_e3.y, -(_e3.y), (_e1 < 0f)));
 }
 
-fn airlight_edge_rule(a_25: vec2<f32>, b_15: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
-    let e_16 = (b_15 - a_25);
+fn airlight_edge_rule(a_27: vec2<f32>, b_17: vec2<f32>, width_1: f32) -> AirlightEdgeRule {
+    let e_16 = (b_17 - a_27);
     let el = sqrt(((e_16.x * e_16.x) + (e_16.y * e_16.y)));
     let t_12 = (e_16 / vec2(el));
-    let h_9 = (((a_25.x * b_15.y) - (a_25.y * b_15.x)) / el);
-    let reach_3 = sqrt(((h_9 * h_9) + (width_1 * width_1)));
-    let _e27 = airlight_atan2_(dot(a_25, t_12), reach_3);
-    let _e29 = airlight_atan2_(dot(b_15, t_12), reach_3);
-    return AirlightEdgeRule(h_9, t_12, reach_3, _e27, _e29);
+    let h_10 = (((a_27.x * b_17.y) - (a_27.y * b_17.x)) / el);
+    let reach_3 = sqrt(((h_10 * h_10) + (width_1 * width_1)));
+    let _e27 = airlight_atan2_(dot(a_27, t_12), reach_3);
+    let _e29 = airlight_atan2_(dot(b_17, t_12), reach_3);
+    return AirlightEdgeRule(h_10, t_12, reach_3, _e27, _e29);
 }
 
 fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
@@ -6926,9 +7029,9 @@ fn airlight_edge_node(rule_2: AirlightEdgeRule, j_7: u32) -> vec4<f32> {
 }
 
 fn airlight_sort4_(x_25: vec4<f32>) -> vec4<f32> {
-    let a_48 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
-    let b_25 = vec4<f32>(min(a_48.x, a_48.z), min(a_48.y, a_48.w), max(a_48.x, a_48.z), max(a_48.y, a_48.w));
-    return vec4<f32>(b_25.x, min(b_25.y, b_25.z), max(b_25.y, b_25.z), b_25.w);
+    let a_50 = vec4<f32>(min(x_25.x, x_25.y), max(x_25.x, x_25.y), min(x_25.z, x_25.w), max(x_25.z, x_25.w));
+    let b_27 = vec4<f32>(min(a_50.x, a_50.z), min(a_50.y, a_50.w), max(a_50.x, a_50.z), max(a_50.y, a_50.w));
+    return vec4<f32>(b_27.x, min(b_27.y, b_27.z), max(b_27.y, b_27.z), b_27.w);
 }
 
 fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightChordEdges {
@@ -6936,8 +7039,8 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
     var farthest: f32 = 0f;
     var edges_1: AirlightChordEdges = AirlightChordEdges(vec2(0f), vec2(0f), 0f);
     var i_32: u32 = 0u;
-    var local_185: bool;
-    var local_186: bool;
+    var local_188: bool;
+    var local_189: bool;
 
     loop {
         let _e15 = i_32;
@@ -6947,31 +7050,31 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
         }
         {
             let _e18 = i_32;
-            let a_49 = y_6[_e18];
+            let a_51 = y_6[_e18];
             let _e20 = i_32;
-            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_49);
+            let d_5 = (y_6[((_e20 + 1u) % 4u)] - a_51);
             let den_1 = ((e_8.x * d_5.y) - (e_8.y * d_5.x));
             if (den_1 == 0f) {
                 continue;
             }
-            let r_14 = (((a_49.x * d_5.y) - (a_49.y * d_5.x)) / den_1);
-            let along = (((a_49.x * e_8.y) - (a_49.y * e_8.x)) / den_1);
+            let r_14 = (((a_51.x * d_5.y) - (a_51.y * d_5.x)) / den_1);
+            let along_2 = (((a_51.x * e_8.y) - (a_51.y * e_8.x)) / den_1);
             if (r_14 > 0f) {
-                local_185 = (along >= 0f);
+                local_188 = (along_2 >= 0f);
             } else {
-                local_185 = false;
+                local_188 = false;
             }
-            let _e59 = local_185;
+            let _e59 = local_188;
             if _e59 {
-                local_186 = (along <= 1f);
+                local_189 = (along_2 <= 1f);
             } else {
-                local_186 = false;
+                local_189 = false;
             }
-            let _e65 = local_186;
+            let _e65 = local_189;
             if _e65 {
                 let n_8 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
-                let h_10 = dot(n_8, a_49);
-                let outward = select(n_8, -(n_8), (h_10 < 0f));
+                let h_11 = dot(n_8, a_51);
+                let outward = select(n_8, -(n_8), (h_11 < 0f));
                 let _e79 = nearest_2;
                 if (r_14 < _e79) {
                     nearest_2 = r_14;
@@ -6981,7 +7084,7 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
                 if (r_14 > _e82) {
                     farthest = r_14;
                     edges_1.exit = outward;
-                    edges_1.exit_h = abs(h_10);
+                    edges_1.exit_h = abs(h_11);
                 }
             }
         }
@@ -6995,8 +7098,8 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
 }
 
 fn airlight_line_beta(rule_3: AirlightEdgeRule, cs_3: vec2<f32>) -> f32 {
-    let m_14 = vec2<f32>(rule_3.t.y, -(rule_3.t.x));
-    let _e17 = airlight_atan2_((dot(cs_3, rule_3.t) * rule_3.h), (max(dot(cs_3, m_14), 0f) * rule_3.reach));
+    let m_15 = vec2<f32>(rule_3.t.y, -(rule_3.t.x));
+    let _e17 = airlight_atan2_((dot(cs_3, rule_3.t) * rule_3.h), (max(dot(cs_3, m_15), 0f) * rule_3.reach));
     return _e17;
 }
 
@@ -7014,21 +7117,21 @@ fn airlight_mercator(n_3: vec2<f32>, cs_4: vec2<f32>) -> f32 {
 
 fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     let _e5 = airlight_mercator_cut((i_33 / 12u));
-    let lo_9 = max(ua, _e5);
+    let lo_10 = max(ua, _e5);
     let _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
-    let hi_10 = min(ub, _e11);
-    if !((lo_9 < hi_10)) {
+    let hi_11 = min(ub, _e11);
+    if !((lo_10 < hi_11)) {
         return vec3(0f);
     }
     let _e19 = airlight_triangle_rule((i_33 % 12u));
-    let hw_5 = (0.5f * (hi_10 - lo_9));
-    let x_38 = ((0.5f * (lo_9 + hi_10)) + (hw_5 * _e19.x));
-    let e_17 = exp(-(abs(x_38)));
+    let hw_5 = (0.5f * (hi_11 - lo_10));
+    let x_37 = ((0.5f * (lo_10 + hi_11)) + (hw_5 * _e19.x));
+    let e_17 = exp(-(abs(x_37)));
     let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
-    return vec3<f32>(sech, ((sign(x_38) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
+    return vec3<f32>(sech, ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
 }
 
-fn airlight_mercator_wedge(s_42: AirlightScene, z_14: f32, o_6: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
+fn airlight_mercator_wedge(s_42: AirlightScene, z_14: f32, o_7: AirlightOutline, lobe_3: AirlightFlatLobe, u_6: vec3<f32>, v_8: vec3<f32>, n_4: vec2<f32>, first_1: vec2<f32>, last: vec2<f32>) -> f32 {
     var sum_9: f32 = 0f;
     var i_34: u32 = 0u;
 
@@ -7048,7 +7151,7 @@ fn airlight_mercator_wedge(s_42: AirlightScene, z_14: f32, o_6: AirlightOutline,
                 continue;
             }
             let _e27 = sum_9;
-            let _e34 = airlight_flat_lobe_along(s_42, z_14, o_6, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
+            let _e34 = airlight_flat_lobe_along(s_42, z_14, o_7, lobe_3, u_6, v_8, ((n_4 * _e23.x) + (t_13 * _e23.y)));
             sum_9 = (_e27 + (_e23.z * _e34));
         }
         continuing {
@@ -7060,7 +7163,7 @@ fn airlight_mercator_wedge(s_42: AirlightScene, z_14: f32, o_6: AirlightOutline,
     return _e40;
 }
 
-fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
+fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_8: AirlightOutline, lobe_4: AirlightFlatLobe) -> f32 {
     var sum_10: f32 = 0f;
     var m_4: vec2<f32> = vec2<f32>(1f, 0f);
     var t_4: vec2<f32>;
@@ -7077,22 +7180,22 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
     var j_10: u32;
     var merc_first: vec2<f32>;
     var merc_last: vec2<f32>;
-    var local_187: bool;
+    var local_190: bool;
     var rule_4: AirlightEdgeRule;
     var j_11: u32;
 
     let _e5 = airlight_basis_e1_(lobe_4.p);
     let v_10 = cross(lobe_4.p, _e5);
     let q_15 = lobe_4.q;
-    if (o_7.radius > 0f) {
+    if (o_8.radius > 0f) {
         if lobe_4.on_emitter {
-            let dq_2 = (q_15 - o_7.corners[0]);
+            let dq_2 = (q_15 - o_8.corners[0]);
             let d_6 = sqrt(dot(dq_2, dq_2));
             if (d_6 > 0f) {
                 m_4 = (dq_2 / vec2(d_6));
             }
             let _e31 = m_4;
-            let rim_e = ((o_7.corners[0] + (o_7.radius * _e31)) - q_15);
+            let rim_e = ((o_8.corners[0] + (o_8.radius * _e31)) - q_15);
             let rim = vec2<f32>(dot(rim_e, _e5.xy), dot(rim_e, v_10.xy));
             let _e41 = m_4.y;
             let _e46 = m_4.x;
@@ -7112,11 +7215,11 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             }
             let _e87 = t_4.y;
             let _e91 = t_4.x;
-            let h_11 = ((_e87 * rim.x) - (_e91 * rim.y));
-            let half_chord = (tl * sqrt(max(((o_7.radius - d_6) * (o_7.radius + d_6)), 0f)));
+            let h_12 = ((_e87 * rim.x) - (_e91 * rim.y));
+            let half_chord = (tl * sqrt(max(((o_8.radius - d_6) * (o_8.radius + d_6)), 0f)));
             let width_5 = min((lobe_4.l * lobe_4.scale), half_chord);
             let _e108 = t_4;
-            let rule_7 = AirlightEdgeRule(h_11, _e108, sqrt(((h_11 * h_11) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
+            let rule_7 = AirlightEdgeRule(h_12, _e108, sqrt(((h_12 * h_12) + (width_5 * width_5))), -1.5707964f, 1.5707964f);
             loop {
                 let _e118 = j_8;
                 if (_e118 < 16u) {
@@ -7124,14 +7227,14 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                     break;
                 }
                 {
-                    if !((h_11 > 0f)) {
+                    if !((h_12 > 0f)) {
                         break;
                     }
                     let _e124 = j_8;
                     let _e125 = airlight_radial_rule(_e124);
                     let _e129 = airlight_edge_at(rule_7, (1.5707964f * _e125.x));
                     let _e130 = sum_10;
-                    let _e139 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e129.xy);
+                    let _e139 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e129.xy);
                     sum_10 = (_e130 + ((((_e125.y * 0.5f) * AIRLIGHT_PI) * _e129.w) * _e139));
                 }
                 continuing {
@@ -7153,7 +7256,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                     let _e158 = airlight_azimuths(false, _e157);
                     let _e159 = sum_10;
                     let _e163 = t_4;
-                    let _e168 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
+                    let _e168 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, -(((n_9 * _e158.x) + (_e163 * _e158.y))));
                     sum_10 = (_e159 + (_e158.z * _e168));
                 }
                 continuing {
@@ -7164,10 +7267,10 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             let _e174 = sum_10;
             return _e174;
         }
-        let d_7 = (o_7.corners[0] - q_15);
+        let d_7 = (o_8.corners[0] - q_15);
         let dq_3 = sqrt(((d_7.x * d_7.x) + (d_7.y * d_7.y)));
-        let sb_1 = (o_7.radius / dq_3);
-        let cb = (sqrt(((dq_3 - o_7.radius) * (dq_3 + o_7.radius))) / dq_3);
+        let sb_1 = (o_8.radius / dq_3);
+        let cb = (sqrt(((dq_3 - o_8.radius) * (dq_3 + o_8.radius))) / dq_3);
         let _e195 = airlight_lobe_azimuth(_e5, v_10, d_7);
         let _e207 = airlight_lobe_azimuth(_e5, v_10, vec2<f32>(((d_7.x * cb) - (d_7.y * sb_1)), ((d_7.y * cb) + (d_7.x * sb_1))));
         let _e209 = airlight_wrap_turn((_e207 - _e195));
@@ -7186,7 +7289,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                 let _e239 = airlight_azimuths(false, _e238);
                 let _e240 = sum_10;
                 let _e248 = airlight_cos_sin_turns((centre_2 + (half_19 * _e239.y)));
-                let _e249 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e248);
+                let _e249 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e248);
                 sum_10 = (_e240 + (((_e239.z * half_19) * _e239.x) * _e249));
             }
             continuing {
@@ -7197,7 +7300,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
         let _e255 = sum_10;
         return _e255;
     }
-    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_7.corners[0] - q_15), _e5.xy), dot((o_7.corners[0] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[1] - q_15), _e5.xy), dot((o_7.corners[1] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[2] - q_15), _e5.xy), dot((o_7.corners[2] - q_15), v_10.xy)), vec2<f32>(dot((o_7.corners[3] - q_15), _e5.xy), dot((o_7.corners[3] - q_15), v_10.xy)));
+    let y_14 = array<vec2<f32>, 4>(vec2<f32>(dot((o_8.corners[0] - q_15), _e5.xy), dot((o_8.corners[0] - q_15), v_10.xy)), vec2<f32>(dot((o_8.corners[1] - q_15), _e5.xy), dot((o_8.corners[1] - q_15), v_10.xy)), vec2<f32>(dot((o_8.corners[2] - q_15), _e5.xy), dot((o_8.corners[2] - q_15), v_10.xy)), vec2<f32>(dot((o_8.corners[3] - q_15), _e5.xy), dot((o_8.corners[3] - q_15), v_10.xy)));
     if lobe_4.on_emitter {
         loop {
             let _e307 = i_37;
@@ -7207,11 +7310,11 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             }
             {
                 let _e310 = i_37;
-                let b_26 = y_14[((_e310 + 1u) % 4u)];
+                let b_28 = y_14[((_e310 + 1u) % 4u)];
                 let _e316 = i_37;
                 let _e318 = i_37;
                 let _e323 = i_37;
-                area[_e316] = ((y_14[_e318].x * b_26.y) - (y_14[_e323].y * b_26.x));
+                area[_e316] = ((y_14[_e318].x * b_28.y) - (y_14[_e323].y * b_28.x));
             }
             continuing {
                 let _e330 = i_37;
@@ -7259,7 +7362,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e386 = j_9;
                         let _e387 = airlight_edge_node(_e380, _e386);
                         let _e388 = sum_10;
-                        let _e391 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e387.xy);
+                        let _e391 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e387.xy);
                         sum_10 = (_e388 + (_e387.w * _e391));
                     }
                     continuing {
@@ -7276,14 +7379,14 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
         let _e400 = sum_10;
         return _e400;
     }
-    let _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5f * (o_7.corners[0] + o_7.corners[2])) - q_15));
-    let _e413 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[0] - q_15));
+    let _e409 = airlight_lobe_azimuth(_e5, v_10, ((0.5f * (o_8.corners[0] + o_8.corners[2])) - q_15));
+    let _e413 = airlight_lobe_azimuth(_e5, v_10, (o_8.corners[0] - q_15));
     let _e415 = airlight_wrap_turn((_e413 - _e409));
-    let _e419 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[1] - q_15));
+    let _e419 = airlight_lobe_azimuth(_e5, v_10, (o_8.corners[1] - q_15));
     let _e421 = airlight_wrap_turn((_e419 - _e409));
-    let _e425 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[2] - q_15));
+    let _e425 = airlight_lobe_azimuth(_e5, v_10, (o_8.corners[2] - q_15));
     let _e427 = airlight_wrap_turn((_e425 - _e409));
-    let _e431 = airlight_lobe_azimuth(_e5, v_10, (o_7.corners[3] - q_15));
+    let _e431 = airlight_lobe_azimuth(_e5, v_10, (o_8.corners[3] - q_15));
     let _e433 = airlight_wrap_turn((_e431 - _e409));
     let _e435 = airlight_sort4_(vec4<f32>(_e415, _e421, _e427, _e433));
     loop {
@@ -7301,7 +7404,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             let _e453 = airlight_chord_edges(y_14, _e452);
             let n_10 = _e453.entry;
             if all((n_10 == vec2(0f))) {
-                let c_22 = ((first_3 + last_2) * 0.5f);
+                let c_23 = ((first_3 + last_2) * 0.5f);
                 let hw_6 = ((last_2 - first_3) * 0.5f);
                 j_10 = 0u;
                 loop {
@@ -7314,8 +7417,8 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e470 = j_10;
                         let _e471 = airlight_triangle_rule(_e470);
                         let _e472 = sum_10;
-                        let _e478 = airlight_cos_sin_turns((c_22 + (hw_6 * _e471.x)));
-                        let _e479 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e478);
+                        let _e478 = airlight_cos_sin_turns((c_23 + (hw_6 * _e471.x)));
+                        let _e479 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e478);
                         sum_10 = (_e472 + ((_e471.y * hw_6) * _e479));
                     }
                     continuing {
@@ -7332,11 +7435,11 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             let exit_h = _e453.exit_h;
             let width_6 = (lobe_4.l * lobe_4.scale);
             if (exit_h > 0f) {
-                local_187 = (exit_h < width_6);
+                local_190 = (exit_h < width_6);
             } else {
-                local_187 = false;
+                local_190 = false;
             }
-            let _e499 = local_187;
+            let _e499 = local_190;
             if _e499 {
                 rule_4 = AirlightEdgeRule(exit_h, vec2<f32>(-(_e453.exit.y), _e453.exit.x), sqrt(((exit_h * exit_h) + (width_6 * width_6))), 0f, 0f);
                 let _e514 = merc_first;
@@ -7372,7 +7475,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
                         let _e541 = j_11;
                         let _e542 = airlight_edge_node(_e540, _e541);
                         let _e543 = sum_10;
-                        let _e546 = airlight_flat_lobe_along(s_43, z_15, o_7, lobe_4, _e5, v_10, _e542.xy);
+                        let _e546 = airlight_flat_lobe_along(s_43, z_15, o_8, lobe_4, _e5, v_10, _e542.xy);
                         sum_10 = (_e543 + (_e542.w * _e546));
                     }
                     continuing {
@@ -7384,7 +7487,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
             let _e552 = sum_10;
             let _e553 = merc_first;
             let _e554 = merc_last;
-            let _e555 = airlight_mercator_wedge(s_43, z_15, o_7, lobe_4, _e5, v_10, n_10, _e553, _e554);
+            let _e555 = airlight_mercator_wedge(s_43, z_15, o_8, lobe_4, _e5, v_10, n_10, _e553, _e554);
             sum_10 = (_e552 + _e555);
         }
         continuing {
@@ -7396,9 +7499,9 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_7: AirlightOutline
     return _e560;
 }
 
-fn airlight_disc(s_44: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f32 {
-    var local_188: bool;
-    var local_189: bool;
+fn airlight_disc(s_44: AirlightScene, a_28: AirlightArea, x_26: vec3<f32>) -> f32 {
+    var local_191: bool;
+    var local_192: bool;
     var u_7: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_11: f32 = 0f;
@@ -7406,44 +7509,44 @@ fn airlight_disc(s_44: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     var e_9: vec2<f32>;
     var r_max_1: f32;
 
-    let rel_1 = (x_26 - a_26.c);
-    let z_20 = dot(rel_1, a_26.n);
+    let rel_1 = (x_26 - a_28.c);
+    let z_20 = dot(rel_1, a_28.n);
     if !((z_20 > 0f)) {
         return 0f;
     }
-    let fx = dot(rel_1, a_26.a1_);
-    let fy_1 = dot(rel_1, a_26.a2_);
+    let fx = dot(rel_1, a_28.a1_);
+    let fy_1 = dot(rel_1, a_28.a2_);
     let rf = sqrt(((fx * fx) + (fy_1 * fy_1)));
-    let radius_2 = a_26.radius;
+    let radius_3 = a_28.radius;
     let zero_2 = vec2(0f);
-    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_2);
-    let _e30 = airlight_flat_lobe(a_26, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_2);
+    let outline = AirlightOutline(array<vec2<f32>, 4>(vec2<f32>(-(fx), -(fy_1)), zero_2, zero_2, zero_2), radius_3);
+    let _e30 = airlight_flat_lobe(a_28, z_20, outline, vec2<f32>(-(fx), -(fy_1)), radius_3);
     if (_e30.scale > 0f) {
         let _e34 = airlight_flat_about_lobe(s_44, z_20, outline, _e30);
         return _e34;
     }
-    if (rf <= radius_2) {
+    if (rf <= radius_3) {
         if !((rf == 0f)) {
-            let _e44 = airlight_far_from_edge(s_44, (radius_2 - rf), z_20);
-            local_189 = _e44;
+            let _e44 = airlight_far_from_edge(s_44, (radius_3 - rf), z_20);
+            local_192 = _e44;
         } else {
-            local_189 = true;
+            local_192 = true;
         }
-        let _e46 = local_189;
-        local_188 = _e46;
+        let _e46 = local_192;
+        local_191 = _e46;
     } else {
-        local_188 = false;
+        local_191 = false;
     }
-    let inside_2 = local_188;
+    let inside_2 = local_191;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
         u_7 = vec2<f32>((-(fx) / rf), (-(fy_1) / rf));
         let _e63 = u_7;
-        let _e65 = airlight_above(z_20, ((rf - radius_2) * _e63));
+        let _e65 = airlight_above(z_20, ((rf - radius_3) * _e63));
         above_3 = _e65;
     }
-    let k_15 = ((rf - radius_2) * (rf + radius_2));
+    let k_15 = ((rf - radius_3) * (rf + radius_3));
     loop {
         let _e73 = i_40;
         if (_e73 < 32u) {
@@ -7458,18 +7561,18 @@ fn airlight_disc(s_44: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
             let _e89 = u_7.y;
             let _e93 = u_7.x;
             e_9 = vec2<f32>(((_e77.x * _e80) - (_e77.y * _e84)), ((_e77.x * _e89) + (_e77.y * _e93)));
-            r_max_1 = ((radius_2 + radius_2) * _e77.x);
+            r_max_1 = ((radius_3 + radius_3) * _e77.x);
             if inside_2 {
                 e_9 = _e77.xy;
-                let b_27 = ((fx * _e77.x) + (fy_1 * _e77.y));
-                let root_4 = sqrt(((b_27 * b_27) - k_15));
-                r_max_1 = select((root_4 - b_27), (-(k_15) / (b_27 + root_4)), (b_27 > 0f));
+                let b_29 = ((fx * _e77.x) + (fy_1 * _e77.y));
+                let root_4 = sqrt(((b_29 * b_29) - k_15));
+                r_max_1 = select((root_4 - b_29), (-(k_15) / (b_29 + root_4)), (b_29 > 0f));
             }
             let _e118 = sum_11;
             let _e120 = above_3;
             let _e121 = e_9;
             let _e122 = r_max_1;
-            let _e123 = airlight_flat_radial(s_44, a_26, _e120, _e121, _e122);
+            let _e123 = airlight_flat_radial(s_44, a_28, _e120, _e121, _e122);
             sum_11 = (_e118 + (_e77.z * _e123));
         }
         continuing {
@@ -7481,26 +7584,26 @@ fn airlight_disc(s_44: AirlightScene, a_26: AirlightArea, x_26: vec3<f32>) -> f3
     return _e129;
 }
 
-fn airlight_parallelogram(s_45: AirlightScene, a_27: AirlightArea, x_27: vec3<f32>) -> f32 {
+fn airlight_parallelogram(s_45: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_9: vec2<f32>;
-    var local_190: bool;
+    var local_193: bool;
     var sum_12: f32 = 0f;
     var i_41: u32 = 0u;
     var j_12: u32;
 
-    let rel_2 = (x_27 - a_27.c);
-    let z_21 = dot(rel_2, a_27.n);
+    let rel_2 = (x_27 - a_29.c);
+    let z_21 = dot(rel_2, a_29.n);
     if !((z_21 > 0f)) {
         return 0f;
     }
-    let foot_1 = vec2<f32>(dot(rel_2, a_27.a1_), dot(rel_2, a_27.a2_));
-    let u2_1 = vec2<f32>(dot(a_27.eu, a_27.a1_), dot(a_27.eu, a_27.a2_));
-    let v2_1 = vec2<f32>(dot(a_27.ev, a_27.a1_), dot(a_27.ev, a_27.a2_));
+    let foot_1 = vec2<f32>(dot(rel_2, a_29.a1_), dot(rel_2, a_29.a2_));
+    let u2_1 = vec2<f32>(dot(a_29.eu, a_29.a1_), dot(a_29.eu, a_29.a2_));
+    let v2_1 = vec2<f32>(dot(a_29.ev, a_29.a1_), dot(a_29.ev, a_29.a2_));
     let corners = array<vec2<f32>, 5>(vec2(0f), u2_1, (u2_1 + v2_1), v2_1, vec2(0f));
     let det = ((u2_1.x * v2_1.y) - (u2_1.y * v2_1.x));
     let about_foot = AirlightOutline(array<vec2<f32>, 4>((corners[0] - foot_1), (corners[1] - foot_1), (corners[2] - foot_1), (corners[3] - foot_1)), 0f);
     let size_2 = (0.5f * max(sqrt(dot((u2_1 + v2_1), (u2_1 + v2_1))), sqrt(dot((u2_1 - v2_1), (u2_1 - v2_1)))));
-    let _e69 = airlight_flat_lobe(a_27, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
+    let _e69 = airlight_flat_lobe(a_29, z_21, about_foot, ((0.5f * corners[2]) - foot_1), size_2);
     if (_e69.scale > 0f) {
         let _e73 = airlight_flat_about_lobe(s_45, z_21, about_foot, _e69);
         return _e73;
@@ -7509,11 +7612,11 @@ fn airlight_parallelogram(s_45: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
     q_9 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
         let _e89 = airlight_far_from_edge(s_45, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_190 = _e89;
+        local_193 = _e89;
     } else {
-        local_190 = false;
+        local_193 = false;
     }
-    let _e91 = local_190;
+    let _e91 = local_193;
     if _e91 {
         q_9 = foot_1;
     }
@@ -7549,7 +7652,7 @@ fn airlight_parallelogram(s_45: AirlightScene, a_27: AirlightArea, x_27: vec3<f3
                     let _e132 = j_12;
                     let _e133 = airlight_edge_node(_e126, _e132);
                     let _e134 = sum_12;
-                    let _e138 = airlight_flat_radial(s_45, a_27, _e94, _e133.xy, _e133.z);
+                    let _e138 = airlight_flat_radial(s_45, a_29, _e94, _e133.xy, _e133.z);
                     sum_12 = (_e134 + (_e133.w * _e138));
                 }
                 continuing {
@@ -7579,7 +7682,7 @@ fn airlight_cap_row(s_46: AirlightScene, cap: AirlightCap, graded_4: f32, node_2
     return vec3<f32>(factor, cb_2, sb_2);
 }
 
-fn airlight_sphere_cap(s_47: AirlightScene, a_28: AirlightArea, cap_1: AirlightCap) -> f32 {
+fn airlight_sphere_cap(s_47: AirlightScene, a_30: AirlightArea, cap_1: AirlightCap) -> f32 {
     var rows: array<vec3<f32>, 16> = array<vec3<f32>, 16>(vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec3(0f));
     var sum_13: f32 = 0f;
     var i_42: u32 = 0u;
@@ -7587,46 +7690,46 @@ fn airlight_sphere_cap(s_47: AirlightScene, a_28: AirlightArea, cap_1: AirlightC
 
     let _e4 = airlight_basis_e1_(cap_1.a);
     let e2_2 = cross(cap_1.a, _e4);
-    let ad = dot(cap_1.a, a_28.d);
-    let e1d = dot(_e4, a_28.d);
-    let e2d = dot(e2_2, a_28.d);
+    let ad = dot(cap_1.a, a_30.d);
+    let e1d = dot(_e4, a_30.d);
+    let e2d = dot(e2_2, a_30.d);
     let _e15 = airlight_graded_range(s_47, 1.5707964f);
     let graded_9 = _e15.y;
-    let c_23 = (0.5f * _e15.x);
+    let c_24 = (0.5f * _e15.x);
     let hw_7 = (0.5f * _e15.x);
-    let _e63 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e63 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[0] = _e63;
-    let _e70 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
+    let _e70 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.09501251f * hw_7)), (0.1894506f * hw_7));
     rows[1] = _e70;
-    let _e77 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e77 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[2] = _e77;
-    let _e84 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
+    let _e84 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.28160354f * hw_7)), (0.18260342f * hw_7));
     rows[3] = _e84;
-    let _e91 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e91 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[4] = _e91;
-    let _e98 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
+    let _e98 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.45801678f * hw_7)), (0.16915652f * hw_7));
     rows[5] = _e98;
-    let _e105 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e105 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[6] = _e105;
-    let _e112 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
+    let _e112 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.61787623f * hw_7)), (0.14959599f * hw_7));
     rows[7] = _e112;
-    let _e119 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e119 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[8] = _e119;
-    let _e126 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
+    let _e126 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.7554044f * hw_7)), (0.12462897f * hw_7));
     rows[9] = _e126;
-    let _e133 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e133 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[10] = _e133;
-    let _e140 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
+    let _e140 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.8656312f * hw_7)), (0.09515851f * hw_7));
     rows[11] = _e140;
-    let _e147 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e147 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[12] = _e147;
-    let _e154 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.944575f * hw_7)), (0.062253524f * hw_7));
+    let _e154 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.944575f * hw_7)), (0.062253524f * hw_7));
     rows[13] = _e154;
-    let _e161 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e161 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 - (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[14] = _e161;
-    let _e168 = airlight_cap_row(s_47, cap_1, graded_9, (c_23 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
+    let _e168 = airlight_cap_row(s_47, cap_1, graded_9, (c_24 + (0.9894009f * hw_7)), (0.02715246f * hw_7));
     rows[15] = _e168;
-    if a_28.isotropic {
+    if a_30.isotropic {
         let _e174 = airlight_area_phase(s_47, 0f);
         let around_1 = (6.2831855f * _e174);
         let _e176 = sum_13;
@@ -7810,7 +7913,7 @@ fn airlight_sphere_lobe_node(s_48: AirlightScene, cap_2: AirlightCap, sign_2: f3
     return ((((_e37 * exp(min((-(s_48.sigma_t) * dist_2), 0f))) * _e46) * _e8.y) * _e8.z);
 }
 
-fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: AirlightCap, sign_3: f32, cos_p_1: f32, scale_3: f32) -> f32 {
+fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: AirlightCap, sign_3: f32, cos_p_1: f32, scale_3: f32) -> f32 {
     var axis_2: vec2<f32> = vec2<f32>(1f, 0f);
     var half_15: f32 = 0f;
     var count_3: u32;
@@ -7818,18 +7921,18 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
     var i_43: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
-    var local_191: bool;
-    var local_192: bool;
+    var local_194: bool;
+    var local_195: bool;
     var mid: f32;
-    var local_193: bool;
+    var local_196: bool;
     var lo_7: f32;
     var hi_6: f32;
-    var local_194: bool;
+    var local_197: bool;
     var around: f32;
     var k_9: u32;
-    var local_195: bool;
+    var local_198: bool;
 
-    let p_6 = (sign_3 * a_29.d);
+    let p_6 = (sign_3 * a_31.d);
     let _e8 = airlight_basis_e1_(p_6);
     let v_11 = cross(p_6, _e8);
     let au = dot(cap_3.a, _e8);
@@ -7864,11 +7967,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
             wpsi = 0f;
             if beside {
                 let _e87 = i_43;
-                local_191 = (_e87 < 84u);
+                local_194 = (_e87 < 84u);
             } else {
-                local_191 = false;
+                local_194 = false;
             }
-            let _e91 = local_191;
+            let _e91 = local_194;
             if _e91 {
                 let _e94 = airlight_mercator_cut(7u);
                 let _e95 = i_43;
@@ -7887,11 +7990,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
                 } else {
                     if inside_3 {
                         let _e115 = i_43;
-                        local_192 = (_e115 < 8u);
+                        local_195 = (_e115 < 8u);
                     } else {
-                        local_192 = false;
+                        local_195 = false;
                     }
-                    let _e119 = local_192;
+                    let _e119 = local_195;
                     if _e119 {
                         if !((eps > 0f)) {
                             continue;
@@ -7925,11 +8028,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
             mid = _e167;
             if beside {
                 let _e171 = mid;
-                local_193 = (_e171 < 0f);
+                local_196 = (_e171 < 0f);
             } else {
-                local_193 = false;
+                local_196 = false;
             }
-            let _e175 = local_193;
+            let _e175 = local_196;
             if _e175 {
                 let _e176 = mid;
                 mid = (_e176 + 6.2831855f);
@@ -7955,11 +8058,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
                 let _e210 = hi_6;
                 let _e211 = lo_7;
                 let _e214 = lo_7;
-                local_194 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
+                local_197 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
             } else {
-                local_194 = false;
+                local_197 = false;
             }
-            let cut_3 = local_194;
+            let cut_3 = local_197;
             around = 0f;
             k_9 = 0u;
             loop {
@@ -7975,79 +8078,79 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
                     let _e234 = hi_6;
                     if cut_3 {
                         let _e237 = k_9;
-                        local_195 = (_e237 == 0u);
+                        local_198 = (_e237 == 0u);
                     } else {
-                        local_195 = false;
+                        local_198 = false;
                     }
-                    let _e241 = local_195;
+                    let _e241 = local_198;
                     let to_1 = select(_e234, tail_1, _e241);
                     let _e243 = airlight_graded_from(scale_3, start_5, to_1);
                     let graded_10 = _e243.x;
-                    let c_24 = (0.5f * _e243.y);
+                    let c_25 = (0.5f * _e243.y);
                     let hw_8 = (0.5f * _e243.y);
                     let _e251 = around;
                     let _e254 = big_b_1;
-                    let _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, (c_24 - (0.09501251f * hw_8)));
+                    let _e258 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e254, start_5, graded_10, (c_25 - (0.09501251f * hw_8)));
                     around = (_e251 + ((0.1894506f * hw_8) * _e258));
                     let _e261 = around;
                     let _e264 = big_b_1;
-                    let _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, (c_24 + (0.09501251f * hw_8)));
+                    let _e268 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e264, start_5, graded_10, (c_25 + (0.09501251f * hw_8)));
                     around = (_e261 + ((0.1894506f * hw_8) * _e268));
                     let _e271 = around;
                     let _e274 = big_b_1;
-                    let _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, (c_24 - (0.28160354f * hw_8)));
+                    let _e278 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e274, start_5, graded_10, (c_25 - (0.28160354f * hw_8)));
                     around = (_e271 + ((0.18260342f * hw_8) * _e278));
                     let _e281 = around;
                     let _e284 = big_b_1;
-                    let _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, (c_24 + (0.28160354f * hw_8)));
+                    let _e288 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e284, start_5, graded_10, (c_25 + (0.28160354f * hw_8)));
                     around = (_e281 + ((0.18260342f * hw_8) * _e288));
                     let _e291 = around;
                     let _e294 = big_b_1;
-                    let _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, (c_24 - (0.45801678f * hw_8)));
+                    let _e298 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e294, start_5, graded_10, (c_25 - (0.45801678f * hw_8)));
                     around = (_e291 + ((0.16915652f * hw_8) * _e298));
                     let _e301 = around;
                     let _e304 = big_b_1;
-                    let _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, (c_24 + (0.45801678f * hw_8)));
+                    let _e308 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e304, start_5, graded_10, (c_25 + (0.45801678f * hw_8)));
                     around = (_e301 + ((0.16915652f * hw_8) * _e308));
                     let _e311 = around;
                     let _e314 = big_b_1;
-                    let _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, (c_24 - (0.61787623f * hw_8)));
+                    let _e318 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e314, start_5, graded_10, (c_25 - (0.61787623f * hw_8)));
                     around = (_e311 + ((0.14959599f * hw_8) * _e318));
                     let _e321 = around;
                     let _e324 = big_b_1;
-                    let _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, (c_24 + (0.61787623f * hw_8)));
+                    let _e328 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e324, start_5, graded_10, (c_25 + (0.61787623f * hw_8)));
                     around = (_e321 + ((0.14959599f * hw_8) * _e328));
                     let _e331 = around;
                     let _e334 = big_b_1;
-                    let _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, (c_24 - (0.7554044f * hw_8)));
+                    let _e338 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e334, start_5, graded_10, (c_25 - (0.7554044f * hw_8)));
                     around = (_e331 + ((0.12462897f * hw_8) * _e338));
                     let _e341 = around;
                     let _e344 = big_b_1;
-                    let _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, (c_24 + (0.7554044f * hw_8)));
+                    let _e348 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e344, start_5, graded_10, (c_25 + (0.7554044f * hw_8)));
                     around = (_e341 + ((0.12462897f * hw_8) * _e348));
                     let _e351 = around;
                     let _e354 = big_b_1;
-                    let _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, (c_24 - (0.8656312f * hw_8)));
+                    let _e358 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e354, start_5, graded_10, (c_25 - (0.8656312f * hw_8)));
                     around = (_e351 + ((0.09515851f * hw_8) * _e358));
                     let _e361 = around;
                     let _e364 = big_b_1;
-                    let _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, (c_24 + (0.8656312f * hw_8)));
+                    let _e368 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e364, start_5, graded_10, (c_25 + (0.8656312f * hw_8)));
                     around = (_e361 + ((0.09515851f * hw_8) * _e368));
                     let _e371 = around;
                     let _e374 = big_b_1;
-                    let _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, (c_24 - (0.944575f * hw_8)));
+                    let _e378 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e374, start_5, graded_10, (c_25 - (0.944575f * hw_8)));
                     around = (_e371 + ((0.062253524f * hw_8) * _e378));
                     let _e381 = around;
                     let _e384 = big_b_1;
-                    let _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, (c_24 + (0.944575f * hw_8)));
+                    let _e388 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e384, start_5, graded_10, (c_25 + (0.944575f * hw_8)));
                     around = (_e381 + ((0.062253524f * hw_8) * _e388));
                     let _e391 = around;
                     let _e394 = big_b_1;
-                    let _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, (c_24 - (0.9894009f * hw_8)));
+                    let _e398 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e394, start_5, graded_10, (c_25 - (0.9894009f * hw_8)));
                     around = (_e391 + ((0.02715246f * hw_8) * _e398));
                     let _e401 = around;
                     let _e404 = big_b_1;
-                    let _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, (c_24 + (0.9894009f * hw_8)));
+                    let _e408 = airlight_sphere_lobe_node(s_49, cap_3, sign_3, cos_p_1, _e404, start_5, graded_10, (c_25 + (0.9894009f * hw_8)));
                     around = (_e401 + ((0.02715246f * hw_8) * _e408));
                 }
                 continuing {
@@ -8069,122 +8172,142 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_29: AirlightArea, cap_3: Ai
     return _e422;
 }
 
-fn airlight_sphere(s_50: AirlightScene, a_30: AirlightArea, x_28: vec3<f32>) -> f32 {
+fn airlight_sphere(s_50: AirlightScene, a_32: AirlightArea, along: f32) -> f32 {
+    var gap_4: f32;
+    var local_199: bool;
     var chosen: f32 = 0f;
     var sign_4: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
-    var local_196: bool;
-    var local_197: bool;
-    var local_198: bool;
-    var local_199: bool;
     var local_200: bool;
     var local_201: bool;
+    var local_202: bool;
+    var local_203: bool;
+    var local_204: bool;
+    var local_205: bool;
 
-    let v_12 = (a_30.c - x_28);
-    let _e5 = airlight_safe_length(v_12);
-    if !((_e5 > a_30.radius)) {
+    let v_12 = (a_32.foot.to_centre - (along * a_32.d));
+    let _e8 = airlight_safe_length(v_12);
+    gap_4 = (((a_32.foot.miss * (a_32.foot.h + a_32.radius)) + (along * along)) / (_e8 + a_32.radius));
+    let _e22 = gap_4;
+    let _e23 = airlight_is_finite(_e22);
+    if !(_e23) {
+        gap_4 = (_e8 - a_32.radius);
+    }
+    let _e27 = gap_4;
+    if (_e27 > 0f) {
+        let _e32 = gap_4;
+        let _e33 = airlight_is_finite(_e32);
+        local_199 = _e33;
+    } else {
+        local_199 = false;
+    }
+    let _e35 = local_199;
+    if !(_e35) {
         return 0f;
     }
-    let sin_a_2 = (a_30.radius / _e5);
-    let cos_a_3 = sqrt(((1f - sin_a_2) * (1f + sin_a_2)));
-    let _e18 = airlight_atan2_upper(sin_a_2, cos_a_3);
-    let cap_4 = AirlightCap((v_12 / vec3(_e5)), _e5, a_30.radius, sin_a_2, cos_a_3, _e18);
+    let _e39 = gap_4;
+    let dc = (a_32.radius + _e39);
+    let sin_a_2 = (a_32.radius / dc);
+    let _e43 = gap_4;
+    let cos_a_3 = sqrt(((_e43 / dc) * (1f + sin_a_2)));
+    let _e49 = airlight_atan2_upper(sin_a_2, cos_a_3);
+    let cap_4 = AirlightCap((v_12 / vec3(_e8)), dc, a_32.radius, sin_a_2, cos_a_3, _e49);
     loop {
-        let _e31 = j_13;
-        if (_e31 < 2u) {
+        let _e62 = j_13;
+        if (_e62 < 2u) {
         } else {
             break;
         }
         {
-            let _e38 = j_13;
-            let lobe_6 = select(a_30.lobes.xy, a_30.lobes.zw, (_e38 == 1u));
-            let c_25 = dot(cap_4.a, (lobe_6.x * a_30.d));
-            let _e47 = chosen;
-            if (_e47 == 0f) {
-                local_196 = (lobe_6.y > 0f);
-            } else {
-                local_196 = false;
-            }
-            let _e56 = local_196;
-            if _e56 {
-                local_197 = (lobe_6.y < (_e18 + _e18));
-            } else {
-                local_197 = false;
-            }
-            let _e63 = local_197;
-            if _e63 {
-                if !(!((c_25 < -(cap_4.cos_a)))) {
-                    local_199 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_199 = true;
-                }
-                let _e77 = local_199;
-                local_198 = _e77;
-            } else {
-                local_198 = false;
-            }
-            let _e79 = local_198;
-            if _e79 {
-                if !((c_25 > cap_4.cos_a)) {
-                    let _e87 = airlight_acos(c_25);
-                    local_201 = ((_e87 - _e18) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e18));
-                } else {
-                    local_201 = true;
-                }
-                let _e95 = local_201;
-                local_200 = _e95;
+            let _e69 = j_13;
+            let lobe_6 = select(a_32.lobes.xy, a_32.lobes.zw, (_e69 == 1u));
+            let c_26 = dot(cap_4.a, (lobe_6.x * a_32.d));
+            let _e78 = chosen;
+            if (_e78 == 0f) {
+                local_200 = (lobe_6.y > 0f);
             } else {
                 local_200 = false;
             }
-            let _e97 = local_200;
-            if _e97 {
+            let _e87 = local_200;
+            if _e87 {
+                local_201 = (lobe_6.y < (_e49 + _e49));
+            } else {
+                local_201 = false;
+            }
+            let _e94 = local_201;
+            if _e94 {
+                if !(!((c_26 < -(cap_4.cos_a)))) {
+                    local_203 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
+                } else {
+                    local_203 = true;
+                }
+                let _e108 = local_203;
+                local_202 = _e108;
+            } else {
+                local_202 = false;
+            }
+            let _e110 = local_202;
+            if _e110 {
+                if !((c_26 > cap_4.cos_a)) {
+                    let _e118 = airlight_acos(c_26);
+                    local_205 = ((_e118 - _e49) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e49));
+                } else {
+                    local_205 = true;
+                }
+                let _e126 = local_205;
+                local_204 = _e126;
+            } else {
+                local_204 = false;
+            }
+            let _e128 = local_204;
+            if _e128 {
                 chosen = lobe_6.y;
                 sign_4 = lobe_6.x;
-                cos_p_2 = c_25;
+                cos_p_2 = c_26;
             }
         }
         continuing {
-            let _e101 = j_13;
-            j_13 = (_e101 + 1u);
+            let _e132 = j_13;
+            j_13 = (_e132 + 1u);
         }
     }
-    let _e103 = chosen;
-    if (_e103 > 0f) {
-        let _e106 = sign_4;
-        let _e107 = cos_p_2;
-        let _e108 = chosen;
-        let _e109 = airlight_sphere_about_lobe(s_50, a_30, cap_4, _e106, _e107, _e108);
-        return _e109;
+    let _e134 = chosen;
+    if (_e134 > 0f) {
+        let _e137 = sign_4;
+        let _e138 = cos_p_2;
+        let _e139 = chosen;
+        let _e140 = airlight_sphere_about_lobe(s_50, a_32, cap_4, _e137, _e138, _e139);
+        return _e140;
     }
-    let _e110 = airlight_sphere_cap(s_50, a_30, cap_4);
-    return _e110;
+    let _e141 = airlight_sphere_cap(s_50, a_32, cap_4);
+    return _e141;
 }
 
-fn airlight_emitter_radiance(s_51: AirlightScene, a_31: AirlightArea, x_29: vec3<f32>) -> f32 {
+fn airlight_emitter_radiance(s_51: AirlightScene, a_33: AirlightArea, x_28: vec3<f32>, along_1: f32) -> f32 {
     switch s_51.light_shape {
         case 2u: {
-            let _e4 = airlight_disc(s_51, a_31, x_29);
-            return _e4;
-        }
-        case 3u: {
-            let _e5 = airlight_parallelogram(s_51, a_31, x_29);
+            let _e5 = airlight_disc(s_51, a_33, x_28);
             return _e5;
         }
-        default: {
-            let _e6 = airlight_sphere(s_51, a_31, x_29);
+        case 3u: {
+            let _e6 = airlight_parallelogram(s_51, a_33, x_28);
             return _e6;
+        }
+        default: {
+            let _e7 = airlight_sphere(s_51, a_33, along_1);
+            return _e7;
         }
     }
 }
 
-fn airlight_area_node(s_52: AirlightScene, a_32: AirlightArea, theta: f32) -> f32 {
+fn airlight_area_node(s_52: AirlightScene, a_34: AirlightArea, theta: f32) -> f32 {
     let _e3 = airlight_cos_sin(theta);
-    let along_1 = ((a_32.h_eff * _e3.y) / _e3.x);
-    let t_14 = (a_32.x_h + along_1);
-    let fade = exp(min((-(s_52.sigma_t) * max(((a_32.x_h - s_52.t_min) + along_1), 0f)), 0f));
-    let _e33 = airlight_emitter_radiance(s_52, a_32, (s_52.origin + (t_14 * a_32.d)));
-    return (((a_32.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
+    let along_3 = ((a_34.h_eff * _e3.y) / _e3.x);
+    let t_14 = (a_34.x_h + along_3);
+    let fade = exp(min((-(s_52.sigma_t) * max(((a_34.x_h - s_52.t_min) + along_3), 0f)), 0f));
+    let _e33 = airlight_emitter_radiance(s_52, a_34, (s_52.origin + (t_14 * a_34.d)), along_3);
+    return (((a_34.h_eff / (_e3.x * _e3.x)) * fade) * _e33);
 }
 
 fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
@@ -8193,7 +8316,7 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
     var k_10: f32;
     var gauss_1: f32;
     var j_14: u32;
-    var local_202: bool;
+    var local_206: bool;
 
     let _e1 = airlight_area(s_53);
     if (_e1.outcome == 1u) {
@@ -8213,7 +8336,7 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
         {
             let _e27 = st_1.lo;
             let _e29 = st_1.hi;
-            let c_26 = (0.5f * (_e27 + _e29));
+            let c_27 = (0.5f * (_e27 + _e29));
             let _e34 = st_1.hi;
             let _e36 = st_1.lo;
             let hw_9 = (0.5f * (_e34 - _e36));
@@ -8232,13 +8355,13 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
                     let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_14;
-                        local_202 = (_e66 < 14u);
+                        local_206 = (_e66 < 14u);
                     } else {
-                        local_202 = false;
+                        local_206 = false;
                     }
-                    let _e70 = local_202;
-                    let x_39 = select((c_26 + (hw_9 * node_4.x)), (c_26 - (hw_9 * node_4.x)), _e70);
-                    let _e72 = airlight_area_node(s_53, _e1, x_39);
+                    let _e70 = local_206;
+                    let x_38 = select((c_27 + (hw_9 * node_4.x)), (c_27 - (hw_9 * node_4.x)), _e70);
+                    let _e72 = airlight_area_node(s_53, _e1, x_38);
                     let _e73 = k_10;
                     k_10 = (_e73 + (node_4.y * _e72));
                     let _e77 = gauss_1;
@@ -8276,22 +8399,22 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_54: AirlightScene) -> AirlightResult {
-    var local_203: bool;
-    var local_204: bool;
+    var local_207: bool;
+    var local_208: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_203 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_207 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
     } else {
-        local_203 = true;
+        local_207 = true;
     }
-    let _e10 = local_203;
+    let _e10 = local_207;
     if !(_e10) {
-        local_204 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_204 = true;
+        local_208 = true;
     }
-    let _e18 = local_204;
+    let _e18 = local_208;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8300,15 +8423,15 @@ fn airlight_in_scatter_area(s_54: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_205: bool;
+    var local_209: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_205 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_209 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_205 = true;
+        local_209 = true;
     }
-    let _e11 = local_205;
+    let _e11 = local_209;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8317,18 +8440,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_206: bool;
+    var local_210: bool;
     var g_29: AirlightCanonical;
 
     let p_7 = n_5.scene;
     let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_7.dir);
-        local_206 = _e11;
+        local_210 = _e11;
     } else {
-        local_206 = false;
+        local_210 = false;
     }
-    let _e13 = local_206;
+    let _e13 = local_210;
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
@@ -8352,22 +8475,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_55: AirlightScene) -> AirlightResult {
-    var local_207: bool;
-    var local_208: bool;
+    var local_211: bool;
+    var local_212: bool;
 
     let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_207 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_211 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_207 = true;
+        local_211 = true;
     }
-    let _e10 = local_207;
+    let _e10 = local_211;
     if !(_e10) {
-        local_208 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_212 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_208 = true;
+        local_212 = true;
     }
-    let _e18 = local_208;
+    let _e18 = local_212;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8376,22 +8499,22 @@ fn airlight_in_scatter_point(s_55: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_56: AirlightScene) -> AirlightResult {
-    var local_209: bool;
-    var local_210: bool;
+    var local_213: bool;
+    var local_214: bool;
 
     let _e1 = airlight_valid(s_56);
     if !(!(_e1)) {
-        local_209 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_213 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
     } else {
-        local_209 = true;
+        local_213 = true;
     }
-    let _e10 = local_209;
+    let _e10 = local_213;
     if !(_e10) {
-        local_210 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
+        local_214 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
-        local_210 = true;
+        local_214 = true;
     }
-    let _e18 = local_210;
+    let _e18 = local_214;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8419,9 +8542,9 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
     var k_11: f32;
     var gauss_2: f32;
     var j_15: u32;
-    var local_211: bool;
+    var local_215: bool;
     var f: f32;
-    var local_212: bool;
+    var local_216: bool;
 
     let _e1 = airlight_valid(s_57);
     if !(_e1) {
@@ -8450,7 +8573,7 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
         {
             let _e42 = st_2.lo;
             let _e44 = st_2.hi;
-            let c_27 = (0.5f * (_e42 + _e44));
+            let c_28 = (0.5f * (_e42 + _e44));
             let _e49 = st_2.hi;
             let _e51 = st_2.lo;
             let hw_10 = (0.5f * (_e49 - _e51));
@@ -8469,12 +8592,12 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
                     let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_15;
-                        local_211 = (_e81 < 6u);
+                        local_215 = (_e81 < 6u);
                     } else {
-                        local_211 = false;
+                        local_215 = false;
                     }
-                    let _e85 = local_211;
-                    let w_11 = select((c_27 + (hw_10 * node_5.x)), (c_27 - (hw_10 * node_5.x)), _e85);
+                    let _e85 = local_215;
+                    let w_11 = select((c_28 + (hw_10 * node_5.x)), (c_28 - (hw_10 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0f;
                     if (_e87.weight != 0f) {
@@ -8483,11 +8606,11 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_57.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_212 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_216 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_212 = false;
+                            local_216 = false;
                         }
-                        let _e106 = local_212;
+                        let _e106 = local_216;
                         if _e106 {
                             return _e93;
                         }

@@ -515,7 +515,7 @@ fn focused_flat_emitters() -> Vec<(airlight::AreaScene<f32, airlight::phase::Any
 /// A sphere in `g = 0.95` and `0.99` fog on rays entering it 0.001 and 0.00001 of its radius
 /// inside its limb, up to the middle of their chord and (0.00001) whole (tests/area.rs
 /// `bounded_sphere_with_the_lobe_next_to_its_limb`), and in `g = 0.99` fog behind it on rays
-/// that miss it by 0.001 and 0.0001 of its radius (`bounded_sphere_behind_a_grazing_ray`): the
+/// that miss it by 0.001, 0.0001 and 0.00001 of its radius (`bounded_sphere_behind_a_grazing_ray`): the
 /// f32 scene, the nested construction's value on its f32 inputs at tolerance 1e-9 in f64, a label.
 fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase<f32>>, f64, String)> {
     use airlight::glam::{DVec3, Vec3};
@@ -550,7 +550,7 @@ fn sphere_limb_rays() -> Vec<(airlight::AreaScene<f32, airlight::phase::AnyPhase
     }
     // behind a sphere the ray misses (its lobe just outside a cap nearly a hemisphere wide, the
     // θ rule cut at LOBE_TAIL), from the closest approach on
-    for miss in [0.001f32, 0.0001] {
+    for miss in [0.001f32, 0.0001, 0.00001] {
         let angle = (radius * (1.0 + miss) / center.length()).asin();
         let dir = towards * angle.cos() + side * angle.sin();
         cases.push(case(dir, (dir.dot(center), f32::INFINITY), 0.99, format!("g = 0.99 sphere, behind it, missing it by {miss} of its radius")));

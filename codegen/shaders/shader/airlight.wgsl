@@ -1916,6 +1916,27 @@ fn airlight_diff_of_products(a: f32, b: f32, c: f32, d: f32, key: u32) -> f32 {
     return airlight_opaque(p.x - q.x, key) + airlight_opaque(p.y - q.y, key);
 }
 
+/// A float pair (hi, lo) plus another, to about ε² of the larger (geometry.rs `pair_add`).
+fn airlight_pair_add(a: vec2<f32>, b: vec2<f32>, key: u32) -> vec2<f32> {
+    let s = airlight_two_sum(a.x, b.x, key);
+    return airlight_two_sum(s.x, s.y + (a.y + b.y), key);
+}
+
+/// A float pair times another, to about ε² (geometry.rs `pair_mul`).
+fn airlight_pair_mul(a: vec2<f32>, b: vec2<f32>, key: u32) -> vec2<f32> {
+    let p = airlight_two_product(a.x, b.x, key);
+    return airlight_two_sum(p.x, p.y + (a.x * b.y + a.y * b.x), key);
+}
+
+/// hi_i·dir_j − hi_j·dir_i + lo_i·dir_j − lo_j·dir_i as a float pair (geometry.rs
+/// `sphere_miss`'s cross product): the hi products exact, their difference a two-sum.
+fn airlight_cross_pair(hi_i: f32, hi_j: f32, lo_i: f32, lo_j: f32, dir_i: f32, dir_j: f32, key: u32) -> vec2<f32> {
+    let p = airlight_two_product(hi_i, dir_j, key);
+    let q = airlight_two_product(hi_j, dir_i, key);
+    let s = airlight_two_sum(p.x, -q.x, key);
+    return airlight_two_sum(s.x, s.y + (p.y - q.y) + (lo_i * dir_j - lo_j * dir_i), key);
+}
+
 fn airlight_in_exact_range(v: vec3<f32>) -> bool {
     let m = max(abs(v.x), max(abs(v.y), abs(v.z)));
     return m == 0.0 || (m >= 1.0 / AIRLIGHT_EXACT_RANGE && m <= AIRLIGHT_EXACT_RANGE);
@@ -1956,6 +1977,48 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
     out.h = h;
     out.d_c = dot(n, a);
     return out;
+}
+
+/// Where a sphere lies from the ray's line (outer.rs `SphereFoot`): the vector from the centre's
+/// foot on the line to the centre, its length h, and the miss h − R to a few ulps of itself.
+struct AirlightSphereFoot {
+    to_centre: vec3<f32>,
+    h: f32,
+    miss: f32,
+}
+
+/// geometry.rs `sphere_miss`: c − o a two-sum, w = (c − o) × dir as float pairs from Dekker's
+/// products, h = |w|/|dir|, the foot's vector (dir × w)/(|dir||w|)·h, and h − R = (|w|² −
+/// R²|dir|²)/((|w| + R|dir|)|dir|) from the pairs' squares; the plain reduction where the
+/// products could overflow or underflow or the centre is on the line (outer.rs).
+fn airlight_sphere_foot(o: vec3<f32>, dir: vec3<f32>, c: vec3<f32>, radius: f32, key: u32) -> AirlightSphereFoot {
+    let d = airlight_normalize(dir);
+    let oc = o - c;
+    let to_centre = -(oc - dot(oc, d) * d);
+    let plain_h = airlight_safe_length(to_centre);
+    let plain = AirlightSphereFoot(to_centre, plain_h, plain_h - radius);
+    let sx = airlight_two_sum(c.x, -o.x, key);
+    let sy = airlight_two_sum(c.y, -o.y, key);
+    let sz = airlight_two_sum(c.z, -o.z, key);
+    let hi = vec3<f32>(sx.x, sy.x, sz.x);
+    let lo = vec3<f32>(sx.y, sy.y, sz.y);
+    if (!airlight_in_exact_range(hi) || !airlight_in_exact_range(dir)) { return plain; }
+    let wx = airlight_cross_pair(hi.y, hi.z, lo.y, lo.z, dir.y, dir.z, key);
+    let wy = airlight_cross_pair(hi.z, hi.x, lo.z, lo.x, dir.z, dir.x, key);
+    let wz = airlight_cross_pair(hi.x, hi.y, lo.x, lo.y, dir.x, dir.y, key);
+    let w2 = airlight_pair_add(airlight_pair_add(airlight_pair_mul(wx, wx, key), airlight_pair_mul(wy, wy, key), key), airlight_pair_mul(wz, wz, key), key);
+    let dx = vec2<f32>(dir.x, 0.0);
+    let dy = vec2<f32>(dir.y, 0.0);
+    let dz = vec2<f32>(dir.z, 0.0);
+    let dir2 = airlight_pair_add(airlight_pair_add(airlight_pair_mul(dx, dx, key), airlight_pair_mul(dy, dy, key), key), airlight_pair_mul(dz, dz, key), key);
+    let w_len = sqrt(w2.x);
+    let scale = sqrt(dir2.x);
+    let h = w_len / scale;
+    let k = airlight_pair_mul(airlight_two_product(radius, radius, key), dir2, key);
+    let miss = airlight_pair_add(w2, -k, key).x / ((w_len + radius * scale) * scale);
+    if (!(h > 0.0 && airlight_is_finite(h) && airlight_is_finite(miss))) { return plain; }
+    let m = cross(d, airlight_normalize(vec3<f32>(wx.x, wy.x, wz.x)));
+    return AirlightSphereFoot(h * m, h, miss);
 }
 
 // ---------------------------------------------------------------- outer integrals
@@ -2668,6 +2731,8 @@ struct AirlightArea {
     lobes: vec4<f32>,
     /// A constant phase function (outer.rs `constant_phase`).
     isotropic: bool,
+    /// A sphere's place from the ray's line (outer.rs `SphereFoot`).
+    foot: AirlightSphereFoot,
 }
 
 /// P(μ) of the scene's phase function.
@@ -2793,7 +2858,7 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     let zero = vec3<f32>(0.0);
     var a = AirlightArea(zero, s.light_position, zero, zero, zero, zero, zero, zero, s.light_param_a, 0.0, 0.0,
         array<f32, AIRLIGHT_OUTER_EDGES>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, airlight_phase_lobes(s),
-        false);
+        false, AirlightSphereFoot(zero, 0.0, 0.0));
     a.isotropic = airlight_isotropic_phase(s);
     if (s.intensity == 0.0 || s.sigma_s == 0.0) {
         a.outcome = 1u;
@@ -2816,13 +2881,16 @@ fn airlight_area(s: AirlightScene) -> AirlightArea {
     var centre = s.light_position;
     var size = s.light_param_a;
     if (s.light_shape == AIRLIGHT_SHAPE_SPHERE) {
-        // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = R² − ρ² from the centre's
-        // distance ρ to the ray's line (b² − k itself cancels for a grazing ray)
+        // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = −(ρ − R)(ρ + R) from the
+        // centre's distance ρ to the ray's line and its miss (b² − k itself cancels for a
+        // grazing ray)
         let oc = o - a.c;
         let b = dot(oc, d);
         let k = dot(oc, oc) - a.radius * a.radius;
-        let rho = airlight_safe_length(oc - b * d);
-        let disc = (a.radius - rho) * (a.radius + rho);
+        // 0 for every record (flags has one defined bit), undecidable by the compiler
+        let key = u32(s.flags > 1u);
+        a.foot = airlight_sphere_foot(o, s.dir, a.c, a.radius, key);
+        let disc = -a.foot.miss * (a.foot.h + a.radius);
         if (disc > 0.0) {
             let root = sqrt(disc);
             let q = -b - select(root, -root, (bitcast<u32>(b) & 0x80000000u) != 0u);
@@ -3679,15 +3747,20 @@ fn airlight_sphere_about_lobe(s: AirlightScene, a: AirlightArea, cap: AirlightCa
     return sum;
 }
 
-/// S(x) of a sphere (outer.rs `sphere`); 0 inside it.
-fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
-    let v = a.c - x;
-    let dc = airlight_safe_length(v);
-    if (!(dc > a.radius)) { return 0.0; }
+/// S(x) of a sphere (outer.rs `sphere`) at `along` past the centre's foot, c − x and |c − x| − R
+/// from its foot and miss (outer.rs `SphereFoot::at`); 0 inside it.
+fn airlight_sphere(s: AirlightScene, a: AirlightArea, along: f32) -> f32 {
+    let v = a.foot.to_centre - along * a.d;
+    let length = airlight_safe_length(v);
+    var gap = (a.foot.miss * (a.foot.h + a.radius) + along * along) / (length + a.radius);
+    if (!airlight_is_finite(gap)) { gap = length - a.radius; }
+    // inside, or beyond the float range (a cap of no size)
+    if (!(gap > 0.0 && airlight_is_finite(gap))) { return 0.0; }
+    let dc = a.radius + gap;
     let sin_a = a.radius / dc;
-    let cos_a = sqrt((1.0 - sin_a) * (1.0 + sin_a));
+    let cos_a = sqrt((gap / dc) * (1.0 + sin_a));
     let alpha = airlight_atan2_upper(sin_a, cos_a);
-    let cap = AirlightCap(v / dc, dc, a.radius, sin_a, cos_a, alpha);
+    let cap = AirlightCap(v / length, dc, a.radius, sin_a, cos_a, alpha);
     // a lobe narrower than the cap (κ < α) whose direction lies inside it, or outside within
     // LOBE_REACH scales of its rim or the cap's radius α (beyond the great circle opposite the
     // centre, beside the sphere, only one narrower than BESIDE_SCALE)
@@ -3712,12 +3785,12 @@ fn airlight_sphere(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
 }
 
 /// S(x): the radiance the emitter's directions send along the ray at x, weighted by the phase
-/// function (outer.rs `Shape::radiance`).
-fn airlight_emitter_radiance(s: AirlightScene, a: AirlightArea, x: vec3<f32>) -> f32 {
+/// function (outer.rs `Shape::radiance`), `along` past the centre's foot.
+fn airlight_emitter_radiance(s: AirlightScene, a: AirlightArea, x: vec3<f32>, along: f32) -> f32 {
     switch s.light_shape {
         case AIRLIGHT_SHAPE_DISC: { return airlight_disc(s, a, x); }
         case AIRLIGHT_SHAPE_RECTANGLE: { return airlight_parallelogram(s, a, x); }
-        default: { return airlight_sphere(s, a, x); }
+        default: { return airlight_sphere(s, a, along); }
     }
 }
 
@@ -3727,7 +3800,7 @@ fn airlight_area_node(s: AirlightScene, a: AirlightArea, theta: f32) -> f32 {
     let along = a.h_eff * cs.y / cs.x;
     let t = a.x_h + along;
     let fade = exp(min(-s.sigma_t * max((a.x_h - s.t_min) + along, 0.0), 0.0));
-    return a.h_eff / (cs.x * cs.x) * fade * airlight_emitter_radiance(s, a, s.origin + t * a.d);
+    return a.h_eff / (cs.x * cs.x) * fade * airlight_emitter_radiance(s, a, s.origin + t * a.d, along);
 }
 
 /// In-scattered radiance L_m of an area light (AIRLIGHT_SHAPE_DISC, _RECTANGLE, _SPHERE; without a

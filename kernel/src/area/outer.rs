@@ -48,7 +48,7 @@
 use super::{axpy, AreaScene, Emitter};
 use crate::expansion::gauss_table::{GL12, GL16, GL32};
 use crate::extended::{adaptive, edges_between, GAUSS_KRONROD_15};
-use crate::geometry::{basis, cross, dot, length, normalize, sub};
+use crate::geometry::{basis, cross, dot, length, normalize, sphere_miss, sub};
 use crate::phase::PhaseFunction;
 use crate::real::{exp_nonpositive, sin_cos_turns, Real};
 
@@ -770,17 +770,22 @@ struct Cap<T> {
     alpha: T,
 }
 
-/// `S(x)` of a sphere (centre `c`, radius `R`); `0` inside it.
-fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, x: [T; 3], c: [T; 3], radius: T) -> T {
-    let v = sub(c, x);
-    let dc = length(v);
-    if !(dc > radius) {
+/// `S(x)` of a sphere of radius `R` whose centre lies at `v = c − x`, `gap = |v| − R` apart
+/// ([`SphereFoot::at`]); `0` inside it.
+fn sphere<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, v: [T; 3], radius: T, gap: T) -> T {
+    // inside, or beyond the float range (a cap of no size)
+    if !(gap > T::zero() && gap.is_finite()) {
         return T::zero();
     }
-    let a = [v[0] / dc, v[1] / dc, v[2] / dc];
+    let length = length(v);
+    let a = [v[0] / length, v[1] / length, v[2] / length];
+    // sin α = R/dc, cos α = √((dc − R)(dc + R))/dc from the gap itself: near the limb `dc`
+    // rounded holds `dc − R` only to ε·dc
+    let dc = radius + gap;
     let sin_a = radius / dc;
-    let alpha = sin_a.asin();
-    let cap = Cap { a, dc, radius, cos_a: ((T::one() - sin_a) * (T::one() + sin_a)).sqrt(), alpha };
+    let cos_a = ((gap / dc) * (T::one() + sin_a)).sqrt();
+    let alpha = sin_a.atan2(cos_a);
+    let cap = Cap { a, dc, radius, cos_a, alpha };
     // a lobe whose direction falls inside the cap or near it: polar about it instead
     for &(sign, scale) in light.lobes.iter().flatten() {
         let p = [sign * light.d[0], sign * light.d[1], sign * light.d[2]];
@@ -946,16 +951,43 @@ fn sphere_about_lobe<T: Real, P: PhaseFunction<T>>(light: &Light<'_, T, P>, cap:
 enum Shape<T> {
     Disc { c: [T; 3], frame: Frame<T>, radius: T },
     Parallelogram { p0: [T; 3], edges: ([T; 3], [T; 3]), frame: Frame<T> },
-    Sphere { c: [T; 3], radius: T },
+    Sphere { foot: SphereFoot<T>, radius: T },
+}
+
+/// Where a sphere lies from the ray's line: the vector from the centre's foot on the line to the
+/// centre (`h` long) and the miss `h − R` to a few ulps of itself ([`sphere_miss`]), so that at
+/// `x`, `along` past the foot, `c − x = to_centre − along·d` and `|c − x| − R = (miss (h + R) +
+/// along²)/(|c − x| + R)` hold a grazing ray's gap to a few ulps, where `|c − (o + t d)|` rounded
+/// holds it only to `ε·|c − x|` (in f32 1 % of a gap of 6e-6 at a radius of 0.625, where `S`
+/// moves by 0.27 of the gap's relative change: docs/DESIGN.md §12).
+#[derive(Clone, Copy)]
+struct SphereFoot<T> {
+    to_centre: [T; 3],
+    h: T,
+    miss: T,
+}
+
+impl<T: Real> SphereFoot<T> {
+    /// `c − x` and `|c − x| − R` at `along` past the foot (`|c − x| − R` itself where `along²`
+    /// overflows).
+    fn at(&self, d: [T; 3], along: T, radius: T) -> ([T; 3], T) {
+        let v = axpy(self.to_centre, -along, d);
+        let length = length(v);
+        let gap = (self.miss * (self.h + radius) + along * along) / (length + radius);
+        (v, if gap.is_finite() { gap } else { length - radius })
+    }
 }
 
 impl<T: Real> Shape<T> {
-    /// `S(x)`.
-    fn radiance<P: PhaseFunction<T>>(&self, light: &Light<'_, T, P>, x: [T; 3]) -> T {
+    /// `S(x)` at `x = o + t d`, `along = t − x_h` past the centre's foot.
+    fn radiance<P: PhaseFunction<T>>(&self, light: &Light<'_, T, P>, x: [T; 3], along: T) -> T {
         match *self {
             Shape::Disc { c, frame, radius } => disc(light, x, c, frame, radius),
             Shape::Parallelogram { p0, edges, frame } => parallelogram(light, x, p0, edges, frame),
-            Shape::Sphere { c, radius } => sphere(light, x, c, radius),
+            Shape::Sphere { foot, radius } => {
+                let (v, gap) = foot.at(light.d, along, radius);
+                sphere(light, v, radius, gap)
+            }
         }
     }
 
@@ -1028,17 +1060,25 @@ where
             }
             Emitter::Sphere { center, radius } => {
                 let c = T::vec3_to_array(center);
-                // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = R² − ρ² from the
-                // centre's distance ρ to the ray's line (b² − k itself cancels for a grazing ray)
+                // entry and exit: t² + 2bt + k = 0, its discriminant b² − k = R² − ρ² = −(ρ −
+                // R)(ρ + R) from the centre's distance ρ to the ray's line and its miss (b² − k
+                // itself cancels for a grazing ray)
                 let oc = sub(o, c);
                 let (b, k) = (dot(oc, d), dot(oc, oc) - radius * radius);
-                let rho = length(axpy(oc, -b, d));
-                let disc = (radius - rho) * (radius + rho);
+                let foot = match sphere_miss(o, T::vec3_to_array(self.ray.dir), c, radius) {
+                    Some((h, to_centre, miss)) => SphereFoot { to_centre, h, miss },
+                    None => {
+                        let to_centre = axpy(oc, -b, d).map(|x| -x);
+                        let h = length(to_centre);
+                        SphereFoot { to_centre, h, miss: h - radius }
+                    }
+                };
+                let disc = -foot.miss * (foot.h + radius);
                 if disc > T::zero() {
                     let q = -b - disc.sqrt().copysign(b);
                     cuts = [q, k / q, T::nan()];
                 }
-                (Shape::Sphere { c, radius }, c, radius)
+                (Shape::Sphere { foot, radius }, c, radius)
             }
         };
         if !(size > T::zero()) {
@@ -1072,7 +1112,7 @@ where
         let mut integrand = |th: T| {
             let (s, c) = sin_cos_turns(th);
             let t = x_h + h_eff * s / c;
-            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * shape.radiance(&light, axpy(o, t, d))
+            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * shape.radiance(&light, axpy(o, t, d), h_eff * s / c)
         };
         let (value, panels) = adaptive(&GAUSS_KRONROD_15, &mut integrand, &edges[..=n], tolerance, max_panels);
         (self.medium.sigma_s * value, panels)
