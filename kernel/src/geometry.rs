@@ -99,13 +99,23 @@ fn diff_of_products<T: Real>(a: T, b: T, c: T, d: T) -> T {
     (p - q) + (ep - eq)
 }
 
-/// Whether exact products of `v`'s components (and Dekker's splits of them) neither overflow
-/// nor reach the subnormal range: within `T::EXACT_RANGE` and its reciprocal, or zero.
+/// `point − origin` exactly, as a two-sum `hi + lo` per component, where it and `dir` are
+/// within `T::EXACT_RANGE` and its reciprocal (or zero), so that exact products of their
+/// components (and Dekker's splits of them) neither overflow nor reach the subnormal range;
+/// else `None`, for the plain reduction.
 #[inline]
-fn in_exact_range<T: Real>(v: [T; 3]) -> bool {
-    let m = v[0].abs().max(v[1].abs()).max(v[2].abs());
-    let r = T::lit(T::EXACT_RANGE);
-    m == T::zero() || (m >= r.recip() && m <= r)
+fn exact_difference<T: Real>(point: [T; 3], origin: [T; 3], dir: [T; 3]) -> Option<([T; 3], [T; 3])> {
+    let mut hi = [T::zero(); 3];
+    let mut lo = [T::zero(); 3];
+    for i in 0..3 {
+        (hi[i], lo[i]) = two_sum(point[i], -origin[i]);
+    }
+    let in_range = |v: [T; 3]| {
+        let m = v[0].abs().max(v[1].abs()).max(v[2].abs());
+        let r = T::lit(T::EXACT_RANGE);
+        m == T::zero() || (m >= r.recip() && m <= r)
+    };
+    (in_range(hi) && in_range(dir)).then_some((hi, lo))
 }
 
 /// A float pair `hi + lo` (`|lo|` at most half an ulp of `hi`) added to another, to about
@@ -129,19 +139,12 @@ fn pair_mul<T: Real>((a, b): (T, T), (c, d): (T, T)) -> (T, T) {
 /// rounded to the precision holds it only to `ε·h` (in f32 a ray passing 6e-6 outside a sphere
 /// of radius 0.625 knows its miss to 1 %). As [`Canonical::new_accurate`], `centre − origin`
 /// is kept as a two-sum and `w = (centre − origin) × dir` formed from Dekker's exact products,
-/// here as float pairs: `h = |w|/|dir|`, the foot's unit vector from the centre `−(dir ×
+/// here as float pairs: `h = |w|/|dir|`, the vector from the foot to the centre `h·(dir ×
 /// w)/(|dir||w|)`, and `h − R = (|w|² − R²|dir|²)/((|w| + R|dir|)|dir|)` from the pairs'
-/// squares. `None` where the products could overflow or underflow (`|centre − origin|` or
-/// `|dir|` beyond `T::EXACT_RANGE` or below its reciprocal) or the centre is on the line.
+/// squares. `None` where the products could overflow or underflow ([`exact_difference`]) or
+/// the centre is on the line.
 pub(crate) fn sphere_miss<T: Real>(origin: [T; 3], dir: [T; 3], centre: [T; 3], radius: T) -> Option<(T, [T; 3], T)> {
-    let mut hi = [T::zero(); 3];
-    let mut lo = [T::zero(); 3];
-    for i in 0..3 {
-        (hi[i], lo[i]) = two_sum(centre[i], -origin[i]);
-    }
-    if !in_exact_range(hi) || !in_exact_range(dir) {
-        return None;
-    }
+    let (hi, lo) = exact_difference(centre, origin, dir)?;
     // w = (hi + lo) × dir as pairs: the hi part's products exact, their difference a two-sum
     let cross_pair = |i: usize, j: usize| {
         let ((p, ep), (q, eq)) = (two_product(hi[i], dir[j]), two_product(hi[j], dir[i]));
@@ -220,14 +223,9 @@ impl<T: Real> Canonical<T> {
         if !(scale > T::zero() && scale.is_finite()) {
             return plain;
         }
-        let mut hi = [T::zero(); 3];
-        let mut lo = [T::zero(); 3];
-        for i in 0..3 {
-            (hi[i], lo[i]) = two_sum(light[i], -origin[i]);
-        }
-        if !in_exact_range(hi) || !in_exact_range(dir) {
+        let Some((hi, lo)) = exact_difference(light, origin, dir) else {
             return plain;
-        }
+        };
         // w = (hi + lo) × dir: the hi part from exact products, the lo part plainly
         let cross_exact = |i: usize, j: usize| diff_of_products(hi[i], dir[j], hi[j], dir[i]) + (lo[i] * dir[j] - lo[j] * dir[i]);
         let w = [cross_exact(1, 2), cross_exact(2, 0), cross_exact(0, 1)];

@@ -58,6 +58,11 @@ struct AirlightPanel {
     float mass_over;
     float f_max;
 };
+struct AirlightExactDifference {
+    vec3 hi;
+    vec3 lo;
+    bool in_range;
+};
 struct AirlightPanelList {
     vec4 panel_a;
     vec4 panel_b;
@@ -4259,69 +4264,75 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain) {
+AirlightExactDifference airlight_exact_difference(vec3 point, vec3 origin_1, vec3 dir, uint key_4) {
     bool local_128 = false;
+    vec2 _e7 = airlight_two_sum(point.x, -(origin_1.x), key_4);
+    vec2 _e11 = airlight_two_sum(point.y, -(origin_1.y), key_4);
+    vec2 _e15 = airlight_two_sum(point.z, -(origin_1.z), key_4);
+    vec3 hi_6 = vec3(_e7.x, _e11.x, _e15.x);
+    bool _e24 = airlight_in_exact_range(hi_6);
+    if (_e24) {
+        bool _e27 = airlight_in_exact_range(dir);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    bool _e29 = local_128;
+    return AirlightExactDifference(hi_6, vec3(_e7.y, _e11.y, _e15.y), _e29);
+}
+
+AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain) {
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_129 = false;
     vec3 a_16 = vec3(0.0, 0.0, 1.0);
-    uint key_4 = uint((s_19.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
-    vec2 _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
-    vec2 _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
-    vec3 hi_6 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_7 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir = s_19.dir;
-    bool _e33 = airlight_in_exact_range(hi_6);
-    if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    bool _e41 = local_128;
-    if (_e41) {
+    uint key_5 = uint((s_19.flags > 1u));
+    vec3 dir_1 = s_19.dir;
+    AirlightExactDifference _e9 = airlight_exact_difference(s_19.light_position, s_19.origin, dir_1, key_5);
+    if (!(_e9.in_range)) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_6.y, dir.z, hi_6.z, dir.y, key_4);
-    float _e59 = airlight_diff_of_products(hi_6.z, dir.x, hi_6.x, dir.z, key_4);
-    float _e72 = airlight_diff_of_products(hi_6.x, dir.y, hi_6.y, dir.x, key_4);
-    vec3 w_5 = vec3((_e46 + ((lo_7.y * dir.z) - (lo_7.z * dir.y))), (_e59 + ((lo_7.z * dir.x) - (lo_7.x * dir.z))), (_e72 + ((lo_7.x * dir.y) - (lo_7.y * dir.x))));
-    bool _e82 = airlight_vec_finite(w_5);
-    if (!(_e82)) {
+    vec3 hi_7 = _e9.hi;
+    vec3 lo_7 = _e9.lo;
+    float _e18 = airlight_diff_of_products(hi_7.y, dir_1.z, hi_7.z, dir_1.y, key_5);
+    float _e31 = airlight_diff_of_products(hi_7.z, dir_1.x, hi_7.x, dir_1.z, key_5);
+    float _e44 = airlight_diff_of_products(hi_7.x, dir_1.y, hi_7.y, dir_1.x, key_5);
+    vec3 w_5 = vec3((_e18 + ((lo_7.y * dir_1.z) - (lo_7.z * dir_1.y))), (_e31 + ((lo_7.z * dir_1.x) - (lo_7.x * dir_1.z))), (_e44 + ((lo_7.x * dir_1.y) - (lo_7.y * dir_1.x))));
+    bool _e54 = airlight_vec_finite(w_5);
+    if (!(_e54)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_5);
-    if ((_e85 == 0.0)) {
+    float _e57 = airlight_safe_length(w_5);
+    if ((_e57 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e92 = out_2;
-        return _e92;
+        AirlightCanonical _e64 = out_2;
+        return _e64;
     }
-    float _e93 = airlight_safe_length(dir);
-    float h_7 = (_e85 / _e93);
-    bool _e95 = airlight_is_finite(h_7);
-    if (_e95) {
+    float _e65 = airlight_safe_length(dir_1);
+    float h_7 = (_e57 / _e65);
+    bool _e67 = airlight_is_finite(h_7);
+    if (_e67) {
         local_129 = (h_7 > 0.0);
     } else {
         local_129 = false;
     }
-    bool _e101 = local_129;
-    if (!(_e101)) {
+    bool _e73 = local_129;
+    if (!(_e73)) {
         return plain;
     }
     if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_19.light_axis);
-        a_16 = _e112;
+        vec3 _e84 = airlight_normalize(s_19.light_axis);
+        a_16 = _e84;
     }
-    vec3 _e113 = airlight_normalize(dir);
-    vec3 _e114 = airlight_normalize(w_5);
-    vec3 n_3 = -(cross(_e113, _e114));
+    vec3 _e85 = airlight_normalize(dir_1);
+    vec3 _e86 = airlight_normalize(w_5);
+    vec3 n_3 = -(cross(_e85, _e86));
     out_2.h = h_7;
-    vec3 _e119 = a_16;
-    out_2.d_c = dot(n_3, _e119);
-    AirlightCanonical _e121 = out_2;
-    return _e121;
+    vec3 _e91 = a_16;
+    out_2.d_c = dot(n_3, _e91);
+    AirlightCanonical _e93 = out_2;
+    return _e93;
 }
 
 vec3[4] airlight_kronrod_rule() {
@@ -5055,7 +5066,7 @@ AirlightOuter airlight_surface(AirlightScene s_23) {
             cuts_2[_e255] = c_15;
         }
     }
-    float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
+    float hi_8 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
     g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
     bool loop_init_25 = true;
     while(true) {
@@ -5077,7 +5088,7 @@ AirlightOuter airlight_surface(AirlightScene s_23) {
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[_e289];
-                local_136 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_8);
             } else {
                 local_136 = false;
             }
@@ -5093,7 +5104,7 @@ AirlightOuter airlight_surface(AirlightScene s_23) {
         }
     }
     uint _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_7;
+    g_20.gamma[(_e308 + 1u)] = hi_8;
     uint _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     bool loop_init_26 = true;

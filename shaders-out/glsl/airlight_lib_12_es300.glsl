@@ -82,6 +82,11 @@ struct AirlightPanel {
     float mass_over;
     float f_max;
 };
+struct AirlightExactDifference {
+    vec3 hi;
+    vec3 lo;
+    bool in_range;
+};
 struct AirlightSphereFoot {
     vec3 to_centre;
     float h;
@@ -4922,138 +4927,133 @@ bool airlight_in_exact_range(vec3 v_4) {
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain) {
+AirlightExactDifference airlight_exact_difference(vec3 point, vec3 origin_3, vec3 dir_2, uint key_7) {
     bool local_128 = false;
+    vec2 _e7 = airlight_two_sum(point.x, -(origin_3.x), key_7);
+    vec2 _e11 = airlight_two_sum(point.y, -(origin_3.y), key_7);
+    vec2 _e15 = airlight_two_sum(point.z, -(origin_3.z), key_7);
+    vec3 hi_7 = vec3(_e7.x, _e11.x, _e15.x);
+    bool _e24 = airlight_in_exact_range(hi_7);
+    if (_e24) {
+        bool _e27 = airlight_in_exact_range(dir_2);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    bool _e29 = local_128;
+    return AirlightExactDifference(hi_7, vec3(_e7.y, _e11.y, _e15.y), _e29);
+}
+
+AirlightCanonical airlight_refined(AirlightScene s_21, AirlightCanonical plain) {
     AirlightCanonical out_2 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     bool local_129 = false;
     vec3 a_18 = vec3(0.0, 0.0, 1.0);
-    uint key_8 = uint((s_21.flags > 1u));
-    vec2 _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_8);
-    vec2 _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_8);
-    vec2 _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_8);
-    vec3 hi_7 = vec3(_e11.x, _e17.x, _e23.x);
-    vec3 lo_8 = vec3(_e11.y, _e17.y, _e23.y);
-    vec3 dir_3 = s_21.dir;
-    bool _e33 = airlight_in_exact_range(hi_7);
-    if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir_3);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    bool _e41 = local_128;
-    if (_e41) {
+    uint key_9 = uint((s_21.flags > 1u));
+    vec3 dir_4 = s_21.dir;
+    AirlightExactDifference _e9 = airlight_exact_difference(s_21.light_position, s_21.origin, dir_4, key_9);
+    if (!(_e9.in_range)) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_7.y, dir_3.z, hi_7.z, dir_3.y, key_8);
-    float _e59 = airlight_diff_of_products(hi_7.z, dir_3.x, hi_7.x, dir_3.z, key_8);
-    float _e72 = airlight_diff_of_products(hi_7.x, dir_3.y, hi_7.y, dir_3.x, key_8);
-    vec3 w_6 = vec3((_e46 + ((lo_8.y * dir_3.z) - (lo_8.z * dir_3.y))), (_e59 + ((lo_8.z * dir_3.x) - (lo_8.x * dir_3.z))), (_e72 + ((lo_8.x * dir_3.y) - (lo_8.y * dir_3.x))));
-    bool _e82 = airlight_vec_finite(w_6);
-    if (!(_e82)) {
+    vec3 hi_8 = _e9.hi;
+    vec3 lo_8 = _e9.lo;
+    float _e18 = airlight_diff_of_products(hi_8.y, dir_4.z, hi_8.z, dir_4.y, key_9);
+    float _e31 = airlight_diff_of_products(hi_8.z, dir_4.x, hi_8.x, dir_4.z, key_9);
+    float _e44 = airlight_diff_of_products(hi_8.x, dir_4.y, hi_8.y, dir_4.x, key_9);
+    vec3 w_6 = vec3((_e18 + ((lo_8.y * dir_4.z) - (lo_8.z * dir_4.y))), (_e31 + ((lo_8.z * dir_4.x) - (lo_8.x * dir_4.z))), (_e44 + ((lo_8.x * dir_4.y) - (lo_8.y * dir_4.x))));
+    bool _e54 = airlight_vec_finite(w_6);
+    if (!(_e54)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_6);
-    if ((_e85 == 0.0)) {
+    float _e57 = airlight_safe_length(w_6);
+    if ((_e57 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e92 = out_2;
-        return _e92;
+        AirlightCanonical _e64 = out_2;
+        return _e64;
     }
-    float _e93 = airlight_safe_length(dir_3);
-    float h_7 = (_e85 / _e93);
-    bool _e95 = airlight_is_finite(h_7);
-    if (_e95) {
+    float _e65 = airlight_safe_length(dir_4);
+    float h_7 = (_e57 / _e65);
+    bool _e67 = airlight_is_finite(h_7);
+    if (_e67) {
         local_129 = (h_7 > 0.0);
     } else {
         local_129 = false;
     }
-    bool _e101 = local_129;
-    if (!(_e101)) {
+    bool _e73 = local_129;
+    if (!(_e73)) {
         return plain;
     }
     if ((s_21.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        vec3 _e112 = airlight_normalize(s_21.light_axis);
-        a_18 = _e112;
+        vec3 _e84 = airlight_normalize(s_21.light_axis);
+        a_18 = _e84;
     }
-    vec3 _e113 = airlight_normalize(dir_3);
-    vec3 _e114 = airlight_normalize(w_6);
-    vec3 n_6 = -(cross(_e113, _e114));
+    vec3 _e85 = airlight_normalize(dir_4);
+    vec3 _e86 = airlight_normalize(w_6);
+    vec3 n_6 = -(cross(_e85, _e86));
     out_2.h = h_7;
-    vec3 _e119 = a_18;
-    out_2.d_c = dot(n_6, _e119);
-    AirlightCanonical _e121 = out_2;
-    return _e121;
+    vec3 _e91 = a_18;
+    out_2.d_c = dot(n_6, _e91);
+    AirlightCanonical _e93 = out_2;
+    return _e93;
 }
 
-AirlightSphereFoot airlight_sphere_foot(vec3 o, vec3 dir_2, vec3 c_6, float radius_2, uint key_7) {
+AirlightSphereFoot airlight_sphere_foot(vec3 o, vec3 dir_3, vec3 c_6, float radius_2, uint key_8) {
     bool local_130 = false;
     bool local_131 = false;
-    bool local_132 = false;
-    vec3 _e5 = airlight_normalize(dir_2);
+    vec3 _e5 = airlight_normalize(dir_3);
     vec3 oc = (o - c_6);
     vec3 to_centre = -((oc - (dot(oc, _e5) * _e5)));
     float _e11 = airlight_safe_length(to_centre);
     AirlightSphereFoot plain_2 = AirlightSphereFoot(to_centre, _e11, (_e11 - radius_2));
-    vec2 _e17 = airlight_two_sum(c_6.x, -(o.x), key_7);
-    vec2 _e21 = airlight_two_sum(c_6.y, -(o.y), key_7);
-    vec2 _e25 = airlight_two_sum(c_6.z, -(o.z), key_7);
-    vec3 hi_8 = vec3(_e17.x, _e21.x, _e25.x);
-    vec3 lo_9 = vec3(_e17.y, _e21.y, _e25.y);
-    bool _e34 = airlight_in_exact_range(hi_8);
-    if (!(!(_e34))) {
-        bool _e39 = airlight_in_exact_range(dir_2);
-        local_130 = !(_e39);
-    } else {
-        local_130 = true;
-    }
-    bool _e42 = local_130;
-    if (_e42) {
+    AirlightExactDifference _e14 = airlight_exact_difference(c_6, o, dir_3, key_8);
+    if (!(_e14.in_range)) {
         return plain_2;
     }
-    vec2 _e49 = airlight_cross_pair(hi_8.y, hi_8.z, lo_9.y, lo_9.z, dir_2.y, dir_2.z, key_7);
-    vec2 _e56 = airlight_cross_pair(hi_8.z, hi_8.x, lo_9.z, lo_9.x, dir_2.z, dir_2.x, key_7);
-    vec2 _e63 = airlight_cross_pair(hi_8.x, hi_8.y, lo_9.x, lo_9.y, dir_2.x, dir_2.y, key_7);
-    vec2 _e64 = airlight_pair_mul(_e49, _e49, key_7);
-    vec2 _e65 = airlight_pair_mul(_e56, _e56, key_7);
-    vec2 _e66 = airlight_pair_add(_e64, _e65, key_7);
-    vec2 _e67 = airlight_pair_mul(_e63, _e63, key_7);
-    vec2 _e68 = airlight_pair_add(_e66, _e67, key_7);
-    vec2 dx = vec2(dir_2.x, 0.0);
-    vec2 dy_2 = vec2(dir_2.y, 0.0);
-    vec2 dz = vec2(dir_2.z, 0.0);
-    vec2 _e78 = airlight_pair_mul(dx, dx, key_7);
-    vec2 _e79 = airlight_pair_mul(dy_2, dy_2, key_7);
-    vec2 _e80 = airlight_pair_add(_e78, _e79, key_7);
-    vec2 _e81 = airlight_pair_mul(dz, dz, key_7);
-    vec2 _e82 = airlight_pair_add(_e80, _e81, key_7);
-    float w_len = sqrt(_e68.x);
-    float scale_5 = sqrt(_e82.x);
+    vec3 hi_9 = _e14.hi;
+    vec3 lo_9 = _e14.lo;
+    vec2 _e25 = airlight_cross_pair(hi_9.y, hi_9.z, lo_9.y, lo_9.z, dir_3.y, dir_3.z, key_8);
+    vec2 _e32 = airlight_cross_pair(hi_9.z, hi_9.x, lo_9.z, lo_9.x, dir_3.z, dir_3.x, key_8);
+    vec2 _e39 = airlight_cross_pair(hi_9.x, hi_9.y, lo_9.x, lo_9.y, dir_3.x, dir_3.y, key_8);
+    vec2 _e40 = airlight_pair_mul(_e25, _e25, key_8);
+    vec2 _e41 = airlight_pair_mul(_e32, _e32, key_8);
+    vec2 _e42 = airlight_pair_add(_e40, _e41, key_8);
+    vec2 _e43 = airlight_pair_mul(_e39, _e39, key_8);
+    vec2 _e44 = airlight_pair_add(_e42, _e43, key_8);
+    vec2 dx = vec2(dir_3.x, 0.0);
+    vec2 dy_2 = vec2(dir_3.y, 0.0);
+    vec2 dz = vec2(dir_3.z, 0.0);
+    vec2 _e54 = airlight_pair_mul(dx, dx, key_8);
+    vec2 _e55 = airlight_pair_mul(dy_2, dy_2, key_8);
+    vec2 _e56 = airlight_pair_add(_e54, _e55, key_8);
+    vec2 _e57 = airlight_pair_mul(dz, dz, key_8);
+    vec2 _e58 = airlight_pair_add(_e56, _e57, key_8);
+    float w_len = sqrt(_e44.x);
+    float scale_5 = sqrt(_e58.x);
     float h_8 = (w_len / scale_5);
-    vec2 _e88 = airlight_two_product(radius_2, radius_2, key_7);
-    vec2 _e89 = airlight_pair_mul(_e88, _e82, key_7);
-    vec2 _e91 = airlight_pair_add(_e68, -(_e89), key_7);
-    float miss = (_e91.x / ((w_len + (radius_2 * scale_5)) * scale_5));
+    vec2 _e64 = airlight_two_product(radius_2, radius_2, key_8);
+    vec2 _e65 = airlight_pair_mul(_e64, _e58, key_8);
+    vec2 _e67 = airlight_pair_add(_e44, -(_e65), key_8);
+    float miss = (_e67.x / ((w_len + (radius_2 * scale_5)) * scale_5));
     if ((h_8 > 0.0)) {
-        bool _e101 = airlight_is_finite(h_8);
-        local_131 = _e101;
+        bool _e77 = airlight_is_finite(h_8);
+        local_130 = _e77;
+    } else {
+        local_130 = false;
+    }
+    bool _e79 = local_130;
+    if (_e79) {
+        bool _e82 = airlight_is_finite(miss);
+        local_131 = _e82;
     } else {
         local_131 = false;
     }
-    bool _e103 = local_131;
-    if (_e103) {
-        bool _e106 = airlight_is_finite(miss);
-        local_132 = _e106;
-    } else {
-        local_132 = false;
-    }
-    bool _e108 = local_132;
-    if (!(_e108)) {
+    bool _e84 = local_131;
+    if (!(_e84)) {
         return plain_2;
     }
-    vec3 _e114 = airlight_normalize(vec3(_e49.x, _e56.x, _e63.x));
-    vec3 m_11 = cross(_e5, _e114);
+    vec3 _e90 = airlight_normalize(vec3(_e25.x, _e32.x, _e39.x));
+    vec3 m_11 = cross(_e5, _e90);
     return AirlightSphereFoot((h_8 * m_11), h_8, miss);
 }
 
@@ -5374,7 +5374,7 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[4]) 
     AirlightEdges e_1 = AirlightEdges(float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u);
     uint n_1 = 0u;
     uint i_18 = 0u;
-    bool local_133 = false;
+    bool local_132 = false;
     cuts_1 = unsorted;
     float _e5 = cuts_1[1];
     float _e7 = cuts_1[0];
@@ -5437,11 +5437,11 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[4]) 
             if ((_e72 > _e76)) {
                 uint _e80 = i_18;
                 float _e82 = cuts_1[_e80];
-                local_133 = (_e82 < hi_3);
+                local_132 = (_e82 < hi_3);
             } else {
-                local_133 = false;
+                local_132 = false;
             }
-            bool _e85 = local_133;
+            bool _e85 = local_132;
             if (_e85) {
                 uint _e86 = n_1;
                 n_1 = (_e86 + 1u);
@@ -5462,9 +5462,9 @@ AirlightEdges airlight_edges_between(float lo_3, float hi_3, float unsorted[4]) 
 
 AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2, uint max_panels, float tolerance) {
     uint tries = 0u;
+    bool local_133 = false;
     bool local_134 = false;
     bool local_135 = false;
-    bool local_136 = false;
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
@@ -5481,18 +5481,18 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             AirlightPanelList _e8 = list_1;
             AirlightListScan _e9 = airlight_list_scan(_e8, count_2);
             if (!(!((_e9.errors > (tolerance * abs(_e9.total)))))) {
-                local_134 = (count_2 == max_panels);
+                local_133 = (count_2 == max_panels);
+            } else {
+                local_133 = true;
+            }
+            bool _e21 = local_133;
+            if (!(_e21)) {
+                bool _e26 = airlight_is_finite(_e9.total);
+                local_134 = !(_e26);
             } else {
                 local_134 = true;
             }
-            bool _e21 = local_134;
-            if (!(_e21)) {
-                bool _e26 = airlight_is_finite(_e9.total);
-                local_135 = !(_e26);
-            } else {
-                local_135 = true;
-            }
-            bool _e29 = local_135;
+            bool _e29 = local_134;
             if (_e29) {
                 break;
             }
@@ -5500,11 +5500,11 @@ AirlightSplit airlight_split_worst(inout AirlightPanelList list_1, uint count_2,
             vec4 _e32 = airlight_list_get(_e30, _e9.worst);
             float mid_2 = (0.5 * (_e32.x + _e32.y));
             if ((mid_2 > _e32.x)) {
-                local_136 = (mid_2 < _e32.y);
+                local_135 = (mid_2 < _e32.y);
             } else {
-                local_136 = false;
+                local_135 = false;
             }
-            bool _e45 = local_136;
+            bool _e45 = local_135;
             if (!(_e45)) {
                 airlight_list_set(list_1, _e9.worst, vec4(_e32.xyz, 0.0));
                 continue;
@@ -5624,32 +5624,32 @@ AirlightOuter airlight_outer_point(AirlightScene s_24, uint max_panels_2) {
 
 AirlightOuter airlight_surface(AirlightScene s_25) {
     AirlightOuter g_22 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
-    bool local_137 = false;
+    bool local_136 = false;
     vec3 u_1 = vec3(0.0);
     float cuts_2[11] = float[11](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     uint i_19 = 1u;
     uint j_4 = 0u;
-    bool local_138 = false;
+    bool local_137 = false;
     uint k_5 = 0u;
     uint i_20 = 0u;
-    bool local_139 = false;
+    bool local_138 = false;
     uint i_21 = 0u;
     uint i_22 = 1u;
+    bool local_139 = false;
     bool local_140 = false;
     bool local_141 = false;
     bool local_142 = false;
     bool local_143 = false;
-    bool local_144 = false;
     AirlightOuter _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     vec3 to_light_1 = (s_25.light_position - s_25.origin);
     float _e7 = airlight_safe_length(to_light_1);
     if (!((s_25.intensity == 0.0))) {
-        local_137 = (s_25.sigma_s == 0.0);
+        local_136 = (s_25.sigma_s == 0.0);
     } else {
-        local_137 = true;
+        local_136 = true;
     }
-    bool _e18 = local_137;
+    bool _e18 = local_136;
     if (_e18) {
         g_22.outcome = 1u;
         AirlightOuter _e21 = g_22;
@@ -5766,11 +5766,11 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
                 if ((_e232 > 0u)) {
                     uint _e237 = j_4;
                     float _e241 = cuts_2[(_e237 - 1u)];
-                    local_138 = (_e241 > c_17);
+                    local_137 = (_e241 > c_17);
                 } else {
-                    local_138 = false;
+                    local_137 = false;
                 }
-                bool _e244 = local_138;
+                bool _e244 = local_137;
                 if (_e244) {
                 } else {
                     break;
@@ -5788,7 +5788,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
             cuts_2[_e255] = c_17;
         }
     }
-    float hi_9 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2));
+    float hi_10 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first_2));
     g_22.gamma[0] = ((cos_a_1 < 0.0) ? first_2 : 0.0);
     bool loop_init_25 = true;
     while(true) {
@@ -5810,11 +5810,11 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[_e289];
-                local_139 = (_e291 < hi_9);
+                local_138 = (_e291 < hi_10);
             } else {
-                local_139 = false;
+                local_138 = false;
             }
-            bool _e294 = local_139;
+            bool _e294 = local_138;
             if (_e294) {
                 uint _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5826,7 +5826,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
         }
     }
     uint _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_9;
+    g_22.gamma[(_e308 + 1u)] = hi_10;
     uint _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     bool loop_init_26 = true;
@@ -5866,35 +5866,35 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
                 uint _e339 = i_22;
                 float e_13 = g_22.gamma[_e339];
                 if (!((e_13 == kinks[0]))) {
-                    local_140 = (e_13 == kinks[1]);
+                    local_139 = (e_13 == kinks[1]);
+                } else {
+                    local_139 = true;
+                }
+                bool _e350 = local_139;
+                if (!(_e350)) {
+                    local_140 = (e_13 == kinks[2]);
                 } else {
                     local_140 = true;
                 }
-                bool _e350 = local_140;
-                if (!(_e350)) {
-                    local_141 = (e_13 == kinks[2]);
+                bool _e357 = local_140;
+                if (!(_e357)) {
+                    local_141 = (e_13 == kinks[3]);
                 } else {
                     local_141 = true;
                 }
-                bool _e357 = local_141;
-                if (!(_e357)) {
-                    local_142 = (e_13 == kinks[3]);
+                bool _e364 = local_141;
+                if (!(_e364)) {
+                    local_142 = (e_13 == kinks[4]);
                 } else {
                     local_142 = true;
                 }
-                bool _e364 = local_142;
-                if (!(_e364)) {
-                    local_143 = (e_13 == kinks[4]);
+                bool _e371 = local_142;
+                if (!(_e371)) {
+                    local_143 = (e_13 == kinks[5]);
                 } else {
                     local_143 = true;
                 }
-                bool _e371 = local_143;
-                if (!(_e371)) {
-                    local_144 = (e_13 == kinks[5]);
-                } else {
-                    local_144 = true;
-                }
-                bool kink = local_144;
+                bool kink = local_143;
                 uint _e380 = g_22.smooth_edges;
                 uint _e382 = i_22;
                 g_22.smooth_edges = (_e380 | (kink ? 0u : (1u << _e382)));
@@ -5906,7 +5906,7 @@ AirlightOuter airlight_surface(AirlightScene s_25) {
 }
 
 float airlight_lobe_at(AirlightLobe q_1, float x_19) {
-    bool local_145 = false;
+    bool local_144 = false;
     vec2 _e4 = airlight_cos_sin((0.5 * x_19));
     float s2_ = (_e4.y * _e4.y);
     float cos_x = (1.0 - (2.0 * s2_));
@@ -5916,11 +5916,11 @@ float airlight_lobe_at(AirlightLobe q_1, float x_19) {
     float clip = (max((even + odd_1), 0.0) + max((even - odd_1), 0.0));
     float fall = (q_1.k * s2_);
     if ((fall < 1.0)) {
-        local_145 = (clip > 0.0);
+        local_144 = (clip > 0.0);
     } else {
-        local_145 = false;
+        local_144 = false;
     }
-    bool _e43 = local_145;
+    bool _e43 = local_144;
     if (_e43) {
         float _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5939,7 +5939,7 @@ float airlight_lobe_node(AirlightLobe q_2, float lo_5, float w_1, float u_2, boo
 
 float airlight_arc_end(float x_20, float cut) {
     float end_1 = 0.0;
-    bool local_146 = false;
+    bool local_145 = false;
     end_1 = x_20;
     float _e3 = end_1;
     if ((_e3 > AIRLIGHT_PI)) {
@@ -5955,11 +5955,11 @@ float airlight_arc_end(float x_20, float cut) {
     float _e16 = end_1;
     if ((_e16 > -(cut))) {
         float _e21 = end_1;
-        local_146 = (_e21 < cut);
+        local_145 = (_e21 < cut);
     } else {
-        local_146 = false;
+        local_145 = false;
     }
-    bool _e24 = local_146;
+    bool _e24 = local_145;
     return (_e24 ? _e15 : 0.0);
 }
 
@@ -5968,17 +5968,17 @@ vec2[5] airlight_lobe_rule() {
 }
 
 float airlight_lobe_piece(AirlightLobe q_3, float lo_6, float hi_5, bool smoothstep_1) {
-    bool local_147 = false;
+    bool local_146 = false;
     float sum_5 = 0.0;
     uint k_6 = 0u;
     float w_7 = (hi_5 - lo_6);
     if (!(!((w_7 > 0.0)))) {
         float _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5 * w_7)));
-        local_147 = !((_e14 > 0.0));
+        local_146 = !((_e14 > 0.0));
     } else {
-        local_147 = true;
+        local_146 = true;
     }
-    bool _e19 = local_147;
+    bool _e19 = local_146;
     if (_e19) {
         return 0.0;
     }
@@ -6074,30 +6074,30 @@ float airlight_lobe_arcs(AirlightOuter g_23, vec2 cs, float gamma, float psi_n, 
 
 AirlightOuter airlight_outer(AirlightScene s_26) {
     AirlightOuter g_24 = AirlightOuter(vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, 0u, vec3(0.0), vec3(0.0), 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0u);
+    bool local_147 = false;
     bool local_148 = false;
-    bool local_149 = false;
     float s_star = 0.0;
     float t_star = 0.0;
+    bool local_149 = false;
     bool local_150 = false;
     bool local_151 = false;
     bool local_152 = false;
     bool local_153 = false;
     bool local_154 = false;
-    bool local_155 = false;
     float scale = 0.0;
+    bool local_155 = false;
     bool local_156 = false;
     bool local_157 = false;
     bool local_158 = false;
     bool local_159 = false;
-    bool local_160 = false;
     float cuts_3[4] = float[4](3.4028235e38, 3.4028235e38, 3.4028235e38, 3.4028235e38);
     float at[3] = float[3](0.0, 0.0, 0.0);
-    bool local_161 = false;
+    bool local_160 = false;
     uint i_24 = 0u;
+    bool local_161 = false;
     bool local_162 = false;
     bool local_163 = false;
     bool local_164 = false;
-    bool local_165 = false;
     if ((s_26.surface_kind != AIRLIGHT_SURFACE_NONE)) {
         AirlightOuter _e4 = airlight_surface(s_26);
         return _e4;
@@ -6111,17 +6111,17 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     vec3 ab_1 = (s_26.light_end - s_26.light_position);
     float _e15 = airlight_safe_length(ab_1);
     if (!(!((_e15 > 0.0)))) {
-        local_148 = (s_26.intensity == 0.0);
+        local_147 = (s_26.intensity == 0.0);
+    } else {
+        local_147 = true;
+    }
+    bool _e26 = local_147;
+    if (!(_e26)) {
+        local_148 = (s_26.sigma_s == 0.0);
     } else {
         local_148 = true;
     }
-    bool _e26 = local_148;
-    if (!(_e26)) {
-        local_149 = (s_26.sigma_s == 0.0);
-    } else {
-        local_149 = true;
-    }
-    bool _e34 = local_149;
+    bool _e34 = local_148;
     if (_e34) {
         g_24.outcome = 1u;
         AirlightOuter _e37 = g_24;
@@ -6145,94 +6145,94 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
     float _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_14 * _e70)));
     float sin_a_1 = sqrt(max(sin2_, 0.0));
     if ((_e73 == 0.0)) {
-        local_150 = (sin_a_1 > 0.0);
+        local_149 = (sin_a_1 > 0.0);
+    } else {
+        local_149 = false;
+    }
+    bool _e84 = local_149;
+    if (_e84) {
+        float _e87 = s_star;
+        local_150 = (_e87 >= 0.0);
     } else {
         local_150 = false;
     }
-    bool _e84 = local_150;
-    if (_e84) {
-        float _e87 = s_star;
-        local_151 = (_e87 >= 0.0);
+    bool _e91 = local_150;
+    if (_e91) {
+        float _e94 = s_star;
+        local_151 = (_e94 <= _e15);
     } else {
         local_151 = false;
     }
-    bool _e91 = local_151;
-    if (_e91) {
-        float _e94 = s_star;
-        local_152 = (_e94 <= _e15);
+    bool _e97 = local_151;
+    if (_e97) {
+        float _e101 = t_star;
+        local_152 = (s_26.t_min <= _e101);
     } else {
         local_152 = false;
     }
-    bool _e97 = local_152;
-    if (_e97) {
-        float _e101 = t_star;
-        local_153 = (s_26.t_min <= _e101);
-    } else {
-        local_153 = false;
-    }
-    bool _e104 = local_153;
+    bool _e104 = local_152;
     if (_e104) {
         if (!(infinite_5)) {
             float _e110 = t_star;
-            local_155 = (_e110 <= s_26.t_max);
+            local_154 = (_e110 <= s_26.t_max);
         } else {
-            local_155 = true;
+            local_154 = true;
         }
-        bool _e114 = local_155;
-        local_154 = _e114;
+        bool _e114 = local_154;
+        local_153 = _e114;
     } else {
-        local_154 = false;
+        local_153 = false;
     }
-    bool _e116 = local_154;
+    bool _e116 = local_153;
     if (_e116) {
         g_24.outcome = 2u;
         AirlightOuter _e119 = g_24;
         return _e119;
     }
     if ((sin_a_1 > 0.0)) {
-        local_156 = (_e73 > 0.0);
+        local_155 = (_e73 > 0.0);
     } else {
-        local_156 = false;
+        local_155 = false;
     }
-    bool _e129 = local_156;
+    bool _e129 = local_155;
     if (_e129) {
         scale = (_e73 / sin_a_1);
     }
     float _e131 = s_star;
     if ((_e131 > -(_e15))) {
         float _e136 = s_star;
-        local_157 = (_e136 < (_e15 + _e15));
+        local_156 = (_e136 < (_e15 + _e15));
+    } else {
+        local_156 = false;
+    }
+    bool _e140 = local_156;
+    if (_e140) {
+        float _e143 = scale;
+        local_157 = (_e143 < _e15);
     } else {
         local_157 = false;
     }
-    bool _e140 = local_157;
-    if (_e140) {
-        float _e143 = scale;
-        local_158 = (_e143 < _e15);
-    } else {
-        local_158 = false;
-    }
-    bool near_2 = local_158;
+    bool near_2 = local_157;
     if (near_2) {
         float _e149 = s_star;
         float _e151 = scale;
         float _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         bool _e154 = airlight_is_finite(_e153);
-        local_159 = _e154;
+        local_158 = _e154;
     } else {
-        local_159 = false;
+        local_158 = false;
     }
-    bool _e156 = local_159;
+    bool _e156 = local_158;
     if (_e156) {
         float _e159 = s_star;
         float _e160 = scale;
         float _e162 = airlight_asinh((_e159 / _e160));
         bool _e163 = airlight_is_finite(_e162);
-        local_160 = _e163;
+        local_159 = _e163;
     } else {
-        local_160 = false;
+        local_159 = false;
     }
-    bool _e165 = local_160;
+    bool _e165 = local_159;
     if (!(_e165)) {
         scale = 0.0;
     }
@@ -6249,11 +6249,11 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
         float _e195 = airlight_to_w(_e193, 0.0);
         AirlightOuter _e197 = g_24;
         float _e198 = airlight_to_w(_e197, _e15);
-        local_161 = (min(-(_e195), _e198) < 0.5);
+        local_160 = (min(-(_e195), _e198) < 0.5);
     } else {
-        local_161 = false;
+        local_160 = false;
     }
-    bool sliver = local_161;
+    bool sliver = local_160;
     bool loop_init_30 = true;
     while(true) {
         if (!loop_init_30) {
@@ -6269,31 +6269,31 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
         {
             uint _e209 = i_24;
             if ((_e209 == 0u)) {
-                local_162 = sliver;
+                local_161 = sliver;
             } else {
-                local_162 = false;
+                local_161 = false;
             }
-            bool _e215 = local_162;
+            bool _e215 = local_161;
             if (_e215) {
                 continue;
             }
             if ((cos_a_2 == 0.0)) {
                 uint _e220 = i_24;
-                local_163 = (_e220 > 0u);
+                local_162 = (_e220 > 0u);
             } else {
-                local_163 = false;
+                local_162 = false;
             }
-            bool _e224 = local_163;
+            bool _e224 = local_162;
             if (_e224) {
                 continue;
             }
             uint _e225 = i_24;
             if ((_e225 == 2u)) {
-                local_164 = infinite_5;
+                local_163 = infinite_5;
             } else {
-                local_164 = false;
+                local_163 = false;
             }
-            bool _e231 = local_164;
+            bool _e231 = local_163;
             if (_e231) {
                 continue;
             }
@@ -6302,11 +6302,11 @@ AirlightOuter airlight_outer(AirlightScene s_26) {
             if ((_e234 > 0.0)) {
                 uint _e239 = i_24;
                 float _e241 = at[_e239];
-                local_165 = (_e241 < _e15);
+                local_164 = (_e241 < _e15);
             } else {
-                local_165 = false;
+                local_164 = false;
             }
-            bool _e244 = local_165;
+            bool _e244 = local_164;
             if (_e244) {
                 uint _e245 = i_24;
                 AirlightOuter _e247 = g_24;
@@ -6337,12 +6337,12 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
     AirlightScene p = AirlightScene(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0u, 0u, 0u, 0.0, 0u, 0.0, vec3(0.0), 0u, vec3(0.0));
     float gamma_1 = 0.0;
     float jacobian = 0.0;
+    bool local_165 = false;
     bool local_166 = false;
     bool local_167 = false;
     bool local_168 = false;
     bool local_169 = false;
     bool local_170 = false;
-    bool local_171 = false;
     float weight = 0.0;
     float at_1 = 0.0;
     float ds = 1.0;
@@ -6363,51 +6363,51 @@ AirlightNode airlight_outer_node(AirlightScene s_27, AirlightOuter g_25, float x
         jacobian = (((w_8 * 6.0) * t_9) * u_9);
         float _e58 = gamma_1;
         if (smooth_b) {
+            local_165 = !(smooth_a);
+        } else {
+            local_165 = false;
+        }
+        bool _e66 = local_165;
+        gamma_1 = (_e66 ? (a_46 + ((w_8 * t_9) * t_9)) : _e58);
+        float _e68 = jacobian;
+        if (smooth_b) {
             local_166 = !(smooth_a);
         } else {
             local_166 = false;
         }
-        bool _e66 = local_166;
-        gamma_1 = (_e66 ? (a_46 + ((w_8 * t_9) * t_9)) : _e58);
-        float _e68 = jacobian;
-        if (smooth_b) {
-            local_167 = !(smooth_a);
+        bool _e75 = local_166;
+        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
+        float _e77 = gamma_1;
+        if (smooth_a) {
+            local_167 = !(smooth_b);
         } else {
             local_167 = false;
         }
-        bool _e75 = local_167;
-        jacobian = (_e75 ? (w_8 * (t_9 + t_9)) : _e68);
-        float _e77 = gamma_1;
+        bool _e85 = local_167;
+        gamma_1 = (_e85 ? (b_23 - ((w_8 * u_9) * u_9)) : _e77);
+        float _e87 = jacobian;
         if (smooth_a) {
             local_168 = !(smooth_b);
         } else {
             local_168 = false;
         }
-        bool _e85 = local_168;
-        gamma_1 = (_e85 ? (b_23 - ((w_8 * u_9) * u_9)) : _e77);
-        float _e87 = jacobian;
+        bool _e94 = local_168;
+        jacobian = (_e94 ? (w_8 * (u_9 + u_9)) : _e87);
+        float _e96 = gamma_1;
         if (smooth_a) {
-            local_169 = !(smooth_b);
+            local_169 = smooth_b;
         } else {
             local_169 = false;
         }
-        bool _e94 = local_169;
-        jacobian = (_e94 ? (w_8 * (u_9 + u_9)) : _e87);
-        float _e96 = gamma_1;
+        bool _e102 = local_169;
+        gamma_1 = (_e102 ? (a_46 + (w_8 * t_9)) : _e96);
+        float _e104 = jacobian;
         if (smooth_a) {
             local_170 = smooth_b;
         } else {
             local_170 = false;
         }
-        bool _e102 = local_170;
-        gamma_1 = (_e102 ? (a_46 + (w_8 * t_9)) : _e96);
-        float _e104 = jacobian;
-        if (smooth_a) {
-            local_171 = smooth_b;
-        } else {
-            local_171 = false;
-        }
-        bool _e108 = local_171;
+        bool _e108 = local_170;
         jacobian = (_e108 ? w_8 : _e104);
         float _e110 = jacobian;
         if (!((_e110 > 0.0))) {
@@ -6638,14 +6638,14 @@ float airlight_emission_scale(AirlightScene s_31) {
 }
 
 vec2 airlight_graded_range(AirlightScene s_32, float top) {
-    bool local_172 = false;
+    bool local_171 = false;
     float _e2 = airlight_emission_scale(s_32);
     if ((_e2 > 0.0)) {
-        local_172 = (_e2 < top);
+        local_171 = (_e2 < top);
     } else {
-        local_172 = false;
+        local_171 = false;
     }
-    bool _e9 = local_172;
+    bool _e9 = local_171;
     if (_e9) {
         float _e11 = airlight_atan((top / _e2));
         return vec2(_e11, _e2);
@@ -6672,13 +6672,13 @@ bool airlight_far_from_edge(AirlightScene s_34, float depth, float z_9) {
 }
 
 vec2 airlight_lobe(float sign_1, float gap_3) {
-    bool local_173 = false;
+    bool local_172 = false;
     if (!(!((gap_3 > 0.0)))) {
-        local_173 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_172 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_173 = true;
+        local_172 = true;
     }
-    bool _e12 = local_173;
+    bool _e12 = local_172;
     if (_e12) {
         return vec2(1.0, 0.0);
     }
@@ -6723,14 +6723,14 @@ vec4 airlight_phase_lobes(AirlightScene s_35) {
 
 vec3 airlight_basis_e1_(vec3 n_2) {
     vec3 u_3 = vec3(0.0, 0.0, 1.0);
-    bool local_174 = false;
+    bool local_173 = false;
     vec3 m_12 = abs(n_2);
     if ((m_12.x <= m_12.y)) {
-        local_174 = (m_12.x <= m_12.z);
+        local_173 = (m_12.x <= m_12.z);
     } else {
-        local_174 = false;
+        local_173 = false;
     }
-    bool _e16 = local_174;
+    bool _e16 = local_173;
     if (_e16) {
         u_3 = vec3(1.0, 0.0, 0.0);
     } else {
@@ -6810,7 +6810,7 @@ AirlightOutline airlight_outline_at(AirlightScene s_36, AirlightArea a_21, vec3 
 
 AirlightArea airlight_area(AirlightScene s_37) {
     AirlightArea a_22 = AirlightArea(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, vec4(0.0), false, AirlightSphereFoot(vec3(0.0), 0.0, 0.0));
-    bool local_175 = false;
+    bool local_174 = false;
     uint cut_count = 0u;
     float cut0_ = 0.0;
     float cut1_ = 0.0;
@@ -6820,29 +6820,29 @@ AirlightArea airlight_area(AirlightScene s_37) {
     float size = 0.0;
     float t_end_1 = 0.0;
     bool end_infinite = false;
-    bool local_176 = false;
+    bool local_175 = false;
     float cuts_4[4] = float[4](0.0, 0.0, 0.0, 0.0);
     float scale_1 = 1.0;
+    bool local_176 = false;
     bool local_177 = false;
     bool local_178 = false;
     bool local_179 = false;
-    bool local_180 = false;
     uint i_28 = 0u;
     uint i_29 = 0u;
+    bool local_180 = false;
     bool local_181 = false;
     bool local_182 = false;
-    bool local_183 = false;
     vec3 zero_1 = vec3(0.0);
     vec4 _e21 = airlight_phase_lobes(s_37);
     a_22 = AirlightArea(zero_1, s_37.light_position, zero_1, zero_1, zero_1, zero_1, zero_1, zero_1, s_37.light_param_a, 0.0, 0.0, float[13](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0u, 0u, _e21, false, AirlightSphereFoot(zero_1, 0.0, 0.0));
     bool _e31 = airlight_isotropic_phase(s_37);
     a_22.isotropic = _e31;
     if (!((s_37.intensity == 0.0))) {
-        local_175 = (s_37.sigma_s == 0.0);
+        local_174 = (s_37.sigma_s == 0.0);
     } else {
-        local_175 = true;
+        local_174 = true;
     }
-    bool _e42 = local_175;
+    bool _e42 = local_174;
     if (_e42) {
         a_22.outcome = 1u;
         AirlightArea _e45 = a_22;
@@ -6862,10 +6862,10 @@ AirlightArea airlight_area(AirlightScene s_37) {
         float _e80 = a_22.radius;
         float _e82 = a_22.radius;
         float k_12 = (dot(oc_1, oc_1) - (_e80 * _e82));
-        uint key_9 = uint((s_37.flags > 1u));
+        uint key_10 = uint((s_37.flags > 1u));
         vec3 _e92 = a_22.c;
         float _e94 = a_22.radius;
-        AirlightSphereFoot _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_9);
+        AirlightSphereFoot _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_10);
         a_22.foot = _e95;
         float _e98 = a_22.foot.miss;
         float _e102 = a_22.foot.h;
@@ -6949,11 +6949,11 @@ AirlightArea airlight_area(AirlightScene s_37) {
         float reach_1 = (((t0_2 + _e241) + _e243) - (-15.942385 / s_37.sigma_t));
         if (!(infinite_6)) {
             float _e252 = t_end_1;
-            local_176 = (reach_1 < _e252);
+            local_175 = (reach_1 < _e252);
         } else {
-            local_176 = true;
+            local_175 = true;
         }
-        bool _e255 = local_176;
+        bool _e255 = local_175;
         if (_e255) {
             t_end_1 = reach_1;
             end_infinite = false;
@@ -6989,33 +6989,33 @@ AirlightArea airlight_area(AirlightScene s_37) {
     uint _e306 = cut_count;
     if ((_e306 == 1u)) {
         float _e311 = scale_1;
-        local_177 = (_e311 < 1.0);
+        local_176 = (_e311 < 1.0);
+    } else {
+        local_176 = false;
+    }
+    bool _e315 = local_176;
+    if (_e315) {
+        float _e318 = cut0_;
+        local_177 = (_e318 >= t0_2);
     } else {
         local_177 = false;
     }
-    bool _e315 = local_177;
-    if (_e315) {
-        float _e318 = cut0_;
-        local_178 = (_e318 >= t0_2);
-    } else {
-        local_178 = false;
-    }
-    bool _e321 = local_178;
+    bool _e321 = local_177;
     if (_e321) {
         bool _e324 = end_infinite;
         if (!(_e324)) {
             float _e328 = cut0_;
             float _e329 = t_end_1;
-            local_180 = (_e328 <= _e329);
+            local_179 = (_e328 <= _e329);
         } else {
-            local_180 = true;
+            local_179 = true;
         }
-        bool _e332 = local_180;
-        local_179 = _e332;
+        bool _e332 = local_179;
+        local_178 = _e332;
     } else {
-        local_179 = false;
+        local_178 = false;
     }
-    bool _e334 = local_179;
+    bool _e334 = local_178;
     if (_e334) {
         bool loop_init_32 = true;
         while(true) {
@@ -7063,25 +7063,25 @@ AirlightArea airlight_area(AirlightScene s_37) {
             cuts_4[_e369] = _e259;
             bool _e371 = airlight_is_finite(t_10);
             if (_e371) {
-                local_181 = (t_10 >= t0_2);
+                local_180 = (t_10 >= t0_2);
             } else {
-                local_181 = false;
+                local_180 = false;
             }
-            bool _e376 = local_181;
+            bool _e376 = local_180;
             if (_e376) {
                 bool _e379 = end_infinite;
                 if (!(_e379)) {
                     float _e383 = t_end_1;
-                    local_183 = (t_10 <= _e383);
+                    local_182 = (t_10 <= _e383);
                 } else {
-                    local_183 = true;
+                    local_182 = true;
                 }
-                bool _e386 = local_183;
-                local_182 = _e386;
+                bool _e386 = local_182;
+                local_181 = _e386;
             } else {
-                local_182 = false;
+                local_181 = false;
             }
-            bool _e388 = local_182;
+            bool _e388 = local_181;
             if (_e388) {
                 uint _e389 = i_29;
                 AirlightArea _e391 = a_22;
@@ -7181,7 +7181,7 @@ vec3 airlight_outline_boundary(AirlightOutline o_2, vec2 q_5) {
     vec2 nearest_1 = vec2(0.0);
     bool inside = true;
     uint i_30 = 0u;
-    bool local_184 = false;
+    bool local_183 = false;
     if ((o_2.radius > 0.0)) {
         vec2 qc = (q_5 - o_2.corners[0]);
         float dq = sqrt(((qc.x * qc.x) + (qc.y * qc.y)));
@@ -7207,11 +7207,11 @@ vec3 airlight_outline_boundary(AirlightOutline o_2, vec2 q_5) {
             vec2 b_25 = o_2.corners[((_e43 + 1u) % 4u)];
             bool _e49 = inside;
             if (_e49) {
-                local_184 = ((((q_5.x - a_48.x) * (b_25.y - a_48.y)) - ((q_5.y - a_48.y) * (b_25.x - a_48.x))) <= 0.0);
+                local_183 = ((((q_5.x - a_48.x) * (b_25.y - a_48.y)) - ((q_5.y - a_48.y) * (b_25.x - a_48.x))) <= 0.0);
             } else {
-                local_184 = false;
+                local_183 = false;
             }
-            bool _e70 = local_184;
+            bool _e70 = local_183;
             inside = _e70;
             vec2 _e71 = airlight_edge_nearest(a_48, b_25, q_5);
             float dd = (((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y)));
@@ -7234,9 +7234,9 @@ vec2 airlight_outline_nearest(AirlightOutline o_3, vec2 q_6) {
 
 AirlightFlatLobe airlight_flat_lobe(AirlightArea a_25, float z_11, AirlightOutline o_4, vec2 centre_1, float size_1) {
     uint j_6 = 0u;
+    bool local_184 = false;
     bool local_185 = false;
     bool local_186 = false;
-    bool local_187 = false;
     float _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     bool loop_init_35 = true;
     while(true) {
@@ -7255,17 +7255,17 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_25, float z_11, AirlightOutli
             vec2 lobe_5 = ((_e20 == 1u) ? a_25.lobes.zw : a_25.lobes.xy);
             vec3 p_5 = (lobe_5.x * a_25.dirs);
             if ((lobe_5.y > 0.0)) {
-                local_185 = (p_5.z < 0.0);
+                local_184 = (p_5.z < 0.0);
+            } else {
+                local_184 = false;
+            }
+            bool _e36 = local_184;
+            if (_e36) {
+                local_185 = (lobe_5.y < (_e10 + _e10));
             } else {
                 local_185 = false;
             }
-            bool _e36 = local_185;
-            if (_e36) {
-                local_186 = (lobe_5.y < (_e10 + _e10));
-            } else {
-                local_186 = false;
-            }
-            bool _e43 = local_186;
+            bool _e43 = local_185;
             if (_e43) {
                 float l_4 = (z_11 / -(p_5.z));
                 vec2 q_14 = (l_4 * p_5.xy);
@@ -7275,11 +7275,11 @@ AirlightFlatLobe airlight_flat_lobe(AirlightArea a_25, float z_11, AirlightOutli
                 bool on_emitter = (length((_e49 - q_14)) <= (1.9073486e-6 * ((length(q_14) + size_1) + z_11)));
                 if (!(on_emitter)) {
                     float _e69 = airlight_acos(cos_1);
-                    local_187 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                    local_186 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                 } else {
-                    local_187 = true;
+                    local_186 = true;
                 }
-                bool _e75 = local_187;
+                bool _e75 = local_186;
                 if (_e75) {
                     return AirlightFlatLobe(p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter);
                 }
@@ -7335,11 +7335,11 @@ vec2 airlight_outline_chord(AirlightOutline o_5, vec2 q_8, vec2 e_6) {
         float t_11 = (-(b_26) - (((floatBitsToUint(b_26) & 2147483648u) != 0u) ? -(root_3) : root_3));
         float r1_2 = (t_11 / a_49);
         float r2_4 = (k_13 / t_11);
-        float hi_10 = max(r1_2, r2_4);
-        if (!((hi_10 > 0.0))) {
+        float hi_11 = max(r1_2, r2_4);
+        if (!((hi_11 > 0.0))) {
             return vec2(0.0);
         }
-        return vec2(max(min(r1_2, r2_4), 0.0), hi_10);
+        return vec2(max(min(r1_2, r2_4), 0.0), hi_11);
     }
     vec2 _e70 = chord_1;
     vec2 _e75 = airlight_clip(_e70, o_5.corners[0], o_5.corners[1], q_8, e_6);
@@ -7489,8 +7489,8 @@ AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
     float farthest = 0.0;
     AirlightChordEdges edges_1 = AirlightChordEdges(vec2(0.0), vec2(0.0), 0.0);
     uint i_32 = 0u;
+    bool local_187 = false;
     bool local_188 = false;
-    bool local_189 = false;
     bool loop_init_36 = true;
     while(true) {
         if (!loop_init_36) {
@@ -7515,17 +7515,17 @@ AirlightChordEdges airlight_chord_edges(vec2 y_6[4], vec2 e_8) {
             float r_14 = (((a_51.x * d_5.y) - (a_51.y * d_5.x)) / den_1);
             float along_2 = (((a_51.x * e_8.y) - (a_51.y * e_8.x)) / den_1);
             if ((r_14 > 0.0)) {
-                local_188 = (along_2 >= 0.0);
+                local_187 = (along_2 >= 0.0);
+            } else {
+                local_187 = false;
+            }
+            bool _e59 = local_187;
+            if (_e59) {
+                local_188 = (along_2 <= 1.0);
             } else {
                 local_188 = false;
             }
-            bool _e59 = local_188;
-            if (_e59) {
-                local_189 = (along_2 <= 1.0);
-            } else {
-                local_189 = false;
-            }
-            bool _e65 = local_189;
+            bool _e65 = local_188;
             if (_e65) {
                 vec2 n_8 = (vec2(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
                 float h_11 = dot(n_8, a_51);
@@ -7570,13 +7570,13 @@ vec3 airlight_mercator_node(float ua, float ub, uint i_33) {
     float _e5 = airlight_mercator_cut((i_33 / 12u));
     float lo_10 = max(ua, _e5);
     float _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
-    float hi_11 = min(ub, _e11);
-    if (!((lo_10 < hi_11))) {
+    float hi_12 = min(ub, _e11);
+    if (!((lo_10 < hi_12))) {
         return vec3(0.0);
     }
     vec2 _e19 = airlight_triangle_rule((i_33 % 12u));
-    float hw_5 = (0.5 * (hi_11 - lo_10));
-    float x_37 = ((0.5 * (lo_10 + hi_11)) + (hw_5 * _e19.x));
+    float hw_5 = (0.5 * (hi_12 - lo_10));
+    float x_37 = ((0.5 * (lo_10 + hi_12)) + (hw_5 * _e19.x));
     float e_17 = exp(-(abs(x_37)));
     float sech = ((2.0 * e_17) / (1.0 + (e_17 * e_17)));
     return vec3(sech, ((sign(x_37) * (1.0 - (e_17 * e_17))) / (1.0 + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
@@ -7632,7 +7632,7 @@ float airlight_flat_about_lobe(AirlightScene s_43, float z_15, AirlightOutline o
     uint j_10 = 0u;
     vec2 merc_first = vec2(0.0);
     vec2 merc_last = vec2(0.0);
-    bool local_190 = false;
+    bool local_189 = false;
     AirlightEdgeRule rule_4 = AirlightEdgeRule(0.0, vec2(0.0), 0.0, 0.0, 0.0);
     uint j_11 = 0u;
     vec3 _e5 = airlight_basis_e1_(lobe_4.p);
@@ -7906,11 +7906,11 @@ float airlight_flat_about_lobe(AirlightScene s_43, float z_15, AirlightOutline o
             float exit_h = _e453.exit_h;
             float width_6 = (lobe_4.l * lobe_4.scale);
             if ((exit_h > 0.0)) {
-                local_190 = (exit_h < width_6);
+                local_189 = (exit_h < width_6);
             } else {
-                local_190 = false;
+                local_189 = false;
             }
-            bool _e499 = local_190;
+            bool _e499 = local_189;
             if (_e499) {
                 rule_4 = AirlightEdgeRule(exit_h, vec2(-(_e453.exit.y), _e453.exit.x), sqrt(((exit_h * exit_h) + (width_6 * width_6))), 0.0, 0.0);
                 vec2 _e514 = merc_first;
@@ -7969,8 +7969,8 @@ float airlight_flat_about_lobe(AirlightScene s_43, float z_15, AirlightOutline o
 }
 
 float airlight_disc(AirlightScene s_44, AirlightArea a_28, vec3 x_26) {
+    bool local_190 = false;
     bool local_191 = false;
-    bool local_192 = false;
     vec2 u_7 = vec2(0.0);
     AirlightAbove above_3 = AirlightAbove(0.0, vec2(0.0), 0.0);
     float sum_11 = 0.0;
@@ -7996,16 +7996,16 @@ float airlight_disc(AirlightScene s_44, AirlightArea a_28, vec3 x_26) {
     if ((rf <= radius_3)) {
         if (!((rf == 0.0))) {
             bool _e44 = airlight_far_from_edge(s_44, (radius_3 - rf), z_20);
-            local_192 = _e44;
+            local_191 = _e44;
         } else {
-            local_192 = true;
+            local_191 = true;
         }
-        bool _e46 = local_192;
-        local_191 = _e46;
+        bool _e46 = local_191;
+        local_190 = _e46;
     } else {
-        local_191 = false;
+        local_190 = false;
     }
-    bool inside_2 = local_191;
+    bool inside_2 = local_190;
     AirlightAbove _e54 = airlight_above(z_20, vec2(0.0));
     above_3 = _e54;
     if (!(inside_2)) {
@@ -8056,7 +8056,7 @@ float airlight_disc(AirlightScene s_44, AirlightArea a_28, vec3 x_26) {
 
 float airlight_parallelogram(AirlightScene s_45, AirlightArea a_29, vec3 x_27) {
     vec2 q_9 = vec2(0.0);
-    bool local_193 = false;
+    bool local_192 = false;
     float sum_12 = 0.0;
     uint i_41 = 0u;
     uint j_12 = 0u;
@@ -8081,11 +8081,11 @@ float airlight_parallelogram(AirlightScene s_45, AirlightArea a_29, vec3 x_27) {
     q_9 = (_e76.xy + foot_1);
     if ((_e76.z > 0.0)) {
         bool _e89 = airlight_far_from_edge(s_45, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_193 = _e89;
+        local_192 = _e89;
     } else {
-        local_193 = false;
+        local_192 = false;
     }
-    bool _e91 = local_193;
+    bool _e91 = local_192;
     if (_e91) {
         q_9 = foot_1;
     }
@@ -8395,16 +8395,16 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
     uint i_43 = 0u;
     float big_b_1 = 0.0;
     float wpsi = 0.0;
+    bool local_193 = false;
     bool local_194 = false;
-    bool local_195 = false;
     float mid = 0.0;
-    bool local_196 = false;
+    bool local_195 = false;
     float lo_7 = 0.0;
     float hi_6 = 0.0;
-    bool local_197 = false;
+    bool local_196 = false;
     float around = 0.0;
     uint k_9 = 0u;
-    bool local_198 = false;
+    bool local_197 = false;
     vec3 p_6 = (sign_3 * a_31.d);
     vec3 _e8 = airlight_basis_e1_(p_6);
     vec3 v_11 = cross(p_6, _e8);
@@ -8446,11 +8446,11 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
             wpsi = 0.0;
             if (beside) {
                 uint _e87 = i_43;
-                local_194 = (_e87 < 84u);
+                local_193 = (_e87 < 84u);
             } else {
-                local_194 = false;
+                local_193 = false;
             }
-            bool _e91 = local_194;
+            bool _e91 = local_193;
             if (_e91) {
                 float _e94 = airlight_mercator_cut(7u);
                 uint _e95 = i_43;
@@ -8469,11 +8469,11 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
                 } else {
                     if (inside_3) {
                         uint _e115 = i_43;
-                        local_195 = (_e115 < 8u);
+                        local_194 = (_e115 < 8u);
                     } else {
-                        local_195 = false;
+                        local_194 = false;
                     }
-                    bool _e119 = local_195;
+                    bool _e119 = local_194;
                     if (_e119) {
                         if (!((eps > 0.0))) {
                             continue;
@@ -8507,11 +8507,11 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
             mid = _e167;
             if (beside) {
                 float _e171 = mid;
-                local_196 = (_e171 < 0.0);
+                local_195 = (_e171 < 0.0);
             } else {
-                local_196 = false;
+                local_195 = false;
             }
-            bool _e175 = local_196;
+            bool _e175 = local_195;
             if (_e175) {
                 float _e176 = mid;
                 mid = (_e176 + 6.2831855);
@@ -8537,11 +8537,11 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
                 float _e210 = hi_6;
                 float _e211 = lo_7;
                 float _e214 = lo_7;
-                local_197 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
+                local_196 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
             } else {
-                local_197 = false;
+                local_196 = false;
             }
-            bool cut_3 = local_197;
+            bool cut_3 = local_196;
             around = 0.0;
             k_9 = 0u;
             bool loop_init_52 = true;
@@ -8563,11 +8563,11 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
                     float _e234 = hi_6;
                     if (cut_3) {
                         uint _e237 = k_9;
-                        local_198 = (_e237 == 0u);
+                        local_197 = (_e237 == 0u);
                     } else {
-                        local_198 = false;
+                        local_197 = false;
                     }
-                    bool _e241 = local_198;
+                    bool _e241 = local_197;
                     float to_1 = (_e241 ? tail_1 : _e234);
                     vec2 _e243 = airlight_graded_from(scale_3, start_5, to_1);
                     float graded_10 = _e243.x;
@@ -8651,17 +8651,17 @@ float airlight_sphere_about_lobe(AirlightScene s_49, AirlightArea a_31, Airlight
 
 float airlight_sphere(AirlightScene s_50, AirlightArea a_32, float along) {
     float gap_4 = 0.0;
-    bool local_199 = false;
+    bool local_198 = false;
     float chosen = 0.0;
     float sign_4 = 1.0;
     float cos_p_2 = 0.0;
     uint j_13 = 0u;
+    bool local_199 = false;
     bool local_200 = false;
     bool local_201 = false;
     bool local_202 = false;
     bool local_203 = false;
     bool local_204 = false;
-    bool local_205 = false;
     vec3 v_12 = (a_32.foot.to_centre - (along * a_32.d));
     float _e8 = airlight_safe_length(v_12);
     gap_4 = (((a_32.foot.miss * (a_32.foot.h + a_32.radius)) + (along * along)) / (_e8 + a_32.radius));
@@ -8674,11 +8674,11 @@ float airlight_sphere(AirlightScene s_50, AirlightArea a_32, float along) {
     if ((_e27 > 0.0)) {
         float _e32 = gap_4;
         bool _e33 = airlight_is_finite(_e32);
-        local_199 = _e33;
+        local_198 = _e33;
     } else {
-        local_199 = false;
+        local_198 = false;
     }
-    bool _e35 = local_199;
+    bool _e35 = local_198;
     if (!(_e35)) {
         return 0.0;
     }
@@ -8707,42 +8707,42 @@ float airlight_sphere(AirlightScene s_50, AirlightArea a_32, float along) {
             float c_26 = dot(cap_4.a, (lobe_6.x * a_32.d));
             float _e78 = chosen;
             if ((_e78 == 0.0)) {
-                local_200 = (lobe_6.y > 0.0);
+                local_199 = (lobe_6.y > 0.0);
+            } else {
+                local_199 = false;
+            }
+            bool _e87 = local_199;
+            if (_e87) {
+                local_200 = (lobe_6.y < (_e49 + _e49));
             } else {
                 local_200 = false;
             }
-            bool _e87 = local_200;
-            if (_e87) {
-                local_201 = (lobe_6.y < (_e49 + _e49));
+            bool _e94 = local_200;
+            if (_e94) {
+                if (!(!((c_26 < -(cap_4.cos_a))))) {
+                    local_202 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
+                } else {
+                    local_202 = true;
+                }
+                bool _e108 = local_202;
+                local_201 = _e108;
             } else {
                 local_201 = false;
             }
-            bool _e94 = local_201;
-            if (_e94) {
-                if (!(!((c_26 < -(cap_4.cos_a))))) {
-                    local_203 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_203 = true;
-                }
-                bool _e108 = local_203;
-                local_202 = _e108;
-            } else {
-                local_202 = false;
-            }
-            bool _e110 = local_202;
+            bool _e110 = local_201;
             if (_e110) {
                 if (!((c_26 > cap_4.cos_a))) {
                     float _e118 = airlight_acos(c_26);
-                    local_205 = ((_e118 - _e49) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e49));
+                    local_204 = ((_e118 - _e49) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e49));
                 } else {
-                    local_205 = true;
+                    local_204 = true;
                 }
-                bool _e126 = local_205;
-                local_204 = _e126;
+                bool _e126 = local_204;
+                local_203 = _e126;
             } else {
-                local_204 = false;
+                local_203 = false;
             }
-            bool _e128 = local_204;
+            bool _e128 = local_203;
             if (_e128) {
                 chosen = lobe_6.y;
                 sign_4 = lobe_6.x;
@@ -8794,7 +8794,7 @@ AirlightResult airlight_area_light(AirlightScene s_53) {
     float k_10 = 0.0;
     float gauss_1 = 0.0;
     uint j_14 = 0u;
-    bool local_206 = false;
+    bool local_205 = false;
     AirlightArea _e1 = airlight_area(s_53);
     if ((_e1.outcome == 1u)) {
         return AirlightResult(0.0, 0u);
@@ -8844,11 +8844,11 @@ AirlightResult airlight_area_light(AirlightScene s_53) {
                     uint _e59 = j_14;
                     if (((_e59 & 1u) == 0u)) {
                         uint _e66 = j_14;
-                        local_206 = (_e66 < 14u);
+                        local_205 = (_e66 < 14u);
                     } else {
-                        local_206 = false;
+                        local_205 = false;
                     }
-                    bool _e70 = local_206;
+                    bool _e70 = local_205;
                     float x_38 = (_e70 ? (c_27 - (hw_9 * node_4.x)) : (c_27 + (hw_9 * node_4.x)));
                     float _e72 = airlight_area_node(s_53, _e1, x_38);
                     float _e73 = k_10;
@@ -8880,21 +8880,21 @@ AirlightResult airlight_area_light(AirlightScene s_53) {
 }
 
 AirlightResult airlight_in_scatter_area(AirlightScene s_54) {
+    bool local_206 = false;
     bool local_207 = false;
-    bool local_208 = false;
     bool _e1 = airlight_valid(s_54);
     if (!(!(_e1))) {
-        local_207 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_206 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_206 = true;
+    }
+    bool _e10 = local_206;
+    if (!(_e10)) {
+        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_207 = true;
     }
-    bool _e10 = local_207;
-    if (!(_e10)) {
-        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_208 = true;
-    }
-    bool _e18 = local_208;
+    bool _e18 = local_207;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8903,14 +8903,14 @@ AirlightResult airlight_in_scatter_area(AirlightScene s_54) {
 }
 
 AirlightResult airlight_overflowed(AirlightResult r_5) {
-    bool local_209 = false;
+    bool local_208 = false;
     bool _e2 = airlight_is_finite(r_5.in_scatter);
     if (!(!(_e2))) {
-        local_209 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_208 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_209 = true;
+        local_208 = true;
     }
-    bool _e11 = local_209;
+    bool _e11 = local_208;
     if (_e11) {
         return AirlightResult(3.4028235e38, 2u);
     }
@@ -8919,17 +8919,17 @@ AirlightResult airlight_overflowed(AirlightResult r_5) {
 
 AirlightResult airlight_node_integral(AirlightNode n_5) {
     AirlightResult r_6 = AirlightResult(0.0, 0u);
-    bool local_210 = false;
+    bool local_209 = false;
     AirlightCanonical g_29 = AirlightCanonical(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, false);
     AirlightScene p_7 = n_5.scene;
     bool _e7 = airlight_vec_finite(p_7.light_position);
     if (_e7) {
         bool _e11 = airlight_vec_finite(p_7.dir);
-        local_210 = _e11;
+        local_209 = _e11;
     } else {
-        local_210 = false;
+        local_209 = false;
     }
-    bool _e13 = local_210;
+    bool _e13 = local_209;
     if (_e13) {
         g_29 = n_5.canonical;
         if (!(n_5.exact)) {
@@ -8953,21 +8953,21 @@ AirlightResult airlight_point_integral(AirlightScene p_1) {
 }
 
 AirlightResult airlight_in_scatter_point(AirlightScene s_55) {
+    bool local_210 = false;
     bool local_211 = false;
-    bool local_212 = false;
     bool _e1 = airlight_valid(s_55);
     if (!(!(_e1))) {
-        local_211 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_210 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_210 = true;
+    }
+    bool _e10 = local_210;
+    if (!(_e10)) {
+        local_211 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_211 = true;
     }
-    bool _e10 = local_211;
-    if (!(_e10)) {
-        local_212 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_212 = true;
-    }
-    bool _e18 = local_212;
+    bool _e18 = local_211;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -8976,21 +8976,21 @@ AirlightResult airlight_in_scatter_point(AirlightScene s_55) {
 }
 
 AirlightResult airlight_in_scatter_route(AirlightScene s_56) {
+    bool local_212 = false;
     bool local_213 = false;
-    bool local_214 = false;
     bool _e1 = airlight_valid(s_56);
     if (!(!(_e1))) {
-        local_213 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_212 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_212 = true;
+    }
+    bool _e10 = local_212;
+    if (!(_e10)) {
+        local_213 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_213 = true;
     }
-    bool _e10 = local_213;
-    if (!(_e10)) {
-        local_214 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_214 = true;
-    }
-    bool _e18 = local_214;
+    bool _e18 = local_213;
     if (_e18) {
         return AirlightResult(0.0, 1u);
     }
@@ -9018,9 +9018,9 @@ AirlightResult airlight_in_scatter(AirlightScene s_57) {
     float k_11 = 0.0;
     float gauss_2 = 0.0;
     uint j_15 = 0u;
-    bool local_215 = false;
+    bool local_214 = false;
     float f = 0.0;
-    bool local_216 = false;
+    bool local_215 = false;
     bool _e1 = airlight_valid(s_57);
     if (!(_e1)) {
         return AirlightResult(0.0, 1u);
@@ -9079,11 +9079,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_57) {
                     uint _e74 = j_15;
                     if (((_e74 & 1u) == 0u)) {
                         uint _e81 = j_15;
-                        local_215 = (_e81 < 6u);
+                        local_214 = (_e81 < 6u);
                     } else {
-                        local_215 = false;
+                        local_214 = false;
                     }
-                    bool _e85 = local_215;
+                    bool _e85 = local_214;
                     float w_11 = (_e85 ? (c_28 - (hw_10 * node_5.x)) : (c_28 + (hw_10 * node_5.x)));
                     AirlightNode _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0.0;
@@ -9093,11 +9093,11 @@ AirlightResult airlight_in_scatter(AirlightScene s_57) {
                             return _e93;
                         }
                         if ((s_57.light_shape == AIRLIGHT_SHAPE_POINT)) {
-                            local_216 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_215 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_216 = false;
+                            local_215 = false;
                         }
-                        bool _e106 = local_216;
+                        bool _e106 = local_215;
                         if (_e106) {
                             return _e93;
                         }

@@ -59,6 +59,13 @@ struct AirlightPanel {
     float f_max;
 };
 
+struct AirlightExactDifference {
+    float3 hi;
+    int _pad1_0;
+    float3 lo;
+    bool in_range;
+};
+
 struct AirlightPanelList {
     float4 panel_a;
     float4 panel_b;
@@ -4594,75 +4601,92 @@ bool airlight_in_exact_range(float3 v_4)
     return _e23;
 }
 
-AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain)
+AirlightExactDifference ConstructAirlightExactDifference(float3 arg0, float3 arg1, bool arg2) {
+    AirlightExactDifference ret = (AirlightExactDifference)0;
+    ret.hi = arg0;
+    ret.lo = arg1;
+    ret.in_range = arg2;
+    return ret;
+}
+
+AirlightExactDifference airlight_exact_difference(float3 point_, float3 origin_1, float3 dir, uint key_4)
 {
     bool local_128 = (bool)0;
+
+    const float2 _e7 = airlight_two_sum(point_.x, -(origin_1.x), key_4);
+    const float2 _e11 = airlight_two_sum(point_.y, -(origin_1.y), key_4);
+    const float2 _e15 = airlight_two_sum(point_.z, -(origin_1.z), key_4);
+    float3 hi_6 = float3(_e7.x, _e11.x, _e15.x);
+    const bool _e24 = airlight_in_exact_range(hi_6);
+    if (_e24) {
+        const bool _e27 = airlight_in_exact_range(dir);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    bool _e29 = local_128;
+    const AirlightExactDifference airlightexactdifference = ConstructAirlightExactDifference(hi_6, float3(_e7.y, _e11.y, _e15.y), _e29);
+    return airlightexactdifference;
+}
+
+AirlightCanonical airlight_refined(AirlightScene s_19, AirlightCanonical plain)
+{
     AirlightCanonical out_2 = (AirlightCanonical)0;
     bool local_129 = (bool)0;
     float3 a_16 = float3(0.0, 0.0, 1.0);
 
-    uint key_4 = uint((s_19.flags > 1u));
-    const float2 _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
-    const float2 _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
-    const float2 _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
-    float3 hi_6 = float3(_e11.x, _e17.x, _e23.x);
-    float3 lo_7 = float3(_e11.y, _e17.y, _e23.y);
-    float3 dir = s_19.dir;
-    const bool _e33 = airlight_in_exact_range(hi_6);
-    if (!(!(_e33))) {
-        const bool _e38 = airlight_in_exact_range(dir);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    bool _e41 = local_128;
-    if (_e41) {
+    uint key_5 = uint((s_19.flags > 1u));
+    float3 dir_1 = s_19.dir;
+    const AirlightExactDifference _e9 = airlight_exact_difference(s_19.light_position, s_19.origin, dir_1, key_5);
+    if (!(_e9.in_range)) {
         const AirlightCanonical airlightcanonical_1 = plain;
         return airlightcanonical_1;
     }
-    const float _e46 = airlight_diff_of_products(hi_6.y, dir.z, hi_6.z, dir.y, key_4);
-    const float _e59 = airlight_diff_of_products(hi_6.z, dir.x, hi_6.x, dir.z, key_4);
-    const float _e72 = airlight_diff_of_products(hi_6.x, dir.y, hi_6.y, dir.x, key_4);
-    float3 w_5 = float3((_e46 + ((lo_7.y * dir.z) - (lo_7.z * dir.y))), (_e59 + ((lo_7.z * dir.x) - (lo_7.x * dir.z))), (_e72 + ((lo_7.x * dir.y) - (lo_7.y * dir.x))));
-    const bool _e82 = airlight_vec_finite(w_5);
-    if (!(_e82)) {
+    float3 hi_7 = _e9.hi;
+    float3 lo_7 = _e9.lo;
+    const float _e18 = airlight_diff_of_products(hi_7.y, dir_1.z, hi_7.z, dir_1.y, key_5);
+    const float _e31 = airlight_diff_of_products(hi_7.z, dir_1.x, hi_7.x, dir_1.z, key_5);
+    const float _e44 = airlight_diff_of_products(hi_7.x, dir_1.y, hi_7.y, dir_1.x, key_5);
+    float3 w_5 = float3((_e18 + ((lo_7.y * dir_1.z) - (lo_7.z * dir_1.y))), (_e31 + ((lo_7.z * dir_1.x) - (lo_7.x * dir_1.z))), (_e44 + ((lo_7.x * dir_1.y) - (lo_7.y * dir_1.x))));
+    const bool _e54 = airlight_vec_finite(w_5);
+    if (!(_e54)) {
         const AirlightCanonical airlightcanonical_2 = plain;
         return airlightcanonical_2;
     }
     out_2 = plain;
-    const float _e85 = airlight_safe_length(w_5);
-    if ((_e85 == 0.0)) {
+    const float _e57 = airlight_safe_length(w_5);
+    if ((_e57 == 0.0)) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e92 = out_2;
-        const AirlightCanonical airlightcanonical_3 = _e92;
+        AirlightCanonical _e64 = out_2;
+        const AirlightCanonical airlightcanonical_3 = _e64;
         return airlightcanonical_3;
     }
-    const float _e93 = airlight_safe_length(dir);
-    float h_7 = (_e85 / _e93);
-    const bool _e95 = airlight_is_finite(h_7);
-    if (_e95) {
+    const float _e65 = airlight_safe_length(dir_1);
+    float h_7 = (_e57 / _e65);
+    const bool _e67 = airlight_is_finite(h_7);
+    if (_e67) {
         local_129 = (h_7 > 0.0);
     } else {
         local_129 = false;
     }
-    bool _e101 = local_129;
-    if (!(_e101)) {
+    bool _e73 = local_129;
+    if (!(_e73)) {
         const AirlightCanonical airlightcanonical_4 = plain;
         return airlightcanonical_4;
     }
     if ((s_19.light_kind != AIRLIGHT_LIGHT_OMNI)) {
-        const float3 _e112 = airlight_normalize(s_19.light_axis);
-        a_16 = _e112;
+        const float3 _e84 = airlight_normalize(s_19.light_axis);
+        a_16 = _e84;
     }
-    const float3 _e113 = airlight_normalize(dir);
-    const float3 _e114 = airlight_normalize(w_5);
-    float3 n_3 = -(cross(_e113, _e114));
+    const float3 _e85 = airlight_normalize(dir_1);
+    const float3 _e86 = airlight_normalize(w_5);
+    float3 n_3 = -(cross(_e85, _e86));
     out_2.h = h_7;
-    float3 _e119 = a_16;
-    out_2.d_c = dot(n_3, _e119);
-    AirlightCanonical _e121 = out_2;
-    const AirlightCanonical airlightcanonical_5 = _e121;
+    float3 _e91 = a_16;
+    out_2.d_c = dot(n_3, _e91);
+    AirlightCanonical _e93 = out_2;
+    const AirlightCanonical airlightcanonical_5 = _e93;
     return airlightcanonical_5;
 }
 
@@ -5546,7 +5570,7 @@ AirlightOuter airlight_surface(AirlightScene s_23)
             cuts_2[min(uint(_e255), 10u)] = c_15;
         }
     }
-    float hi_7 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
+    float hi_8 = ((cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first));
     g_20.gamma[0] = ((cos_a_1 < 0.0) ? first : 0.0);
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_25 = true;
@@ -5571,7 +5595,7 @@ AirlightOuter airlight_surface(AirlightScene s_23)
             if ((_e281 > _e285)) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2[min(uint(_e289), 10u)];
-                local_136 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_8);
             } else {
                 local_136 = false;
             }
@@ -5587,7 +5611,7 @@ AirlightOuter airlight_surface(AirlightScene s_23)
         }
     }
     uint _e308 = k_4;
-    g_20.gamma[min(uint((_e308 + 1u)), 12u)] = hi_7;
+    g_20.gamma[min(uint((_e308 + 1u)), 12u)] = hi_8;
     uint _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);

@@ -85,6 +85,12 @@ struct airlight_type_11 {
 struct airlight_type_12 {
     float inner[4];
 };
+struct AirlightExactDifference {
+    metal::float3 hi;
+    metal::packed_float3 lo;
+    bool in_range;
+    char _pad3[3];
+};
 struct airlight_type_13 {
     metal::float3 inner[4];
 };
@@ -4687,72 +4693,83 @@ bool airlight_in_exact_range(
     return _e23;
 }
 
+AirlightExactDifference airlight_exact_difference(
+    metal::float3 point,
+    metal::float3 origin_1,
+    metal::float3 dir,
+    uint key_4
+) {
+    bool local_128 = {};
+    metal::float2 _e7 = airlight_two_sum(point.x, -(origin_1.x), key_4);
+    metal::float2 _e11 = airlight_two_sum(point.y, -(origin_1.y), key_4);
+    metal::float2 _e15 = airlight_two_sum(point.z, -(origin_1.z), key_4);
+    metal::float3 hi_6 = metal::float3(_e7.x, _e11.x, _e15.x);
+    bool _e24 = airlight_in_exact_range(hi_6);
+    if (_e24) {
+        bool _e27 = airlight_in_exact_range(dir);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    bool _e29 = local_128;
+    return AirlightExactDifference {hi_6, metal::float3(_e7.y, _e11.y, _e15.y), _e29};
+}
+
 AirlightCanonical airlight_refined(
     AirlightScene s_19,
     AirlightCanonical plain
 ) {
-    bool local_128 = {};
     AirlightCanonical out_2 = {};
     bool local_129 = {};
     metal::float3 a_16 = metal::float3(0.0, 0.0, 1.0);
-    uint key_4 = static_cast<uint>(s_19.flags > 1u);
-    metal::float2 _e11 = airlight_two_sum(s_19.light_position[0], -(s_19.origin[0]), key_4);
-    metal::float2 _e17 = airlight_two_sum(s_19.light_position[1], -(s_19.origin[1]), key_4);
-    metal::float2 _e23 = airlight_two_sum(s_19.light_position[2], -(s_19.origin[2]), key_4);
-    metal::float3 hi_6 = metal::float3(_e11.x, _e17.x, _e23.x);
-    metal::float3 lo_7 = metal::float3(_e11.y, _e17.y, _e23.y);
-    metal::float3 dir = s_19.dir;
-    bool _e33 = airlight_in_exact_range(hi_6);
-    if (!(!(_e33))) {
-        bool _e38 = airlight_in_exact_range(dir);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    bool _e41 = local_128;
-    if (_e41) {
+    uint key_5 = static_cast<uint>(s_19.flags > 1u);
+    metal::float3 dir_1 = s_19.dir;
+    AirlightExactDifference _e9 = airlight_exact_difference(s_19.light_position, s_19.origin, dir_1, key_5);
+    if (!(_e9.in_range)) {
         return plain;
     }
-    float _e46 = airlight_diff_of_products(hi_6.y, s_19.dir[2], hi_6.z, s_19.dir[1], key_4);
-    float _e59 = airlight_diff_of_products(hi_6.z, s_19.dir[0], hi_6.x, s_19.dir[2], key_4);
-    float _e72 = airlight_diff_of_products(hi_6.x, s_19.dir[1], hi_6.y, s_19.dir[0], key_4);
-    metal::float3 w_5 = metal::float3(_e46 + ((lo_7.y * s_19.dir[2]) - (lo_7.z * s_19.dir[1])), _e59 + ((lo_7.z * s_19.dir[0]) - (lo_7.x * s_19.dir[2])), _e72 + ((lo_7.x * s_19.dir[1]) - (lo_7.y * s_19.dir[0])));
-    bool _e82 = airlight_vec_finite(w_5);
-    if (!(_e82)) {
+    metal::float3 hi_7 = _e9.hi;
+    metal::float3 lo_7 = _e9.lo;
+    float _e18 = airlight_diff_of_products(_e9.hi.y, s_19.dir[2], _e9.hi.z, s_19.dir[1], key_5);
+    float _e31 = airlight_diff_of_products(_e9.hi.z, s_19.dir[0], _e9.hi.x, s_19.dir[2], key_5);
+    float _e44 = airlight_diff_of_products(_e9.hi.x, s_19.dir[1], _e9.hi.y, s_19.dir[0], key_5);
+    metal::float3 w_5 = metal::float3(_e18 + ((_e9.lo[1] * s_19.dir[2]) - (_e9.lo[2] * s_19.dir[1])), _e31 + ((_e9.lo[2] * s_19.dir[0]) - (_e9.lo[0] * s_19.dir[2])), _e44 + ((_e9.lo[0] * s_19.dir[1]) - (_e9.lo[1] * s_19.dir[0])));
+    bool _e54 = airlight_vec_finite(w_5);
+    if (!(_e54)) {
         return plain;
     }
     out_2 = plain;
-    float _e85 = airlight_safe_length(w_5);
-    if (_e85 == 0.0) {
+    float _e57 = airlight_safe_length(w_5);
+    if (_e57 == 0.0) {
         out_2.h = 0.0;
         out_2.d_c = 0.0;
-        AirlightCanonical _e92 = out_2;
-        return _e92;
+        AirlightCanonical _e64 = out_2;
+        return _e64;
     }
-    float _e93 = airlight_safe_length(dir);
-    float h_7 = _e85 / _e93;
-    bool _e95 = airlight_is_finite(h_7);
-    if (_e95) {
+    float _e65 = airlight_safe_length(dir_1);
+    float h_7 = _e57 / _e65;
+    bool _e67 = airlight_is_finite(h_7);
+    if (_e67) {
         local_129 = h_7 > 0.0;
     } else {
         local_129 = false;
     }
-    bool _e101 = local_129;
-    if (!(_e101)) {
+    bool _e73 = local_129;
+    if (!(_e73)) {
         return plain;
     }
     if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        metal::float3 _e112 = airlight_normalize(s_19.light_axis);
-        a_16 = _e112;
+        metal::float3 _e84 = airlight_normalize(s_19.light_axis);
+        a_16 = _e84;
     }
-    metal::float3 _e113 = airlight_normalize(dir);
-    metal::float3 _e114 = airlight_normalize(w_5);
-    metal::float3 n_3 = -(metal::cross(_e113, _e114));
+    metal::float3 _e85 = airlight_normalize(dir_1);
+    metal::float3 _e86 = airlight_normalize(w_5);
+    metal::float3 n_3 = -(metal::cross(_e85, _e86));
     out_2.h = h_7;
-    metal::float3 _e119 = a_16;
-    out_2.d_c = metal::dot(n_3, _e119);
-    AirlightCanonical _e121 = out_2;
-    return _e121;
+    metal::float3 _e91 = a_16;
+    out_2.d_c = metal::dot(n_3, _e91);
+    AirlightCanonical _e93 = out_2;
+    return _e93;
 }
 
 airlight_type_13 airlight_kronrod_rule(
@@ -5551,7 +5568,7 @@ AirlightOuter airlight_surface(
             cuts_2.inner[metal::min(unsigned(_e255), 10u)] = c_15;
         }
     }
-    float hi_7 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
+    float hi_8 = (cos_a_1 < 0.0) ? AIRLIGHT_PI : (AIRLIGHT_PI - first);
     g_20.gamma.inner[0] = (cos_a_1 < 0.0) ? first : 0.0;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_25 = true;
@@ -5576,7 +5593,7 @@ AirlightOuter airlight_surface(
             if (_e281 > _e285) {
                 uint _e289 = i_20;
                 float _e291 = cuts_2.inner[metal::min(unsigned(_e289), 10u)];
-                local_136 = _e291 < hi_7;
+                local_136 = _e291 < hi_8;
             } else {
                 local_136 = false;
             }
@@ -5592,7 +5609,7 @@ AirlightOuter airlight_surface(
         }
     }
     uint _e308 = k_4;
-    g_20.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_7;
+    g_20.gamma.inner[metal::min(unsigned(_e308 + 1u), 12u)] = hi_8;
     uint _e313 = k_4;
     g_20.panels = _e313 + 1u;
     uint2 loop_bound_27 = uint2(4294967295u);

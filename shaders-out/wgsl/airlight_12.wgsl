@@ -58,6 +58,12 @@ struct AirlightPanel {
     f_max: f32,
 }
 
+struct AirlightExactDifference {
+    hi: vec3<f32>,
+    lo: vec3<f32>,
+    in_range: bool,
+}
+
 struct AirlightPanelList {
     panel_a: vec4<f32>,
     panel_b: vec4<f32>,
@@ -4699,70 +4705,77 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_19: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_exact_difference(point: vec3<f32>, origin_1: vec3<f32>, dir: vec3<f32>, key_4: u32) -> AirlightExactDifference {
     var local_128: bool;
+
+    let _e7 = airlight_two_sum(point.x, -(origin_1.x), key_4);
+    let _e11 = airlight_two_sum(point.y, -(origin_1.y), key_4);
+    let _e15 = airlight_two_sum(point.z, -(origin_1.z), key_4);
+    let hi_6 = vec3<f32>(_e7.x, _e11.x, _e15.x);
+    let _e24 = airlight_in_exact_range(hi_6);
+    if _e24 {
+        let _e27 = airlight_in_exact_range(dir);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    let _e29 = local_128;
+    return AirlightExactDifference(hi_6, vec3<f32>(_e7.y, _e11.y, _e15.y), _e29);
+}
+
+fn airlight_refined(s_19: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var out_2: AirlightCanonical;
     var local_129: bool;
     var a_16: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_4 = u32((s_19.flags > 1u));
-    let _e11 = airlight_two_sum(s_19.light_position.x, -(s_19.origin.x), key_4);
-    let _e17 = airlight_two_sum(s_19.light_position.y, -(s_19.origin.y), key_4);
-    let _e23 = airlight_two_sum(s_19.light_position.z, -(s_19.origin.z), key_4);
-    let hi_6 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_7 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir = s_19.dir;
-    let _e33 = airlight_in_exact_range(hi_6);
-    if !(!(_e33)) {
-        let _e38 = airlight_in_exact_range(dir);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    let _e41 = local_128;
-    if _e41 {
+    let key_5 = u32((s_19.flags > 1u));
+    let dir_1 = s_19.dir;
+    let _e9 = airlight_exact_difference(s_19.light_position, s_19.origin, dir_1, key_5);
+    if !(_e9.in_range) {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_6.y, dir.z, hi_6.z, dir.y, key_4);
-    let _e59 = airlight_diff_of_products(hi_6.z, dir.x, hi_6.x, dir.z, key_4);
-    let _e72 = airlight_diff_of_products(hi_6.x, dir.y, hi_6.y, dir.x, key_4);
-    let w_5 = vec3<f32>((_e46 + ((lo_7.y * dir.z) - (lo_7.z * dir.y))), (_e59 + ((lo_7.z * dir.x) - (lo_7.x * dir.z))), (_e72 + ((lo_7.x * dir.y) - (lo_7.y * dir.x))));
-    let _e82 = airlight_vec_finite(w_5);
-    if !(_e82) {
+    let hi_7 = _e9.hi;
+    let lo_7 = _e9.lo;
+    let _e18 = airlight_diff_of_products(hi_7.y, dir_1.z, hi_7.z, dir_1.y, key_5);
+    let _e31 = airlight_diff_of_products(hi_7.z, dir_1.x, hi_7.x, dir_1.z, key_5);
+    let _e44 = airlight_diff_of_products(hi_7.x, dir_1.y, hi_7.y, dir_1.x, key_5);
+    let w_5 = vec3<f32>((_e18 + ((lo_7.y * dir_1.z) - (lo_7.z * dir_1.y))), (_e31 + ((lo_7.z * dir_1.x) - (lo_7.x * dir_1.z))), (_e44 + ((lo_7.x * dir_1.y) - (lo_7.y * dir_1.x))));
+    let _e54 = airlight_vec_finite(w_5);
+    if !(_e54) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_5);
-    if (_e85 == 0f) {
+    let _e57 = airlight_safe_length(w_5);
+    if (_e57 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
-        let _e92 = out_2;
-        return _e92;
+        let _e64 = out_2;
+        return _e64;
     }
-    let _e93 = airlight_safe_length(dir);
-    let h_7 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_7);
-    if _e95 {
+    let _e65 = airlight_safe_length(dir_1);
+    let h_7 = (_e57 / _e65);
+    let _e67 = airlight_is_finite(h_7);
+    if _e67 {
         local_129 = (h_7 > 0f);
     } else {
         local_129 = false;
     }
-    let _e101 = local_129;
-    if !(_e101) {
+    let _e73 = local_129;
+    if !(_e73) {
         return plain;
     }
     if (s_19.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_19.light_axis);
-        a_16 = _e112;
+        let _e84 = airlight_normalize(s_19.light_axis);
+        a_16 = _e84;
     }
-    let _e113 = airlight_normalize(dir);
-    let _e114 = airlight_normalize(w_5);
-    let n_3 = -(cross(_e113, _e114));
+    let _e85 = airlight_normalize(dir_1);
+    let _e86 = airlight_normalize(w_5);
+    let n_3 = -(cross(_e85, _e86));
     out_2.h = h_7;
-    let _e119 = a_16;
-    out_2.d_c = dot(n_3, _e119);
-    let _e121 = out_2;
-    return _e121;
+    let _e91 = a_16;
+    out_2.d_c = dot(n_3, _e91);
+    let _e93 = out_2;
+    return _e93;
 }
 
 fn airlight_kronrod_rule() -> array<vec3<f32>, 4> {
@@ -5496,7 +5509,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_7 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_8 = select((AIRLIGHT_PI - first), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_20.gamma[0] = select(0f, first, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
@@ -5512,7 +5525,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_136 = (_e291 < hi_7);
+                local_136 = (_e291 < hi_8);
             } else {
                 local_136 = false;
             }
@@ -5532,7 +5545,7 @@ fn airlight_surface(s_23: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_4;
-    g_20.gamma[(_e308 + 1u)] = hi_7;
+    g_20.gamma[(_e308 + 1u)] = hi_8;
     let _e313 = k_4;
     g_20.panels = (_e313 + 1u);
     loop {

@@ -89,6 +89,12 @@ struct AirlightPanel {
     f_max: f32,
 }
 
+struct AirlightExactDifference {
+    hi: vec3<f32>,
+    lo: vec3<f32>,
+    in_range: bool,
+}
+
 struct AirlightSphereFoot {
     to_centre: vec3<f32>,
     h: f32,
@@ -4928,140 +4934,136 @@ fn airlight_in_exact_range(v_4: vec3<f32>) -> bool {
     return _e23;
 }
 
-fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
+fn airlight_exact_difference(point: vec3<f32>, origin_3: vec3<f32>, dir_2: vec3<f32>, key_7: u32) -> AirlightExactDifference {
     var local_128: bool;
+
+    let _e7 = airlight_two_sum(point.x, -(origin_3.x), key_7);
+    let _e11 = airlight_two_sum(point.y, -(origin_3.y), key_7);
+    let _e15 = airlight_two_sum(point.z, -(origin_3.z), key_7);
+    let hi_7 = vec3<f32>(_e7.x, _e11.x, _e15.x);
+    let _e24 = airlight_in_exact_range(hi_7);
+    if _e24 {
+        let _e27 = airlight_in_exact_range(dir_2);
+        local_128 = _e27;
+    } else {
+        local_128 = false;
+    }
+    let _e29 = local_128;
+    return AirlightExactDifference(hi_7, vec3<f32>(_e7.y, _e11.y, _e15.y), _e29);
+}
+
+fn airlight_refined(s_21: AirlightScene, plain: AirlightCanonical) -> AirlightCanonical {
     var out_2: AirlightCanonical;
     var local_129: bool;
     var a_18: vec3<f32> = vec3<f32>(0f, 0f, 1f);
 
-    let key_8 = u32((s_21.flags > 1u));
-    let _e11 = airlight_two_sum(s_21.light_position.x, -(s_21.origin.x), key_8);
-    let _e17 = airlight_two_sum(s_21.light_position.y, -(s_21.origin.y), key_8);
-    let _e23 = airlight_two_sum(s_21.light_position.z, -(s_21.origin.z), key_8);
-    let hi_7 = vec3<f32>(_e11.x, _e17.x, _e23.x);
-    let lo_8 = vec3<f32>(_e11.y, _e17.y, _e23.y);
-    let dir_3 = s_21.dir;
-    let _e33 = airlight_in_exact_range(hi_7);
-    if !(!(_e33)) {
-        let _e38 = airlight_in_exact_range(dir_3);
-        local_128 = !(_e38);
-    } else {
-        local_128 = true;
-    }
-    let _e41 = local_128;
-    if _e41 {
+    let key_9 = u32((s_21.flags > 1u));
+    let dir_4 = s_21.dir;
+    let _e9 = airlight_exact_difference(s_21.light_position, s_21.origin, dir_4, key_9);
+    if !(_e9.in_range) {
         return plain;
     }
-    let _e46 = airlight_diff_of_products(hi_7.y, dir_3.z, hi_7.z, dir_3.y, key_8);
-    let _e59 = airlight_diff_of_products(hi_7.z, dir_3.x, hi_7.x, dir_3.z, key_8);
-    let _e72 = airlight_diff_of_products(hi_7.x, dir_3.y, hi_7.y, dir_3.x, key_8);
-    let w_6 = vec3<f32>((_e46 + ((lo_8.y * dir_3.z) - (lo_8.z * dir_3.y))), (_e59 + ((lo_8.z * dir_3.x) - (lo_8.x * dir_3.z))), (_e72 + ((lo_8.x * dir_3.y) - (lo_8.y * dir_3.x))));
-    let _e82 = airlight_vec_finite(w_6);
-    if !(_e82) {
+    let hi_8 = _e9.hi;
+    let lo_8 = _e9.lo;
+    let _e18 = airlight_diff_of_products(hi_8.y, dir_4.z, hi_8.z, dir_4.y, key_9);
+    let _e31 = airlight_diff_of_products(hi_8.z, dir_4.x, hi_8.x, dir_4.z, key_9);
+    let _e44 = airlight_diff_of_products(hi_8.x, dir_4.y, hi_8.y, dir_4.x, key_9);
+    let w_6 = vec3<f32>((_e18 + ((lo_8.y * dir_4.z) - (lo_8.z * dir_4.y))), (_e31 + ((lo_8.z * dir_4.x) - (lo_8.x * dir_4.z))), (_e44 + ((lo_8.x * dir_4.y) - (lo_8.y * dir_4.x))));
+    let _e54 = airlight_vec_finite(w_6);
+    if !(_e54) {
         return plain;
     }
     out_2 = plain;
-    let _e85 = airlight_safe_length(w_6);
-    if (_e85 == 0f) {
+    let _e57 = airlight_safe_length(w_6);
+    if (_e57 == 0f) {
         out_2.h = 0f;
         out_2.d_c = 0f;
-        let _e92 = out_2;
-        return _e92;
+        let _e64 = out_2;
+        return _e64;
     }
-    let _e93 = airlight_safe_length(dir_3);
-    let h_7 = (_e85 / _e93);
-    let _e95 = airlight_is_finite(h_7);
-    if _e95 {
+    let _e65 = airlight_safe_length(dir_4);
+    let h_7 = (_e57 / _e65);
+    let _e67 = airlight_is_finite(h_7);
+    if _e67 {
         local_129 = (h_7 > 0f);
     } else {
         local_129 = false;
     }
-    let _e101 = local_129;
-    if !(_e101) {
+    let _e73 = local_129;
+    if !(_e73) {
         return plain;
     }
     if (s_21.light_kind != AIRLIGHT_LIGHT_OMNI) {
-        let _e112 = airlight_normalize(s_21.light_axis);
-        a_18 = _e112;
+        let _e84 = airlight_normalize(s_21.light_axis);
+        a_18 = _e84;
     }
-    let _e113 = airlight_normalize(dir_3);
-    let _e114 = airlight_normalize(w_6);
-    let n_6 = -(cross(_e113, _e114));
+    let _e85 = airlight_normalize(dir_4);
+    let _e86 = airlight_normalize(w_6);
+    let n_6 = -(cross(_e85, _e86));
     out_2.h = h_7;
-    let _e119 = a_18;
-    out_2.d_c = dot(n_6, _e119);
-    let _e121 = out_2;
-    return _e121;
+    let _e91 = a_18;
+    out_2.d_c = dot(n_6, _e91);
+    let _e93 = out_2;
+    return _e93;
 }
 
-fn airlight_sphere_foot(o: vec3<f32>, dir_2: vec3<f32>, c_6: vec3<f32>, radius_2: f32, key_7: u32) -> AirlightSphereFoot {
+fn airlight_sphere_foot(o: vec3<f32>, dir_3: vec3<f32>, c_6: vec3<f32>, radius_2: f32, key_8: u32) -> AirlightSphereFoot {
     var local_130: bool;
     var local_131: bool;
-    var local_132: bool;
 
-    let _e5 = airlight_normalize(dir_2);
+    let _e5 = airlight_normalize(dir_3);
     let oc = (o - c_6);
     let to_centre = -((oc - (dot(oc, _e5) * _e5)));
     let _e11 = airlight_safe_length(to_centre);
     let plain_2 = AirlightSphereFoot(to_centre, _e11, (_e11 - radius_2));
-    let _e17 = airlight_two_sum(c_6.x, -(o.x), key_7);
-    let _e21 = airlight_two_sum(c_6.y, -(o.y), key_7);
-    let _e25 = airlight_two_sum(c_6.z, -(o.z), key_7);
-    let hi_8 = vec3<f32>(_e17.x, _e21.x, _e25.x);
-    let lo_9 = vec3<f32>(_e17.y, _e21.y, _e25.y);
-    let _e34 = airlight_in_exact_range(hi_8);
-    if !(!(_e34)) {
-        let _e39 = airlight_in_exact_range(dir_2);
-        local_130 = !(_e39);
-    } else {
-        local_130 = true;
-    }
-    let _e42 = local_130;
-    if _e42 {
+    let _e14 = airlight_exact_difference(c_6, o, dir_3, key_8);
+    if !(_e14.in_range) {
         return plain_2;
     }
-    let _e49 = airlight_cross_pair(hi_8.y, hi_8.z, lo_9.y, lo_9.z, dir_2.y, dir_2.z, key_7);
-    let _e56 = airlight_cross_pair(hi_8.z, hi_8.x, lo_9.z, lo_9.x, dir_2.z, dir_2.x, key_7);
-    let _e63 = airlight_cross_pair(hi_8.x, hi_8.y, lo_9.x, lo_9.y, dir_2.x, dir_2.y, key_7);
-    let _e64 = airlight_pair_mul(_e49, _e49, key_7);
-    let _e65 = airlight_pair_mul(_e56, _e56, key_7);
-    let _e66 = airlight_pair_add(_e64, _e65, key_7);
-    let _e67 = airlight_pair_mul(_e63, _e63, key_7);
-    let _e68 = airlight_pair_add(_e66, _e67, key_7);
-    let dx = vec2<f32>(dir_2.x, 0f);
-    let dy_2 = vec2<f32>(dir_2.y, 0f);
-    let dz = vec2<f32>(dir_2.z, 0f);
-    let _e78 = airlight_pair_mul(dx, dx, key_7);
-    let _e79 = airlight_pair_mul(dy_2, dy_2, key_7);
-    let _e80 = airlight_pair_add(_e78, _e79, key_7);
-    let _e81 = airlight_pair_mul(dz, dz, key_7);
-    let _e82 = airlight_pair_add(_e80, _e81, key_7);
-    let w_len = sqrt(_e68.x);
-    let scale_5 = sqrt(_e82.x);
+    let hi_9 = _e14.hi;
+    let lo_9 = _e14.lo;
+    let _e25 = airlight_cross_pair(hi_9.y, hi_9.z, lo_9.y, lo_9.z, dir_3.y, dir_3.z, key_8);
+    let _e32 = airlight_cross_pair(hi_9.z, hi_9.x, lo_9.z, lo_9.x, dir_3.z, dir_3.x, key_8);
+    let _e39 = airlight_cross_pair(hi_9.x, hi_9.y, lo_9.x, lo_9.y, dir_3.x, dir_3.y, key_8);
+    let _e40 = airlight_pair_mul(_e25, _e25, key_8);
+    let _e41 = airlight_pair_mul(_e32, _e32, key_8);
+    let _e42 = airlight_pair_add(_e40, _e41, key_8);
+    let _e43 = airlight_pair_mul(_e39, _e39, key_8);
+    let _e44 = airlight_pair_add(_e42, _e43, key_8);
+    let dx = vec2<f32>(dir_3.x, 0f);
+    let dy_2 = vec2<f32>(dir_3.y, 0f);
+    let dz = vec2<f32>(dir_3.z, 0f);
+    let _e54 = airlight_pair_mul(dx, dx, key_8);
+    let _e55 = airlight_pair_mul(dy_2, dy_2, key_8);
+    let _e56 = airlight_pair_add(_e54, _e55, key_8);
+    let _e57 = airlight_pair_mul(dz, dz, key_8);
+    let _e58 = airlight_pair_add(_e56, _e57, key_8);
+    let w_len = sqrt(_e44.x);
+    let scale_5 = sqrt(_e58.x);
     let h_8 = (w_len / scale_5);
-    let _e88 = airlight_two_product(radius_2, radius_2, key_7);
-    let _e89 = airlight_pair_mul(_e88, _e82, key_7);
-    let _e91 = airlight_pair_add(_e68, -(_e89), key_7);
-    let miss = (_e91.x / ((w_len + (radius_2 * scale_5)) * scale_5));
+    let _e64 = airlight_two_product(radius_2, radius_2, key_8);
+    let _e65 = airlight_pair_mul(_e64, _e58, key_8);
+    let _e67 = airlight_pair_add(_e44, -(_e65), key_8);
+    let miss = (_e67.x / ((w_len + (radius_2 * scale_5)) * scale_5));
     if (h_8 > 0f) {
-        let _e101 = airlight_is_finite(h_8);
-        local_131 = _e101;
+        let _e77 = airlight_is_finite(h_8);
+        local_130 = _e77;
+    } else {
+        local_130 = false;
+    }
+    let _e79 = local_130;
+    if _e79 {
+        let _e82 = airlight_is_finite(miss);
+        local_131 = _e82;
     } else {
         local_131 = false;
     }
-    let _e103 = local_131;
-    if _e103 {
-        let _e106 = airlight_is_finite(miss);
-        local_132 = _e106;
-    } else {
-        local_132 = false;
-    }
-    let _e108 = local_132;
-    if !(_e108) {
+    let _e84 = local_131;
+    if !(_e84) {
         return plain_2;
     }
-    let _e114 = airlight_normalize(vec3<f32>(_e49.x, _e56.x, _e63.x));
-    let m_11 = cross(_e5, _e114);
+    let _e90 = airlight_normalize(vec3<f32>(_e25.x, _e32.x, _e39.x));
+    let m_11 = cross(_e5, _e90);
     return AirlightSphereFoot((h_8 * m_11), h_8, miss);
 }
 
@@ -5383,7 +5385,7 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
     var e_1: AirlightEdges;
     var n_1: u32 = 0u;
     var i_18: u32 = 0u;
-    var local_133: bool;
+    var local_132: bool;
 
     cuts_1 = unsorted;
     let _e5 = cuts_1[1];
@@ -5441,11 +5443,11 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
             if (_e72 > _e76) {
                 let _e80 = i_18;
                 let _e82 = cuts_1[_e80];
-                local_133 = (_e82 < hi_3);
+                local_132 = (_e82 < hi_3);
             } else {
-                local_133 = false;
+                local_132 = false;
             }
-            let _e85 = local_133;
+            let _e85 = local_132;
             if _e85 {
                 let _e86 = n_1;
                 n_1 = (_e86 + 1u);
@@ -5470,9 +5472,9 @@ fn airlight_edges_between(lo_3: f32, hi_3: f32, unsorted: array<f32, 4>) -> Airl
 
 fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, max_panels: u32, tolerance: f32) -> AirlightSplit {
     var tries: u32 = 0u;
+    var local_133: bool;
     var local_134: bool;
     var local_135: bool;
-    var local_136: bool;
 
     loop {
         let _e6 = tries;
@@ -5484,18 +5486,18 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e8 = (*list_1);
             let _e9 = airlight_list_scan(_e8, count_2);
             if !(!((_e9.errors > (tolerance * abs(_e9.total))))) {
-                local_134 = (count_2 == max_panels);
+                local_133 = (count_2 == max_panels);
+            } else {
+                local_133 = true;
+            }
+            let _e21 = local_133;
+            if !(_e21) {
+                let _e26 = airlight_is_finite(_e9.total);
+                local_134 = !(_e26);
             } else {
                 local_134 = true;
             }
-            let _e21 = local_134;
-            if !(_e21) {
-                let _e26 = airlight_is_finite(_e9.total);
-                local_135 = !(_e26);
-            } else {
-                local_135 = true;
-            }
-            let _e29 = local_135;
+            let _e29 = local_134;
             if _e29 {
                 break;
             }
@@ -5503,11 +5505,11 @@ fn airlight_split_worst(list_1: ptr<function, AirlightPanelList>, count_2: u32, 
             let _e32 = airlight_list_get(_e30, _e9.worst);
             let mid_2 = (0.5f * (_e32.x + _e32.y));
             if (mid_2 > _e32.x) {
-                local_136 = (mid_2 < _e32.y);
+                local_135 = (mid_2 < _e32.y);
             } else {
-                local_136 = false;
+                local_135 = false;
             }
-            let _e45 = local_136;
+            let _e45 = local_135;
             if !(_e45) {
                 airlight_list_set(list_1, _e9.worst, vec4<f32>(_e32.xyz, 0f));
                 continue;
@@ -5633,33 +5635,33 @@ fn airlight_outer_point(s_24: AirlightScene, max_panels_2: u32) -> AirlightOuter
 
 fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
     var g_22: AirlightOuter;
-    var local_137: bool;
+    var local_136: bool;
     var u_1: vec3<f32>;
     var cuts_2: array<f32, 11> = array<f32, 11>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var i_19: u32 = 1u;
     var j_4: u32;
-    var local_138: bool;
+    var local_137: bool;
     var k_5: u32 = 0u;
     var i_20: u32 = 0u;
-    var local_139: bool;
+    var local_138: bool;
     var i_21: u32 = 0u;
     var i_22: u32 = 1u;
+    var local_139: bool;
     var local_140: bool;
     var local_141: bool;
     var local_142: bool;
     var local_143: bool;
-    var local_144: bool;
 
     let _e2 = airlight_outer_point(s_25, AIRLIGHT_SURFACE_PANELS);
     g_22 = _e2;
     let to_light_1 = (s_25.light_position - s_25.origin);
     let _e7 = airlight_safe_length(to_light_1);
     if !((s_25.intensity == 0f)) {
-        local_137 = (s_25.sigma_s == 0f);
+        local_136 = (s_25.sigma_s == 0f);
     } else {
-        local_137 = true;
+        local_136 = true;
     }
-    let _e18 = local_137;
+    let _e18 = local_136;
     if _e18 {
         g_22.outcome = 1u;
         let _e21 = g_22;
@@ -5770,11 +5772,11 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 if (_e232 > 0u) {
                     let _e237 = j_4;
                     let _e241 = cuts_2[(_e237 - 1u)];
-                    local_138 = (_e241 > c_17);
+                    local_137 = (_e241 > c_17);
                 } else {
-                    local_138 = false;
+                    local_137 = false;
                 }
-                let _e244 = local_138;
+                let _e244 = local_137;
                 if _e244 {
                 } else {
                     break;
@@ -5796,7 +5798,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             i_19 = (_e258 + 1u);
         }
     }
-    let hi_9 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
+    let hi_10 = select((AIRLIGHT_PI - first_2), AIRLIGHT_PI, (cos_a_1 < 0f));
     g_22.gamma[0] = select(0f, first_2, (cos_a_1 < 0f));
     loop {
         let _e276 = i_20;
@@ -5812,11 +5814,11 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
             if (_e281 > _e285) {
                 let _e289 = i_20;
                 let _e291 = cuts_2[_e289];
-                local_139 = (_e291 < hi_9);
+                local_138 = (_e291 < hi_10);
             } else {
-                local_139 = false;
+                local_138 = false;
             }
-            let _e294 = local_139;
+            let _e294 = local_138;
             if _e294 {
                 let _e295 = k_5;
                 k_5 = (_e295 + 1u);
@@ -5832,7 +5834,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
         }
     }
     let _e308 = k_5;
-    g_22.gamma[(_e308 + 1u)] = hi_9;
+    g_22.gamma[(_e308 + 1u)] = hi_10;
     let _e313 = k_5;
     g_22.panels = (_e313 + 1u);
     loop {
@@ -5864,35 +5866,35 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
                 let _e339 = i_22;
                 let e_13 = g_22.gamma[_e339];
                 if !((e_13 == kinks[0])) {
-                    local_140 = (e_13 == kinks[1]);
+                    local_139 = (e_13 == kinks[1]);
+                } else {
+                    local_139 = true;
+                }
+                let _e350 = local_139;
+                if !(_e350) {
+                    local_140 = (e_13 == kinks[2]);
                 } else {
                     local_140 = true;
                 }
-                let _e350 = local_140;
-                if !(_e350) {
-                    local_141 = (e_13 == kinks[2]);
+                let _e357 = local_140;
+                if !(_e357) {
+                    local_141 = (e_13 == kinks[3]);
                 } else {
                     local_141 = true;
                 }
-                let _e357 = local_141;
-                if !(_e357) {
-                    local_142 = (e_13 == kinks[3]);
+                let _e364 = local_141;
+                if !(_e364) {
+                    local_142 = (e_13 == kinks[4]);
                 } else {
                     local_142 = true;
                 }
-                let _e364 = local_142;
-                if !(_e364) {
-                    local_143 = (e_13 == kinks[4]);
+                let _e371 = local_142;
+                if !(_e371) {
+                    local_143 = (e_13 == kinks[5]);
                 } else {
                     local_143 = true;
                 }
-                let _e371 = local_143;
-                if !(_e371) {
-                    local_144 = (e_13 == kinks[5]);
-                } else {
-                    local_144 = true;
-                }
-                let kink = local_144;
+                let kink = local_143;
                 let _e380 = g_22.smooth_edges;
                 let _e382 = i_22;
                 g_22.smooth_edges = (_e380 | select((1u << _e382), 0u, kink));
@@ -5908,7 +5910,7 @@ fn airlight_surface(s_25: AirlightScene) -> AirlightOuter {
 }
 
 fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
-    var local_145: bool;
+    var local_144: bool;
 
     let _e4 = airlight_cos_sin((0.5f * x_19));
     let s2_ = (_e4.y * _e4.y);
@@ -5919,11 +5921,11 @@ fn airlight_lobe_at(q_1: AirlightLobe, x_19: f32) -> f32 {
     let clip = (max((even + odd_1), 0f) + max((even - odd_1), 0f));
     let fall = (q_1.k * s2_);
     if (fall < 1f) {
-        local_145 = (clip > 0f);
+        local_144 = (clip > 0f);
     } else {
-        local_145 = false;
+        local_144 = false;
     }
-    let _e43 = local_145;
+    let _e43 = local_144;
     if _e43 {
         let _e47 = airlight_log1p(-(fall));
         return (clip * exp((q_1.exponent * (q_1.log_peak + _e47))));
@@ -5942,7 +5944,7 @@ fn airlight_lobe_node(q_2: AirlightLobe, lo_5: f32, w_1: f32, u_2: f32, smoothst
 
 fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     var end_1: f32;
-    var local_146: bool;
+    var local_145: bool;
 
     end_1 = x_20;
     let _e3 = end_1;
@@ -5959,11 +5961,11 @@ fn airlight_arc_end(x_20: f32, cut: f32) -> f32 {
     let _e16 = end_1;
     if (_e16 > -(cut)) {
         let _e21 = end_1;
-        local_146 = (_e21 < cut);
+        local_145 = (_e21 < cut);
     } else {
-        local_146 = false;
+        local_145 = false;
     }
-    let _e24 = local_146;
+    let _e24 = local_145;
     return select(0f, _e15, _e24);
 }
 
@@ -5972,18 +5974,18 @@ fn airlight_lobe_rule() -> array<vec2<f32>, 5> {
 }
 
 fn airlight_lobe_piece(q_3: AirlightLobe, lo_6: f32, hi_5: f32, smoothstep_1: bool) -> f32 {
-    var local_147: bool;
+    var local_146: bool;
     var sum_5: f32 = 0f;
     var k_6: u32 = 0u;
 
     let w_7 = (hi_5 - lo_6);
     if !(!((w_7 > 0f))) {
         let _e14 = airlight_lobe_at(q_3, (lo_6 + (0.5f * w_7)));
-        local_147 = !((_e14 > 0f));
+        local_146 = !((_e14 > 0f));
     } else {
-        local_147 = true;
+        local_146 = true;
     }
-    let _e19 = local_147;
+    let _e19 = local_146;
     if _e19 {
         return 0f;
     }
@@ -6076,30 +6078,30 @@ fn airlight_lobe_arcs(g_23: AirlightOuter, cs: vec2<f32>, gamma: f32, psi_n: f32
 
 fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     var g_24: AirlightOuter;
+    var local_147: bool;
     var local_148: bool;
-    var local_149: bool;
     var s_star: f32 = 0f;
     var t_star: f32;
+    var local_149: bool;
     var local_150: bool;
     var local_151: bool;
     var local_152: bool;
     var local_153: bool;
     var local_154: bool;
-    var local_155: bool;
     var scale: f32 = 0f;
+    var local_155: bool;
     var local_156: bool;
     var local_157: bool;
     var local_158: bool;
     var local_159: bool;
-    var local_160: bool;
     var cuts_3: array<f32, 4> = array<f32, 4>(340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f, 340282350000000000000000000000000000000f);
     var at: array<f32, 3>;
-    var local_161: bool;
+    var local_160: bool;
     var i_24: u32 = 0u;
+    var local_161: bool;
     var local_162: bool;
     var local_163: bool;
     var local_164: bool;
-    var local_165: bool;
 
     if (s_26.surface_kind != AIRLIGHT_SURFACE_NONE) {
         let _e4 = airlight_surface(s_26);
@@ -6114,17 +6116,17 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     let ab_1 = (s_26.light_end - s_26.light_position);
     let _e15 = airlight_safe_length(ab_1);
     if !(!((_e15 > 0f))) {
-        local_148 = (s_26.intensity == 0f);
+        local_147 = (s_26.intensity == 0f);
+    } else {
+        local_147 = true;
+    }
+    let _e26 = local_147;
+    if !(_e26) {
+        local_148 = (s_26.sigma_s == 0f);
     } else {
         local_148 = true;
     }
-    let _e26 = local_148;
-    if !(_e26) {
-        local_149 = (s_26.sigma_s == 0f);
-    } else {
-        local_149 = true;
-    }
-    let _e34 = local_149;
+    let _e34 = local_148;
     if _e34 {
         g_24.outcome = 1u;
         let _e37 = g_24;
@@ -6148,94 +6150,94 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
     let _e73 = airlight_safe_length(((w0_ - (_e41 * _e67)) + (e_14 * _e70)));
     let sin_a_1 = sqrt(max(sin2_, 0f));
     if (_e73 == 0f) {
-        local_150 = (sin_a_1 > 0f);
+        local_149 = (sin_a_1 > 0f);
+    } else {
+        local_149 = false;
+    }
+    let _e84 = local_149;
+    if _e84 {
+        let _e87 = s_star;
+        local_150 = (_e87 >= 0f);
     } else {
         local_150 = false;
     }
-    let _e84 = local_150;
-    if _e84 {
-        let _e87 = s_star;
-        local_151 = (_e87 >= 0f);
+    let _e91 = local_150;
+    if _e91 {
+        let _e94 = s_star;
+        local_151 = (_e94 <= _e15);
     } else {
         local_151 = false;
     }
-    let _e91 = local_151;
-    if _e91 {
-        let _e94 = s_star;
-        local_152 = (_e94 <= _e15);
+    let _e97 = local_151;
+    if _e97 {
+        let _e101 = t_star;
+        local_152 = (s_26.t_min <= _e101);
     } else {
         local_152 = false;
     }
-    let _e97 = local_152;
-    if _e97 {
-        let _e101 = t_star;
-        local_153 = (s_26.t_min <= _e101);
-    } else {
-        local_153 = false;
-    }
-    let _e104 = local_153;
+    let _e104 = local_152;
     if _e104 {
         if !(infinite_5) {
             let _e110 = t_star;
-            local_155 = (_e110 <= s_26.t_max);
+            local_154 = (_e110 <= s_26.t_max);
         } else {
-            local_155 = true;
+            local_154 = true;
         }
-        let _e114 = local_155;
-        local_154 = _e114;
+        let _e114 = local_154;
+        local_153 = _e114;
     } else {
-        local_154 = false;
+        local_153 = false;
     }
-    let _e116 = local_154;
+    let _e116 = local_153;
     if _e116 {
         g_24.outcome = 2u;
         let _e119 = g_24;
         return _e119;
     }
     if (sin_a_1 > 0f) {
-        local_156 = (_e73 > 0f);
+        local_155 = (_e73 > 0f);
     } else {
-        local_156 = false;
+        local_155 = false;
     }
-    let _e129 = local_156;
+    let _e129 = local_155;
     if _e129 {
         scale = (_e73 / sin_a_1);
     }
     let _e131 = s_star;
     if (_e131 > -(_e15)) {
         let _e136 = s_star;
-        local_157 = (_e136 < (_e15 + _e15));
+        local_156 = (_e136 < (_e15 + _e15));
+    } else {
+        local_156 = false;
+    }
+    let _e140 = local_156;
+    if _e140 {
+        let _e143 = scale;
+        local_157 = (_e143 < _e15);
     } else {
         local_157 = false;
     }
-    let _e140 = local_157;
-    if _e140 {
-        let _e143 = scale;
-        local_158 = (_e143 < _e15);
-    } else {
-        local_158 = false;
-    }
-    let near_2 = local_158;
+    let near_2 = local_157;
     if near_2 {
         let _e149 = s_star;
         let _e151 = scale;
         let _e153 = airlight_asinh(((_e15 - _e149) / _e151));
         let _e154 = airlight_is_finite(_e153);
-        local_159 = _e154;
+        local_158 = _e154;
     } else {
-        local_159 = false;
+        local_158 = false;
     }
-    let _e156 = local_159;
+    let _e156 = local_158;
     if _e156 {
         let _e159 = s_star;
         let _e160 = scale;
         let _e162 = airlight_asinh((_e159 / _e160));
         let _e163 = airlight_is_finite(_e162);
-        local_160 = _e163;
+        local_159 = _e163;
     } else {
-        local_160 = false;
+        local_159 = false;
     }
-    let _e165 = local_160;
+    let _e165 = local_159;
     if !(_e165) {
         scale = 0f;
     }
@@ -6252,11 +6254,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         let _e195 = airlight_to_w(_e193, 0f);
         let _e197 = g_24;
         let _e198 = airlight_to_w(_e197, _e15);
-        local_161 = (min(-(_e195), _e198) < 0.5f);
+        local_160 = (min(-(_e195), _e198) < 0.5f);
     } else {
-        local_161 = false;
+        local_160 = false;
     }
-    let sliver = local_161;
+    let sliver = local_160;
     loop {
         let _e206 = i_24;
         if (_e206 < 3u) {
@@ -6266,31 +6268,31 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
         {
             let _e209 = i_24;
             if (_e209 == 0u) {
-                local_162 = sliver;
+                local_161 = sliver;
             } else {
-                local_162 = false;
+                local_161 = false;
             }
-            let _e215 = local_162;
+            let _e215 = local_161;
             if _e215 {
                 continue;
             }
             if (cos_a_2 == 0f) {
                 let _e220 = i_24;
-                local_163 = (_e220 > 0u);
+                local_162 = (_e220 > 0u);
             } else {
-                local_163 = false;
+                local_162 = false;
             }
-            let _e224 = local_163;
+            let _e224 = local_162;
             if _e224 {
                 continue;
             }
             let _e225 = i_24;
             if (_e225 == 2u) {
-                local_164 = infinite_5;
+                local_163 = infinite_5;
             } else {
-                local_164 = false;
+                local_163 = false;
             }
-            let _e231 = local_164;
+            let _e231 = local_163;
             if _e231 {
                 continue;
             }
@@ -6299,11 +6301,11 @@ fn airlight_outer(s_26: AirlightScene) -> AirlightOuter {
             if (_e234 > 0f) {
                 let _e239 = i_24;
                 let _e241 = at[_e239];
-                local_165 = (_e241 < _e15);
+                local_164 = (_e241 < _e15);
             } else {
-                local_165 = false;
+                local_164 = false;
             }
-            let _e244 = local_165;
+            let _e244 = local_164;
             if _e244 {
                 let _e245 = i_24;
                 let _e247 = g_24;
@@ -6338,12 +6340,12 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
     var p: AirlightScene;
     var gamma_1: f32;
     var jacobian: f32;
+    var local_165: bool;
     var local_166: bool;
     var local_167: bool;
     var local_168: bool;
     var local_169: bool;
     var local_170: bool;
-    var local_171: bool;
     var weight: f32 = 0f;
     var at_1: f32;
     var ds: f32 = 1f;
@@ -6365,51 +6367,51 @@ fn airlight_outer_node(s_27: AirlightScene, g_25: AirlightOuter, x_21: f32) -> A
         jacobian = (((w_8 * 6f) * t_9) * u_9);
         let _e58 = gamma_1;
         if smooth_b {
+            local_165 = !(smooth_a);
+        } else {
+            local_165 = false;
+        }
+        let _e66 = local_165;
+        gamma_1 = select(_e58, (a_46 + ((w_8 * t_9) * t_9)), _e66);
+        let _e68 = jacobian;
+        if smooth_b {
             local_166 = !(smooth_a);
         } else {
             local_166 = false;
         }
-        let _e66 = local_166;
-        gamma_1 = select(_e58, (a_46 + ((w_8 * t_9) * t_9)), _e66);
-        let _e68 = jacobian;
-        if smooth_b {
-            local_167 = !(smooth_a);
+        let _e75 = local_166;
+        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
+        let _e77 = gamma_1;
+        if smooth_a {
+            local_167 = !(smooth_b);
         } else {
             local_167 = false;
         }
-        let _e75 = local_167;
-        jacobian = select(_e68, (w_8 * (t_9 + t_9)), _e75);
-        let _e77 = gamma_1;
+        let _e85 = local_167;
+        gamma_1 = select(_e77, (b_23 - ((w_8 * u_9) * u_9)), _e85);
+        let _e87 = jacobian;
         if smooth_a {
             local_168 = !(smooth_b);
         } else {
             local_168 = false;
         }
-        let _e85 = local_168;
-        gamma_1 = select(_e77, (b_23 - ((w_8 * u_9) * u_9)), _e85);
-        let _e87 = jacobian;
+        let _e94 = local_168;
+        jacobian = select(_e87, (w_8 * (u_9 + u_9)), _e94);
+        let _e96 = gamma_1;
         if smooth_a {
-            local_169 = !(smooth_b);
+            local_169 = smooth_b;
         } else {
             local_169 = false;
         }
-        let _e94 = local_169;
-        jacobian = select(_e87, (w_8 * (u_9 + u_9)), _e94);
-        let _e96 = gamma_1;
+        let _e102 = local_169;
+        gamma_1 = select(_e96, (a_46 + (w_8 * t_9)), _e102);
+        let _e104 = jacobian;
         if smooth_a {
             local_170 = smooth_b;
         } else {
             local_170 = false;
         }
-        let _e102 = local_170;
-        gamma_1 = select(_e96, (a_46 + (w_8 * t_9)), _e102);
-        let _e104 = jacobian;
-        if smooth_a {
-            local_171 = smooth_b;
-        } else {
-            local_171 = false;
-        }
-        let _e108 = local_171;
+        let _e108 = local_170;
         jacobian = select(_e104, w_8, _e108);
         let _e110 = jacobian;
         if !((_e110 > 0f)) {
@@ -6642,15 +6644,15 @@ fn airlight_emission_scale(s_31: AirlightScene) -> f32 {
 }
 
 fn airlight_graded_range(s_32: AirlightScene, top: f32) -> vec2<f32> {
-    var local_172: bool;
+    var local_171: bool;
 
     let _e2 = airlight_emission_scale(s_32);
     if (_e2 > 0f) {
-        local_172 = (_e2 < top);
+        local_171 = (_e2 < top);
     } else {
-        local_172 = false;
+        local_171 = false;
     }
-    let _e9 = local_172;
+    let _e9 = local_171;
     if _e9 {
         let _e11 = airlight_atan((top / _e2));
         return vec2<f32>(_e11, _e2);
@@ -6677,14 +6679,14 @@ fn airlight_far_from_edge(s_34: AirlightScene, depth: f32, z_9: f32) -> bool {
 }
 
 fn airlight_lobe(sign_1: f32, gap_3: f32) -> vec2<f32> {
-    var local_173: bool;
+    var local_172: bool;
 
     if !(!((gap_3 > 0f))) {
-        local_173 = !((gap_3 < AIRLIGHT_FLT_MAX));
+        local_172 = !((gap_3 < AIRLIGHT_FLT_MAX));
     } else {
-        local_173 = true;
+        local_172 = true;
     }
-    let _e12 = local_173;
+    let _e12 = local_172;
     if _e12 {
         return vec2<f32>(1f, 0f);
     }
@@ -6725,15 +6727,15 @@ fn airlight_phase_lobes(s_35: AirlightScene) -> vec4<f32> {
 
 fn airlight_basis_e1_(n_2: vec3<f32>) -> vec3<f32> {
     var u_3: vec3<f32> = vec3<f32>(0f, 0f, 1f);
-    var local_174: bool;
+    var local_173: bool;
 
     let m_12 = abs(n_2);
     if (m_12.x <= m_12.y) {
-        local_174 = (m_12.x <= m_12.z);
+        local_173 = (m_12.x <= m_12.z);
     } else {
-        local_174 = false;
+        local_173 = false;
     }
-    let _e16 = local_174;
+    let _e16 = local_173;
     if _e16 {
         u_3 = vec3<f32>(1f, 0f, 0f);
     } else {
@@ -6812,7 +6814,7 @@ fn airlight_outline_at(s_36: AirlightScene, a_21: AirlightArea, x_22: vec3<f32>)
 
 fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     var a_22: AirlightArea;
-    var local_175: bool;
+    var local_174: bool;
     var cut_count: u32 = 0u;
     var cut0_: f32 = 0f;
     var cut1_: f32 = 0f;
@@ -6822,18 +6824,18 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     var size: f32;
     var t_end_1: f32;
     var end_infinite: bool;
-    var local_176: bool;
+    var local_175: bool;
     var cuts_4: array<f32, 4>;
     var scale_1: f32 = 1f;
+    var local_176: bool;
     var local_177: bool;
     var local_178: bool;
     var local_179: bool;
-    var local_180: bool;
     var i_28: u32 = 0u;
     var i_29: u32 = 0u;
+    var local_180: bool;
     var local_181: bool;
     var local_182: bool;
-    var local_183: bool;
 
     let zero_1 = vec3(0f);
     let _e21 = airlight_phase_lobes(s_37);
@@ -6841,11 +6843,11 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     let _e31 = airlight_isotropic_phase(s_37);
     a_22.isotropic = _e31;
     if !((s_37.intensity == 0f)) {
-        local_175 = (s_37.sigma_s == 0f);
+        local_174 = (s_37.sigma_s == 0f);
     } else {
-        local_175 = true;
+        local_174 = true;
     }
-    let _e42 = local_175;
+    let _e42 = local_174;
     if _e42 {
         a_22.outcome = 1u;
         let _e45 = a_22;
@@ -6865,10 +6867,10 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
         let _e80 = a_22.radius;
         let _e82 = a_22.radius;
         let k_12 = (dot(oc_1, oc_1) - (_e80 * _e82));
-        let key_9 = u32((s_37.flags > 1u));
+        let key_10 = u32((s_37.flags > 1u));
         let _e92 = a_22.c;
         let _e94 = a_22.radius;
-        let _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_9);
+        let _e95 = airlight_sphere_foot(o_9, s_37.dir, _e92, _e94, key_10);
         a_22.foot = _e95;
         let _e98 = a_22.foot.miss;
         let _e102 = a_22.foot.h;
@@ -6952,11 +6954,11 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
         let reach_1 = (((t0_2 + _e241) + _e243) - (-15.942385f / s_37.sigma_t));
         if !(infinite_6) {
             let _e252 = t_end_1;
-            local_176 = (reach_1 < _e252);
+            local_175 = (reach_1 < _e252);
         } else {
-            local_176 = true;
+            local_175 = true;
         }
-        let _e255 = local_176;
+        let _e255 = local_175;
         if _e255 {
             t_end_1 = reach_1;
             end_infinite = false;
@@ -6992,33 +6994,33 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
     let _e306 = cut_count;
     if (_e306 == 1u) {
         let _e311 = scale_1;
-        local_177 = (_e311 < 1f);
+        local_176 = (_e311 < 1f);
+    } else {
+        local_176 = false;
+    }
+    let _e315 = local_176;
+    if _e315 {
+        let _e318 = cut0_;
+        local_177 = (_e318 >= t0_2);
     } else {
         local_177 = false;
     }
-    let _e315 = local_177;
-    if _e315 {
-        let _e318 = cut0_;
-        local_178 = (_e318 >= t0_2);
-    } else {
-        local_178 = false;
-    }
-    let _e321 = local_178;
+    let _e321 = local_177;
     if _e321 {
         let _e324 = end_infinite;
         if !(_e324) {
             let _e328 = cut0_;
             let _e329 = t_end_1;
-            local_180 = (_e328 <= _e329);
+            local_179 = (_e328 <= _e329);
         } else {
-            local_180 = true;
+            local_179 = true;
         }
-        let _e332 = local_180;
-        local_179 = _e332;
+        let _e332 = local_179;
+        local_178 = _e332;
     } else {
-        local_179 = false;
+        local_178 = false;
     }
-    let _e334 = local_179;
+    let _e334 = local_178;
     if _e334 {
         loop {
             let _e337 = i_28;
@@ -7058,25 +7060,25 @@ fn airlight_area(s_37: AirlightScene) -> AirlightArea {
             cuts_4[_e369] = _e259;
             let _e371 = airlight_is_finite(t_10);
             if _e371 {
-                local_181 = (t_10 >= t0_2);
+                local_180 = (t_10 >= t0_2);
             } else {
-                local_181 = false;
+                local_180 = false;
             }
-            let _e376 = local_181;
+            let _e376 = local_180;
             if _e376 {
                 let _e379 = end_infinite;
                 if !(_e379) {
                     let _e383 = t_end_1;
-                    local_183 = (t_10 <= _e383);
+                    local_182 = (t_10 <= _e383);
                 } else {
-                    local_183 = true;
+                    local_182 = true;
                 }
-                let _e386 = local_183;
-                local_182 = _e386;
+                let _e386 = local_182;
+                local_181 = _e386;
             } else {
-                local_182 = false;
+                local_181 = false;
             }
-            let _e388 = local_182;
+            let _e388 = local_181;
             if _e388 {
                 let _e389 = i_29;
                 let _e391 = a_22;
@@ -7181,7 +7183,7 @@ fn airlight_outline_boundary(o_2: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> 
     var nearest_1: vec2<f32>;
     var inside: bool = true;
     var i_30: u32 = 0u;
-    var local_184: bool;
+    var local_183: bool;
 
     if (o_2.radius > 0f) {
         let qc = (q_5 - o_2.corners[0]);
@@ -7202,11 +7204,11 @@ fn airlight_outline_boundary(o_2: AirlightOutline, q_5: vec2<f32>) -> vec3<f32> 
             let b_25 = o_2.corners[((_e43 + 1u) % 4u)];
             let _e49 = inside;
             if _e49 {
-                local_184 = ((((q_5.x - a_48.x) * (b_25.y - a_48.y)) - ((q_5.y - a_48.y) * (b_25.x - a_48.x))) <= 0f);
+                local_183 = ((((q_5.x - a_48.x) * (b_25.y - a_48.y)) - ((q_5.y - a_48.y) * (b_25.x - a_48.x))) <= 0f);
             } else {
-                local_184 = false;
+                local_183 = false;
             }
-            let _e70 = local_184;
+            let _e70 = local_183;
             inside = _e70;
             let _e71 = airlight_edge_nearest(a_48, b_25, q_5);
             let dd = (((_e71.x - q_5.x) * (_e71.x - q_5.x)) + ((_e71.y - q_5.y) * (_e71.y - q_5.y)));
@@ -7233,9 +7235,9 @@ fn airlight_outline_nearest(o_3: AirlightOutline, q_6: vec2<f32>) -> vec2<f32> {
 
 fn airlight_flat_lobe(a_25: AirlightArea, z_11: f32, o_4: AirlightOutline, centre_1: vec2<f32>, size_1: f32) -> AirlightFlatLobe {
     var j_6: u32 = 0u;
+    var local_184: bool;
     var local_185: bool;
     var local_186: bool;
-    var local_187: bool;
 
     let _e10 = airlight_atan((size_1 / sqrt((dot(centre_1, centre_1) + (z_11 * z_11)))));
     loop {
@@ -7249,17 +7251,17 @@ fn airlight_flat_lobe(a_25: AirlightArea, z_11: f32, o_4: AirlightOutline, centr
             let lobe_5 = select(a_25.lobes.xy, a_25.lobes.zw, (_e20 == 1u));
             let p_5 = (lobe_5.x * a_25.dirs);
             if (lobe_5.y > 0f) {
-                local_185 = (p_5.z < 0f);
+                local_184 = (p_5.z < 0f);
+            } else {
+                local_184 = false;
+            }
+            let _e36 = local_184;
+            if _e36 {
+                local_185 = (lobe_5.y < (_e10 + _e10));
             } else {
                 local_185 = false;
             }
-            let _e36 = local_185;
-            if _e36 {
-                local_186 = (lobe_5.y < (_e10 + _e10));
-            } else {
-                local_186 = false;
-            }
-            let _e43 = local_186;
+            let _e43 = local_185;
             if _e43 {
                 let l_4 = (z_11 / -(p_5.z));
                 let q_14 = (l_4 * p_5.xy);
@@ -7269,11 +7271,11 @@ fn airlight_flat_lobe(a_25: AirlightArea, z_11: f32, o_4: AirlightOutline, centr
                 let on_emitter = (length((_e49 - q_14)) <= (0.0000019073486f * ((length(q_14) + size_1) + z_11)));
                 if !(on_emitter) {
                     let _e69 = airlight_acos(cos_1);
-                    local_187 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
+                    local_186 = (_e69 < (AIRLIGHT_LOBE_REACH * lobe_5.y));
                 } else {
-                    local_187 = true;
+                    local_186 = true;
                 }
-                let _e75 = local_187;
+                let _e75 = local_186;
                 if _e75 {
                     return AirlightFlatLobe(p_5, lobe_5.x, lobe_5.y, l_4, q_14, on_emitter);
                 }
@@ -7334,11 +7336,11 @@ fn airlight_outline_chord(o_5: AirlightOutline, q_8: vec2<f32>, e_6: vec2<f32>) 
         let t_11 = (-(b_26) - select(root_3, -(root_3), ((bitcast<u32>(b_26) & 2147483648u) != 0u)));
         let r1_2 = (t_11 / a_49);
         let r2_4 = (k_13 / t_11);
-        let hi_10 = max(r1_2, r2_4);
-        if !((hi_10 > 0f)) {
+        let hi_11 = max(r1_2, r2_4);
+        if !((hi_11 > 0f)) {
             return vec2(0f);
         }
-        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_10);
+        return vec2<f32>(max(min(r1_2, r2_4), 0f), hi_11);
     }
     let _e70 = chord_1;
     let _e75 = airlight_clip(_e70, o_5.corners[0], o_5.corners[1], q_8, e_6);
@@ -7489,8 +7491,8 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
     var farthest: f32 = 0f;
     var edges_1: AirlightChordEdges = AirlightChordEdges(vec2(0f), vec2(0f), 0f);
     var i_32: u32 = 0u;
+    var local_187: bool;
     var local_188: bool;
-    var local_189: bool;
 
     loop {
         let _e15 = i_32;
@@ -7510,17 +7512,17 @@ fn airlight_chord_edges(y_6: array<vec2<f32>, 4>, e_8: vec2<f32>) -> AirlightCho
             let r_14 = (((a_51.x * d_5.y) - (a_51.y * d_5.x)) / den_1);
             let along_2 = (((a_51.x * e_8.y) - (a_51.y * e_8.x)) / den_1);
             if (r_14 > 0f) {
-                local_188 = (along_2 >= 0f);
+                local_187 = (along_2 >= 0f);
+            } else {
+                local_187 = false;
+            }
+            let _e59 = local_187;
+            if _e59 {
+                local_188 = (along_2 <= 1f);
             } else {
                 local_188 = false;
             }
-            let _e59 = local_188;
-            if _e59 {
-                local_189 = (along_2 <= 1f);
-            } else {
-                local_189 = false;
-            }
-            let _e65 = local_189;
+            let _e65 = local_188;
             if _e65 {
                 let n_8 = (vec2<f32>(d_5.y, -(d_5.x)) / vec2(sqrt(dot(d_5, d_5))));
                 let h_11 = dot(n_8, a_51);
@@ -7569,13 +7571,13 @@ fn airlight_mercator_node(ua: f32, ub: f32, i_33: u32) -> vec3<f32> {
     let _e5 = airlight_mercator_cut((i_33 / 12u));
     let lo_10 = max(ua, _e5);
     let _e11 = airlight_mercator_cut(((i_33 / 12u) + 1u));
-    let hi_11 = min(ub, _e11);
-    if !((lo_10 < hi_11)) {
+    let hi_12 = min(ub, _e11);
+    if !((lo_10 < hi_12)) {
         return vec3(0f);
     }
     let _e19 = airlight_triangle_rule((i_33 % 12u));
-    let hw_5 = (0.5f * (hi_11 - lo_10));
-    let x_37 = ((0.5f * (lo_10 + hi_11)) + (hw_5 * _e19.x));
+    let hw_5 = (0.5f * (hi_12 - lo_10));
+    let x_37 = ((0.5f * (lo_10 + hi_12)) + (hw_5 * _e19.x));
     let e_17 = exp(-(abs(x_37)));
     let sech = ((2f * e_17) / (1f + (e_17 * e_17)));
     return vec3<f32>(sech, ((sign(x_37) * (1f - (e_17 * e_17))) / (1f + (e_17 * e_17))), ((_e19.y * hw_5) * sech));
@@ -7630,7 +7632,7 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_8: AirlightOutline
     var j_10: u32;
     var merc_first: vec2<f32>;
     var merc_last: vec2<f32>;
-    var local_190: bool;
+    var local_189: bool;
     var rule_4: AirlightEdgeRule;
     var j_11: u32;
 
@@ -7885,11 +7887,11 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_8: AirlightOutline
             let exit_h = _e453.exit_h;
             let width_6 = (lobe_4.l * lobe_4.scale);
             if (exit_h > 0f) {
-                local_190 = (exit_h < width_6);
+                local_189 = (exit_h < width_6);
             } else {
-                local_190 = false;
+                local_189 = false;
             }
-            let _e499 = local_190;
+            let _e499 = local_189;
             if _e499 {
                 rule_4 = AirlightEdgeRule(exit_h, vec2<f32>(-(_e453.exit.y), _e453.exit.x), sqrt(((exit_h * exit_h) + (width_6 * width_6))), 0f, 0f);
                 let _e514 = merc_first;
@@ -7950,8 +7952,8 @@ fn airlight_flat_about_lobe(s_43: AirlightScene, z_15: f32, o_8: AirlightOutline
 }
 
 fn airlight_disc(s_44: AirlightScene, a_28: AirlightArea, x_26: vec3<f32>) -> f32 {
+    var local_190: bool;
     var local_191: bool;
-    var local_192: bool;
     var u_7: vec2<f32> = vec2(0f);
     var above_3: AirlightAbove;
     var sum_11: f32 = 0f;
@@ -7978,16 +7980,16 @@ fn airlight_disc(s_44: AirlightScene, a_28: AirlightArea, x_26: vec3<f32>) -> f3
     if (rf <= radius_3) {
         if !((rf == 0f)) {
             let _e44 = airlight_far_from_edge(s_44, (radius_3 - rf), z_20);
-            local_192 = _e44;
+            local_191 = _e44;
         } else {
-            local_192 = true;
+            local_191 = true;
         }
-        let _e46 = local_192;
-        local_191 = _e46;
+        let _e46 = local_191;
+        local_190 = _e46;
     } else {
-        local_191 = false;
+        local_190 = false;
     }
-    let inside_2 = local_191;
+    let inside_2 = local_190;
     let _e54 = airlight_above(z_20, vec2(0f));
     above_3 = _e54;
     if !(inside_2) {
@@ -8036,7 +8038,7 @@ fn airlight_disc(s_44: AirlightScene, a_28: AirlightArea, x_26: vec3<f32>) -> f3
 
 fn airlight_parallelogram(s_45: AirlightScene, a_29: AirlightArea, x_27: vec3<f32>) -> f32 {
     var q_9: vec2<f32>;
-    var local_193: bool;
+    var local_192: bool;
     var sum_12: f32 = 0f;
     var i_41: u32 = 0u;
     var j_12: u32;
@@ -8062,11 +8064,11 @@ fn airlight_parallelogram(s_45: AirlightScene, a_29: AirlightArea, x_27: vec3<f3
     q_9 = (_e76.xy + foot_1);
     if (_e76.z > 0f) {
         let _e89 = airlight_far_from_edge(s_45, sqrt(dot(_e76.xy, _e76.xy)), z_21);
-        local_193 = _e89;
+        local_192 = _e89;
     } else {
-        local_193 = false;
+        local_192 = false;
     }
-    let _e91 = local_193;
+    let _e91 = local_192;
     if _e91 {
         q_9 = foot_1;
     }
@@ -8371,16 +8373,16 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
     var i_43: u32 = 0u;
     var big_b_1: f32;
     var wpsi: f32;
+    var local_193: bool;
     var local_194: bool;
-    var local_195: bool;
     var mid: f32;
-    var local_196: bool;
+    var local_195: bool;
     var lo_7: f32;
     var hi_6: f32;
-    var local_197: bool;
+    var local_196: bool;
     var around: f32;
     var k_9: u32;
-    var local_198: bool;
+    var local_197: bool;
 
     let p_6 = (sign_3 * a_31.d);
     let _e8 = airlight_basis_e1_(p_6);
@@ -8417,11 +8419,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
             wpsi = 0f;
             if beside {
                 let _e87 = i_43;
-                local_194 = (_e87 < 84u);
+                local_193 = (_e87 < 84u);
             } else {
-                local_194 = false;
+                local_193 = false;
             }
-            let _e91 = local_194;
+            let _e91 = local_193;
             if _e91 {
                 let _e94 = airlight_mercator_cut(7u);
                 let _e95 = i_43;
@@ -8440,11 +8442,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
                 } else {
                     if inside_3 {
                         let _e115 = i_43;
-                        local_195 = (_e115 < 8u);
+                        local_194 = (_e115 < 8u);
                     } else {
-                        local_195 = false;
+                        local_194 = false;
                     }
-                    let _e119 = local_195;
+                    let _e119 = local_194;
                     if _e119 {
                         if !((eps > 0f)) {
                             continue;
@@ -8478,11 +8480,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
             mid = _e167;
             if beside {
                 let _e171 = mid;
-                local_196 = (_e171 < 0f);
+                local_195 = (_e171 < 0f);
             } else {
-                local_196 = false;
+                local_195 = false;
             }
-            let _e175 = local_196;
+            let _e175 = local_195;
             if _e175 {
                 let _e176 = mid;
                 mid = (_e176 + 6.2831855f);
@@ -8508,11 +8510,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
                 let _e210 = hi_6;
                 let _e211 = lo_7;
                 let _e214 = lo_7;
-                local_197 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
+                local_196 = ((_e210 - _e211) > (AIRLIGHT_LOBE_REACH * max(scale_3, _e214)));
             } else {
-                local_197 = false;
+                local_196 = false;
             }
-            let cut_3 = local_197;
+            let cut_3 = local_196;
             around = 0f;
             k_9 = 0u;
             loop {
@@ -8528,11 +8530,11 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
                     let _e234 = hi_6;
                     if cut_3 {
                         let _e237 = k_9;
-                        local_198 = (_e237 == 0u);
+                        local_197 = (_e237 == 0u);
                     } else {
-                        local_198 = false;
+                        local_197 = false;
                     }
-                    let _e241 = local_198;
+                    let _e241 = local_197;
                     let to_1 = select(_e234, tail_1, _e241);
                     let _e243 = airlight_graded_from(scale_3, start_5, to_1);
                     let graded_10 = _e243.x;
@@ -8624,17 +8626,17 @@ fn airlight_sphere_about_lobe(s_49: AirlightScene, a_31: AirlightArea, cap_3: Ai
 
 fn airlight_sphere(s_50: AirlightScene, a_32: AirlightArea, along: f32) -> f32 {
     var gap_4: f32;
-    var local_199: bool;
+    var local_198: bool;
     var chosen: f32 = 0f;
     var sign_4: f32 = 1f;
     var cos_p_2: f32 = 0f;
     var j_13: u32 = 0u;
+    var local_199: bool;
     var local_200: bool;
     var local_201: bool;
     var local_202: bool;
     var local_203: bool;
     var local_204: bool;
-    var local_205: bool;
 
     let v_12 = (a_32.foot.to_centre - (along * a_32.d));
     let _e8 = airlight_safe_length(v_12);
@@ -8648,11 +8650,11 @@ fn airlight_sphere(s_50: AirlightScene, a_32: AirlightArea, along: f32) -> f32 {
     if (_e27 > 0f) {
         let _e32 = gap_4;
         let _e33 = airlight_is_finite(_e32);
-        local_199 = _e33;
+        local_198 = _e33;
     } else {
-        local_199 = false;
+        local_198 = false;
     }
-    let _e35 = local_199;
+    let _e35 = local_198;
     if !(_e35) {
         return 0f;
     }
@@ -8675,42 +8677,42 @@ fn airlight_sphere(s_50: AirlightScene, a_32: AirlightArea, along: f32) -> f32 {
             let c_26 = dot(cap_4.a, (lobe_6.x * a_32.d));
             let _e78 = chosen;
             if (_e78 == 0f) {
-                local_200 = (lobe_6.y > 0f);
+                local_199 = (lobe_6.y > 0f);
+            } else {
+                local_199 = false;
+            }
+            let _e87 = local_199;
+            if _e87 {
+                local_200 = (lobe_6.y < (_e49 + _e49));
             } else {
                 local_200 = false;
             }
-            let _e87 = local_200;
-            if _e87 {
-                local_201 = (lobe_6.y < (_e49 + _e49));
+            let _e94 = local_200;
+            if _e94 {
+                if !(!((c_26 < -(cap_4.cos_a)))) {
+                    local_202 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
+                } else {
+                    local_202 = true;
+                }
+                let _e108 = local_202;
+                local_201 = _e108;
             } else {
                 local_201 = false;
             }
-            let _e94 = local_201;
-            if _e94 {
-                if !(!((c_26 < -(cap_4.cos_a)))) {
-                    local_203 = (lobe_6.y < AIRLIGHT_BESIDE_SCALE);
-                } else {
-                    local_203 = true;
-                }
-                let _e108 = local_203;
-                local_202 = _e108;
-            } else {
-                local_202 = false;
-            }
-            let _e110 = local_202;
+            let _e110 = local_201;
             if _e110 {
                 if !((c_26 > cap_4.cos_a)) {
                     let _e118 = airlight_acos(c_26);
-                    local_205 = ((_e118 - _e49) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e49));
+                    local_204 = ((_e118 - _e49) < max((AIRLIGHT_LOBE_REACH * lobe_6.y), _e49));
                 } else {
-                    local_205 = true;
+                    local_204 = true;
                 }
-                let _e126 = local_205;
-                local_204 = _e126;
+                let _e126 = local_204;
+                local_203 = _e126;
             } else {
-                local_204 = false;
+                local_203 = false;
             }
-            let _e128 = local_204;
+            let _e128 = local_203;
             if _e128 {
                 chosen = lobe_6.y;
                 sign_4 = lobe_6.x;
@@ -8766,7 +8768,7 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
     var k_10: f32;
     var gauss_1: f32;
     var j_14: u32;
-    var local_206: bool;
+    var local_205: bool;
 
     let _e1 = airlight_area(s_53);
     if (_e1.outcome == 1u) {
@@ -8805,11 +8807,11 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
                     let _e59 = j_14;
                     if ((_e59 & 1u) == 0u) {
                         let _e66 = j_14;
-                        local_206 = (_e66 < 14u);
+                        local_205 = (_e66 < 14u);
                     } else {
-                        local_206 = false;
+                        local_205 = false;
                     }
-                    let _e70 = local_206;
+                    let _e70 = local_205;
                     let x_38 = select((c_27 + (hw_9 * node_4.x)), (c_27 - (hw_9 * node_4.x)), _e70);
                     let _e72 = airlight_area_node(s_53, _e1, x_38);
                     let _e73 = k_10;
@@ -8849,22 +8851,22 @@ fn airlight_area_light(s_53: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_area(s_54: AirlightScene) -> AirlightResult {
+    var local_206: bool;
     var local_207: bool;
-    var local_208: bool;
 
     let _e1 = airlight_valid(s_54);
     if !(!(_e1)) {
-        local_207 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
+        local_206 = (s_54.light_shape < AIRLIGHT_SHAPE_DISC);
+    } else {
+        local_206 = true;
+    }
+    let _e10 = local_206;
+    if !(_e10) {
+        local_207 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_207 = true;
     }
-    let _e10 = local_207;
-    if !(_e10) {
-        local_208 = (s_54.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_208 = true;
-    }
-    let _e18 = local_208;
+    let _e18 = local_207;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8873,15 +8875,15 @@ fn airlight_in_scatter_area(s_54: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
-    var local_209: bool;
+    var local_208: bool;
 
     let _e2 = airlight_is_finite(r_5.in_scatter);
     if !(!(_e2)) {
-        local_209 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
+        local_208 = (r_5.status == AIRLIGHT_STATUS_INFINITE);
     } else {
-        local_209 = true;
+        local_208 = true;
     }
-    let _e11 = local_209;
+    let _e11 = local_208;
     if _e11 {
         return AirlightResult(340282350000000000000000000000000000000f, 2u);
     }
@@ -8890,18 +8892,18 @@ fn airlight_overflowed(r_5: AirlightResult) -> AirlightResult {
 
 fn airlight_node_integral(n_5: AirlightNode) -> AirlightResult {
     var r_6: AirlightResult = AirlightResult(0f, 0u);
-    var local_210: bool;
+    var local_209: bool;
     var g_29: AirlightCanonical;
 
     let p_7 = n_5.scene;
     let _e7 = airlight_vec_finite(p_7.light_position);
     if _e7 {
         let _e11 = airlight_vec_finite(p_7.dir);
-        local_210 = _e11;
+        local_209 = _e11;
     } else {
-        local_210 = false;
+        local_209 = false;
     }
-    let _e13 = local_210;
+    let _e13 = local_209;
     if _e13 {
         g_29 = n_5.canonical;
         if !(n_5.exact) {
@@ -8925,22 +8927,22 @@ fn airlight_point_integral(p_1: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_point(s_55: AirlightScene) -> AirlightResult {
+    var local_210: bool;
     var local_211: bool;
-    var local_212: bool;
 
     let _e1 = airlight_valid(s_55);
     if !(!(_e1)) {
-        local_211 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_210 = (s_55.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_210 = true;
+    }
+    let _e10 = local_210;
+    if !(_e10) {
+        local_211 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_211 = true;
     }
-    let _e10 = local_211;
-    if !(_e10) {
-        local_212 = (s_55.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_212 = true;
-    }
-    let _e18 = local_212;
+    let _e18 = local_211;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8949,22 +8951,22 @@ fn airlight_in_scatter_point(s_55: AirlightScene) -> AirlightResult {
 }
 
 fn airlight_in_scatter_route(s_56: AirlightScene) -> AirlightResult {
+    var local_212: bool;
     var local_213: bool;
-    var local_214: bool;
 
     let _e1 = airlight_valid(s_56);
     if !(!(_e1)) {
-        local_213 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
+        local_212 = (s_56.light_shape != AIRLIGHT_SHAPE_POINT);
+    } else {
+        local_212 = true;
+    }
+    let _e10 = local_212;
+    if !(_e10) {
+        local_213 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
     } else {
         local_213 = true;
     }
-    let _e10 = local_213;
-    if !(_e10) {
-        local_214 = (s_56.surface_kind != AIRLIGHT_SURFACE_NONE);
-    } else {
-        local_214 = true;
-    }
-    let _e18 = local_214;
+    let _e18 = local_213;
     if _e18 {
         return AirlightResult(0f, 1u);
     }
@@ -8992,9 +8994,9 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
     var k_11: f32;
     var gauss_2: f32;
     var j_15: u32;
-    var local_215: bool;
+    var local_214: bool;
     var f: f32;
-    var local_216: bool;
+    var local_215: bool;
 
     let _e1 = airlight_valid(s_57);
     if !(_e1) {
@@ -9042,11 +9044,11 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
                     let _e74 = j_15;
                     if ((_e74 & 1u) == 0u) {
                         let _e81 = j_15;
-                        local_215 = (_e81 < 6u);
+                        local_214 = (_e81 < 6u);
                     } else {
-                        local_215 = false;
+                        local_214 = false;
                     }
-                    let _e85 = local_215;
+                    let _e85 = local_214;
                     let w_11 = select((c_28 + (hw_10 * node_5.x)), (c_28 - (hw_10 * node_5.x)), _e85);
                     let _e87 = airlight_outer_node(s_57, _e12, w_11);
                     f = 0f;
@@ -9056,11 +9058,11 @@ fn airlight_in_scatter(s_57: AirlightScene) -> AirlightResult {
                             return _e93;
                         }
                         if (s_57.light_shape == AIRLIGHT_SHAPE_POINT) {
-                            local_216 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
+                            local_215 = (s_57.surface_kind == AIRLIGHT_SURFACE_NONE);
                         } else {
-                            local_216 = false;
+                            local_215 = false;
                         }
-                        let _e106 = local_216;
+                        let _e106 = local_215;
                         if _e106 {
                             return _e93;
                         }

@@ -1942,6 +1942,22 @@ fn airlight_in_exact_range(v: vec3<f32>) -> bool {
     return m == 0.0 || (m >= 1.0 / AIRLIGHT_EXACT_RANGE && m <= AIRLIGHT_EXACT_RANGE);
 }
 
+/// point − origin exactly, as a two-sum (hi, lo) per component, and whether it and dir lie
+/// within AIRLIGHT_EXACT_RANGE for exact products (geometry.rs `exact_difference`).
+struct AirlightExactDifference {
+    hi: vec3<f32>,
+    lo: vec3<f32>,
+    in_range: bool,
+}
+
+fn airlight_exact_difference(point: vec3<f32>, origin: vec3<f32>, dir: vec3<f32>, key: u32) -> AirlightExactDifference {
+    let sx = airlight_two_sum(point.x, -origin.x, key);
+    let sy = airlight_two_sum(point.y, -origin.y, key);
+    let sz = airlight_two_sum(point.z, -origin.z, key);
+    let hi = vec3<f32>(sx.x, sy.x, sz.x);
+    return AirlightExactDifference(hi, vec3<f32>(sx.y, sy.y, sz.y), airlight_in_exact_range(hi) && airlight_in_exact_range(dir));
+}
+
 /// The plain reduction with h and d_c from exact products (geometry.rs `Canonical::refined`):
 /// p − o kept as a two-sum, w = (p − o) × dir from Dekker's products, h = |w|/|dir|, the unit
 /// vector from the light to the foot −(dir × w)/(|dir||w|).
@@ -1950,13 +1966,11 @@ fn airlight_refined(s: AirlightScene, plain: AirlightCanonical) -> AirlightCanon
     // test the compiler cannot decide (a float test such as t_min != t_min it may fold under
     // its no-NaN assumptions); were it 1, each opaque value would move by one ulp only
     let key = u32(s.flags > 1u);
-    let sx = airlight_two_sum(s.light_position.x, -s.origin.x, key);
-    let sy = airlight_two_sum(s.light_position.y, -s.origin.y, key);
-    let sz = airlight_two_sum(s.light_position.z, -s.origin.z, key);
-    let hi = vec3<f32>(sx.x, sy.x, sz.x);
-    let lo = vec3<f32>(sx.y, sy.y, sz.y);
     let dir = s.dir;
-    if (!airlight_in_exact_range(hi) || !airlight_in_exact_range(dir)) { return plain; }
+    let exact = airlight_exact_difference(s.light_position, s.origin, dir, key);
+    if (!exact.in_range) { return plain; }
+    let hi = exact.hi;
+    let lo = exact.lo;
     let w = vec3<f32>(
         airlight_diff_of_products(hi.y, dir.z, hi.z, dir.y, key) + (lo.y * dir.z - lo.z * dir.y),
         airlight_diff_of_products(hi.z, dir.x, hi.x, dir.z, key) + (lo.z * dir.x - lo.x * dir.z),
@@ -1997,12 +2011,10 @@ fn airlight_sphere_foot(o: vec3<f32>, dir: vec3<f32>, c: vec3<f32>, radius: f32,
     let to_centre = -(oc - dot(oc, d) * d);
     let plain_h = airlight_safe_length(to_centre);
     let plain = AirlightSphereFoot(to_centre, plain_h, plain_h - radius);
-    let sx = airlight_two_sum(c.x, -o.x, key);
-    let sy = airlight_two_sum(c.y, -o.y, key);
-    let sz = airlight_two_sum(c.z, -o.z, key);
-    let hi = vec3<f32>(sx.x, sy.x, sz.x);
-    let lo = vec3<f32>(sx.y, sy.y, sz.y);
-    if (!airlight_in_exact_range(hi) || !airlight_in_exact_range(dir)) { return plain; }
+    let exact = airlight_exact_difference(c, o, dir, key);
+    if (!exact.in_range) { return plain; }
+    let hi = exact.hi;
+    let lo = exact.lo;
     let wx = airlight_cross_pair(hi.y, hi.z, lo.y, lo.z, dir.y, dir.z, key);
     let wy = airlight_cross_pair(hi.z, hi.x, lo.z, lo.x, dir.z, dir.x, key);
     let wz = airlight_cross_pair(hi.x, hi.y, lo.x, lo.y, dir.x, dir.y, key);
