@@ -3,8 +3,8 @@
 //! the f32 default path (the nested construction, `AreaScene::in_scatter`) and the f32 bounded
 //! method (`in_scatter_bounded`), each against the f64 nested construction at tolerance 1e-10,
 //! and that one at the f32 default's tolerance 1e-5 (docs/DESIGN.md §12: the bounded method
-//! carries the sphere's gap `|c − x| − R` apart from `|c − x|`; the nested construction's
-//! elements `c + R n` rounded to f32 do not).
+//! carries the sphere's gap `|c − x| − R` apart from `|c − x|`, the nested construction takes
+//! its elements' canonical forms from the sphere's miss).
 //!
 //! `cargo run --release -p airlight-tests --example area_grazing_sphere`
 
