@@ -260,15 +260,16 @@ where
             Emitter::Sphere { center, radius } => ElementForm::new(o, T::vec3_to_array(self.ray.dir), d, (t0, t1), T::vec3_to_array(center), radius),
             _ => None,
         };
-        let element = PointLight { position: T::vec3_from_array(o), intensity: self.light.radiance, distribution: Element { lambertian: Lambertian { axis: T::vec3_from_array(d) }, power: self.light.emission.power() } };
-        let phys = Physics::new(&element, &self.medium, &self.phase);
+        // the element at `q` with the normal `n` as its point light
+        let element = |q: [T; 3], n: [T; 3]| PointLight { position: T::vec3_from_array(q), intensity: self.light.radiance, distribution: Element { lambertian: Lambertian { axis: T::vec3_from_array(n) }, power: self.light.emission.power() } };
+        let any_element = element(o, d);
+        let phys = Physics::new(&any_element, &self.medium, &self.phase);
         let mut point = |q: [T; 3], n: [T; 3]| -> T {
             evaluated += 1;
             if let Some(form) = &form {
                 return default_panels(&form.at(n), &phys, inner).0;
             }
-            let light = PointLight { position: T::vec3_from_array(q), intensity: self.light.radiance, distribution: Element { lambertian: Lambertian { axis: T::vec3_from_array(n) }, power: self.light.emission.power() } };
-            match Scene::new(self.ray, light, self.medium, self.phase.clone()) {
+            match Scene::new(self.ray, element(q, n), self.medium, self.phase.clone()) {
                 Ok(scene) => scene.in_scatter_controlled(inner).0,
                 Err(_) => T::zero(),
             }
@@ -428,8 +429,7 @@ impl<T: Real> ElementForm<T> {
     /// `None` where [`sphere_miss`] is (the centre on the line, or beyond the exact products'
     /// range).
     fn new(o: [T; 3], dir: [T; 3], d: [T; 3], (t0, t1): (T, T), c: [T; 3], radius: T) -> Option<Self> {
-        let (h, to_centre, miss) = sphere_miss(o, dir, c, radius)?;
-        let m = to_centre.map(|x| x / h);
+        let (_, m, miss) = sphere_miss(o, dir, c, radius)?;
         Some(ElementForm { d, m, w: normalize(cross(m, d)), x_h: dot(sub(c, o), d), miss, radius, t0, t1 })
     }
 

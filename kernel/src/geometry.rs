@@ -134,12 +134,12 @@ fn pair_mul<T: Real>((a, b): (T, T), (c, d): (T, T)) -> (T, T) {
 }
 
 /// How far a sphere of radius `R` about `centre` lies from the line `origin + t·dir` (`dir`
-/// any non-zero length): the centre's distance `h` from the line, the vector from its foot on
-/// the line to it, and the miss `h − R` to a few ulps of itself however small — where `h`
+/// any non-zero length): the centre's distance `h` from the line, the unit vector from its foot
+/// on the line to it, and the miss `h − R` to a few ulps of itself however small — where `h`
 /// rounded to the precision holds it only to `ε·h` (in f32 a ray passing 6e-6 outside a sphere
 /// of radius 0.625 knows its miss to 1 %). As [`Canonical::new_accurate`], `centre − origin`
 /// is kept as a two-sum and `w = (centre − origin) × dir` formed from Dekker's exact products,
-/// here as float pairs: `h = |w|/|dir|`, the vector from the foot to the centre `h·(dir ×
+/// here as float pairs: `h = |w|/|dir|`, the unit vector from the foot to the centre `(dir ×
 /// w)/(|dir||w|)`, and `h − R = (|w|² − R²|dir|²)/((|w| + R|dir|)|dir|)` from the pairs'
 /// squares. `None` where the products could overflow or underflow ([`exact_difference`]) or
 /// the centre is on the line.
@@ -162,10 +162,8 @@ pub(crate) fn sphere_miss<T: Real>(origin: [T; 3], dir: [T; 3], centre: [T; 3], 
     if !(h > T::zero() && h.is_finite() && miss.is_finite()) {
         return None;
     }
-    // from the foot to the centre: (dir × w)/(|dir||w|) · h, scaled by the largest components first
-    let (dn, wn) = (normalize(dir), normalize(w.map(|x| x.0)));
-    let m = [dn[1] * wn[2] - dn[2] * wn[1], dn[2] * wn[0] - dn[0] * wn[2], dn[0] * wn[1] - dn[1] * wn[0]];
-    Some((h, m.map(|x| h * x), miss))
+    // from the foot to the centre: (dir × w)/(|dir||w|), scaled by the largest components first
+    Some((h, cross(normalize(dir), normalize(w.map(|x| x.0))), miss))
 }
 
 /// The ray segment and light in the canonical frame of the light's foot.

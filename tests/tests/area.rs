@@ -293,7 +293,14 @@ fn bounded_in_both_precisions_to(dir: DVec3, t_max: f64, emitter: Emitter<f64>, 
 }
 
 /// [`bounded_in_both_precisions_to`] on the part of the ray from `t_min` to `t_max`.
-fn bounded_in_both_precisions_over(dir: DVec3, (t_min, t_max): (f64, f64), emitter: Emitter<f64>, g: f64, tolerance: f64) -> (f64, f64, f64) {
+fn bounded_in_both_precisions_over(dir: DVec3, range: (f64, f64), emitter: Emitter<f64>, g: f64, tolerance: f64) -> (f64, f64, f64) {
+    let (scene, single) = scenes_in_both_precisions(dir, range, emitter, g);
+    (scene.in_scatter_bounded(), single.in_scatter_bounded() as f64, scene.in_scatter_counted(tolerance).0)
+}
+
+/// The scene of the ray from the origin along `dir` over `[t_min, t_max]` to `emitter` (radiance
+/// 2) in Henyey–Greenstein fog of `g` (`σs` 0.05, `σt` 0.08), in f64 and rounded to f32.
+fn scenes_in_both_precisions(dir: DVec3, (t_min, t_max): (f64, f64), emitter: Emitter<f64>, g: f64) -> (AreaScene<f64, AnyPhase<f64>>, AreaScene<f32, AnyPhase<f32>>) {
     let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
     let ray = Ray { origin: DVec3::ZERO, dir, t_min, t_max };
     let scene = AreaScene::new(ray, AreaLight::new(emitter, 2.0), medium, AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g })).unwrap();
@@ -304,7 +311,20 @@ fn bounded_in_both_precisions_over(dir: DVec3, (t_min, t_max): (f64, f64), emitt
         AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: g as f32 }),
     )
     .unwrap();
-    (scene.in_scatter_bounded(), single.in_scatter_bounded() as f64, scene.in_scatter_counted(tolerance).0)
+    (scene, single)
+}
+
+/// A sphere of radius 0.625 at (6, 1.5, −0.5) and the part behind it of a ray from the origin
+/// that misses it by `miss` of its radius, from the closest approach to its centre on: the
+/// emitter, the ray's direction and its range, exact in f32 (the miss, 6e-6 at 1e-5, is then the
+/// same ray's in both precisions).
+fn behind_a_grazing_ray(miss: f64) -> (Emitter<f64>, DVec3, (f64, f64)) {
+    let (center, radius) = (DVec3::new(6.0, 1.5, -0.5), 0.625);
+    let (towards, side) = (center.normalize(), center.normalize().cross(DVec3::Z).normalize());
+    let angle = (radius * (1.0 + miss) / center.length()).asin();
+    let dir = (towards * angle.cos() + side * angle.sin()).as_vec3().as_dvec3();
+    let closest = dir.dot(center) / dir.length_squared();
+    (Emitter::Sphere { center, radius }, dir, (closest as f32 as f64, f64::INFINITY))
 }
 
 /// The bounded method on a disc and a rectangle in forward-scattering fog, on rays that look at
@@ -417,16 +437,10 @@ fn bounded_sphere_with_the_lobe_next_to_its_limb() {
 /// `|c − x| − R` is formed from the line's miss by exact products, docs/DESIGN.md §12).
 #[test]
 fn bounded_sphere_behind_a_grazing_ray() {
-    // inputs exact in f32 (the miss, 6e-6 at 1e-5, is then the same ray's in both precisions)
-    let (center, radius) = (DVec3::new(6.0, 1.5, -0.5), 0.625);
-    let sphere = Emitter::Sphere { center, radius };
-    let (towards, side) = (center.normalize(), center.normalize().cross(DVec3::Z).normalize());
     for g in [0.95, 0.99] {
         for miss in [0.00001, 0.0001, 0.001] {
-            let angle = (radius * (1.0 + miss) / center.length()).asin();
-            let dir = (towards * angle.cos() + side * angle.sin()).as_vec3().as_dvec3();
-            let closest = dir.dot(center) / dir.length_squared();
-            let (bounded, single, nested) = bounded_in_both_precisions_over(dir, (closest as f32 as f64, f64::INFINITY), sphere, g, 1e-10);
+            let (sphere, dir, range) = behind_a_grazing_ray(miss);
+            let (bounded, single, nested) = bounded_in_both_precisions_over(dir, range, sphere, g, 1e-10);
             assert!((bounded - nested).abs() <= 1e-4 * nested && (single - nested).abs() <= 1e-4 * nested, "miss {miss}, g {g}: bounded {bounded} (f32 {single}) vs nested {nested}");
         }
     }
@@ -439,23 +453,9 @@ fn bounded_sphere_behind_a_grazing_ray() {
 /// docs/DESIGN.md §12).
 #[test]
 fn default_sphere_behind_a_grazing_ray_in_f32() {
-    let (center, radius) = (DVec3::new(6.0, 1.5, -0.5), 0.625);
-    let (towards, side) = (center.normalize(), center.normalize().cross(DVec3::Z).normalize());
-    let medium = Medium { sigma_s: 0.05, sigma_t: 0.08 };
     for miss in [0.00001, 0.0001, 0.001] {
-        let angle = (radius * (1.0 + miss) / center.length()).asin();
-        let dir = (towards * angle.cos() + side * angle.sin()).as_vec3().as_dvec3();
-        let closest = (dir.dot(center) / dir.length_squared()) as f32 as f64;
-        let ray = Ray { origin: DVec3::ZERO, dir, t_min: closest, t_max: f64::INFINITY };
-        let phase = AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99 });
-        let double = AreaScene::new(ray, AreaLight::new(Emitter::Sphere { center, radius }, 2.0), medium, phase).unwrap();
-        let single = AreaScene::<f32, _>::new(
-            Ray { origin: Vec3::ZERO, dir: dir.as_vec3(), t_min: closest as f32, t_max: f32::INFINITY },
-            AreaLight::new(Emitter::Sphere { center: center.as_vec3(), radius: radius as f32 }, 2.0),
-            Medium { sigma_s: 0.05, sigma_t: 0.08 },
-            AnyPhase::HenyeyGreenstein(HenyeyGreenstein { g: 0.99f32 }),
-        )
-        .unwrap();
+        let (sphere, dir, range) = behind_a_grazing_ray(miss);
+        let (double, single) = scenes_in_both_precisions(dir, range, sphere, 0.99);
         let (got, exact) = (single.in_scatter() as f64, double.in_scatter_counted(1e-10).0);
         assert!((got - exact).abs() <= 1e-4 * exact, "miss {miss}: f32 default {got} vs nested {exact}");
     }

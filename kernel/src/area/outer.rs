@@ -1066,7 +1066,7 @@ where
                 let oc = sub(o, c);
                 let (b, k) = (dot(oc, d), dot(oc, oc) - radius * radius);
                 let foot = match sphere_miss(o, T::vec3_to_array(self.ray.dir), c, radius) {
-                    Some((h, to_centre, miss)) => SphereFoot { to_centre, h, miss },
+                    Some((h, m, miss)) => SphereFoot { to_centre: m.map(|x| h * x), h, miss },
                     None => {
                         let to_centre = axpy(oc, -b, d).map(|x| -x);
                         let h = length(to_centre);
@@ -1111,8 +1111,8 @@ where
         let (edges, n): ([T; 6], usize) = edges_between(theta(t0), theta(t_end), &mut inside);
         let mut integrand = |th: T| {
             let (s, c) = sin_cos_turns(th);
-            let t = x_h + h_eff * s / c;
-            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + h_eff * s / c).max(T::zero())) * shape.radiance(&light, axpy(o, t, d), h_eff * s / c)
+            let along = h_eff * s / c;
+            h_eff / (c * c) * exp_nonpositive(-sigma_t * ((x_h - t0) + along).max(T::zero())) * shape.radiance(&light, axpy(o, x_h + along, d), along)
         };
         let (value, panels) = adaptive(&GAUSS_KRONROD_15, &mut integrand, &edges[..=n], tolerance, max_panels);
         (self.medium.sigma_s * value, panels)
